@@ -1,0 +1,47 @@
+//! Errors of asset loading: one enum, each variant naming the file and the problem.
+//!
+//! Owns: [`AssetError`]. Must not: print or log (callers decide what to show).
+
+use std::path::PathBuf;
+
+/// Anything that can go wrong while reading art or a level. Every variant names the file.
+#[derive(Debug, thiserror::Error)]
+pub enum AssetError {
+    #[error("{path}: file not found")]
+    NotFound { path: PathBuf },
+    #[error("{path}: cannot read: {source}")]
+    Io {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("{path}: the path {requested:?} leaves the asset root {root}")]
+    OutsideRoot {
+        path: PathBuf,
+        requested: String,
+        root: PathBuf,
+    },
+    #[error("{path}: malformed glTF: {message}")]
+    Gltf { path: PathBuf, message: String },
+    #[error("{path}: malformed OBJ/MTL: {message}")]
+    Obj { path: PathBuf, message: String },
+    #[error("{path}: texture {texture:?} cannot be decoded: {message}")]
+    Texture {
+        path: PathBuf,
+        texture: String,
+        message: String,
+    },
+    #[error("{path}: mesh {mesh:?}: {message}")]
+    BadMesh {
+        path: PathBuf,
+        mesh: String,
+        message: String,
+    },
+    #[error("{path}: {message}")]
+    Unsupported { path: PathBuf, message: String },
+    #[error("{path}: level: {message}")]
+    Level { path: PathBuf, message: String },
+}
+
+/// Result of asset functions.
+pub type AssetResult<T> = Result<T, AssetError>;

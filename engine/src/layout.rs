@@ -1,0 +1,307 @@
+//! The flattened scene layout that both tracers read: every `Gpu…` struct of the engine.
+//!
+//! Owns: the byte layout of the buffers the GPU tracer binds and the CPU tracer walks
+//! (BVH nodes, triangle blocks, instances, triangles, vertices, materials, textures, lights,
+//! the per-frame uniforms). Each struct here is `#[repr(C)]` + `bytemuck::Pod` with explicit
+//! padding and a compile-time size assertion, and has a twin of the same name, field order
+//! and size in `shaders/shared/types.wgsl`; `tests/layout.rs` parses the WGSL with naga and
+//! compares sizes and offsets of every field.
+//!
+//! Must not: hold logic beyond constructors and bit-packing helpers. This file is top-level
+//! (not under `render/` or `accel/`) because `accel` writes the BVH structs, `render` writes
+//! the rest, and both tracers and `query` read all of them.
+//!
+//! Conventions (shared by every module of the engine): right-handed, +Y up, metres, seconds,
+//! radians; colours are linear Rec.709 radiance (W·sr⁻¹·m⁻²) until tonemapping. Matrices are
+//! named `to_from` (`world_from_object` maps object-space points to world space) and stored
+//! as three rows of a 3×4 affine matrix.
+
+use bytemuck::{Pod, Zeroable};
+
+/// Marks an empty slot: no child, no texture, no material override.
+pub const INVALID: u32 = u32::MAX;
+
+/// Set in a [`GpuBvh8Node::child`] entry when the child is a leaf. The low 31 bits then hold the
+/// leaf payload: a [`GpuTri4`] block index (relative to the mesh's `block_base`) in a BLAS, or an
+/// instance index in the TLAS.
+pub const LEAF_BIT: u32 = 1 << 31;
+
+/// One node of an 8-wide BVH, shared by every BLAS (one per mesh) and the TLAS.
+///
+/// Child bounds are stored structure-of-arrays so that a CPU can test all eight children with
+/// one 8-lane SIMD slab test (Fuetterling et al. 2017, "Accelerated Single Ray Tracing for Wide
+/// Vector Units"; the same layout as tinybvh's `BVH8_CPU`). Empty slots have `min = +inf`,
+/// `max = -inf` and `child = INVALID`: the octant-ordered slab test, which reads the near plane
+/// from `min` for positive direction components and from `max` for negative ones, never hits them.
+///
+/// `child[i]`: `INVALID` (empty), `LEAF_BIT | payload` (leaf) or the index of an inner node,
+/// relative to the tree's first node (the instance's `node_base` for a BLAS,
+/// `GpuFrameUniforms::tlas_root` for the TLAS). Every tree's root is its first node.
+///
+/// `perm[i]`: front-to-back child order per ray octant. For octant `o = (dx<0) | (dy<0)<<1 |
+/// (dz<0)<<2`, bits `3o..3o+3` of `perm[i]` hold the slot of the child that comes `i`-th
+/// (sorted by the child-box centre projected on the octant's diagonal direction).
+/// 256 bytes: four 64-byte cache lines.
+#[repr(C, align(64))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GpuBvh8Node {
+    pub min_x: [f32; 8],
+    pub max_x: [f32; 8],
+    pub min_y: [f32; 8],
+    pub max_y: [f32; 8],
+    pub min_z: [f32; 8],
+    pub max_z: [f32; 8],
+    pub child: [u32; 8],
+    pub perm: [u32; 8],
+}
+const _: () = assert!(size_of::<GpuBvh8Node>() == 256);
+
+impl GpuBvh8Node {
+    /// A node whose eight slots are all empty.
+    pub const EMPTY: Self = Self {
+        min_x: [f32::INFINITY; 8],
+        max_x: [f32::NEG_INFINITY; 8],
+        min_y: [f32::INFINITY; 8],
+        max_y: [f32::NEG_INFINITY; 8],
+        min_z: [f32::INFINITY; 8],
+        max_z: [f32::NEG_INFINITY; 8],
+        child: [INVALID; 8],
+        perm: [0; 8],
+    };
+}
+
+/// A leaf block of up to four triangles, structure-of-arrays (Embree's `triangle4`): first
+/// vertex and the two edges `e1 = v1 - v0`, `e2 = v2 - v0`, in the mesh's object space (metres).
+/// Unused lanes have zero edges (never hit: their determinant is 0) and `prim = INVALID`.
+/// `prim[i]` is the mesh-local triangle index (into the mesh's [`GpuTriangle`] range).
+/// 160 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GpuTri4 {
+    pub v0_x: [f32; 4],
+    pub v0_y: [f32; 4],
+    pub v0_z: [f32; 4],
+    pub e1_x: [f32; 4],
+    pub e1_y: [f32; 4],
+    pub e1_z: [f32; 4],
+    pub e2_x: [f32; 4],
+    pub e2_y: [f32; 4],
+    pub e2_z: [f32; 4],
+    pub prim: [u32; 4],
+}
+const _: () = assert!(size_of::<GpuTri4>() == 160);
+
+impl GpuTri4 {
+    /// A block with four unused lanes.
+    pub const EMPTY: Self = Self {
+        v0_x: [0.0; 4],
+        v0_y: [0.0; 4],
+        v0_z: [0.0; 4],
+        e1_x: [0.0; 4],
+        e1_y: [0.0; 4],
+        e1_z: [0.0; 4],
+        e2_x: [0.0; 4],
+        e2_y: [0.0; 4],
+        e2_z: [0.0; 4],
+        prim: [INVALID; 4],
+    };
+}
+
+/// One placed copy of a mesh. Affine transforms are stored as the three rows of a 3×4 matrix
+/// (the fourth row is implicitly `0 0 0 1`). Shading normals go to world space with the
+/// transpose of `object_from_world`'s 3×3 part.
+/// 128 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable)]
+pub struct GpuInstance {
+    pub world_from_object: [[f32; 4]; 3],
+    pub object_from_world: [[f32; 4]; 3],
+    /// First node of this mesh's BLAS in the node buffer; child indices are relative to it.
+    pub node_base: u32,
+    /// First [`GpuTri4`] block of this mesh's BLAS.
+    pub block_base: u32,
+    /// First [`GpuTriangle`] of the mesh; `GpuTri4::prim` is relative to it.
+    pub triangle_base: u32,
+    /// First [`GpuVertex`] of the mesh; `GpuTriangle` indices are relative to it.
+    pub vertex_base: u32,
+    /// A material index that replaces every triangle's own material, or [`INVALID`].
+    pub material_override: u32,
+    /// Bit set of `INSTANCE_FLAG_*`.
+    pub flags: u32,
+    pub _padding: [u32; 2],
+}
+const _: () = assert!(size_of::<GpuInstance>() == 128);
+
+/// `GpuInstance::flags`: the transform is the identity (rays need not be transformed).
+pub const INSTANCE_FLAG_IDENTITY: u32 = 1;
+
+/// Vertex indices (relative to the instance's `vertex_base`) and the global material index.
+/// 16 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq, Eq)]
+pub struct GpuTriangle {
+    pub indices: [u32; 3],
+    pub material: u32,
+}
+const _: () = assert!(size_of::<GpuTriangle>() == 16);
+
+/// Shading attributes of one vertex in object space. A zero `normal` means "no shading normal":
+/// the tracers then shade with the geometric normal (flat shading, as glTF 2.0 requires for
+/// meshes without normals). `tangent.w` is the bitangent sign (MikkTSpace); a zero tangent
+/// means "no tangent frame", and normal maps are then ignored for that vertex.
+/// 48 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuVertex {
+    pub position: [f32; 3],
+    pub u: f32,
+    pub normal: [f32; 3],
+    pub v: f32,
+    pub tangent: [f32; 4],
+}
+const _: () = assert!(size_of::<GpuVertex>() == 48);
+
+/// `GpuMaterial::kind`: Lambertian diffuse, two-sided.
+pub const MATERIAL_DIFFUSE: u32 = 0;
+/// `GpuMaterial::kind`: conductor; GGX microfacets, a perfect mirror when `roughness == 0`.
+/// `base_color` is the reflectance at normal incidence (Schlick Fresnel).
+pub const MATERIAL_CONDUCTOR: u32 = 1;
+/// `GpuMaterial::kind`: dielectric with Fresnel reflection and refraction; smooth when
+/// `roughness == 0`, GGX otherwise; Beer–Lambert absorption inside (`absorption`).
+pub const MATERIAL_DIELECTRIC: u32 = 2;
+/// `GpuMaterial::kind`: glTF metallic-roughness: a diffuse base under a GGX dielectric coat
+/// (F0 = 0.04) mixed with a GGX conductor (F0 = base colour) by `metallic`.
+pub const MATERIAL_METAL_ROUGH: u32 = 3;
+
+/// `GpuMaterial::flags`: emits from both faces (otherwise only along the geometric normal).
+pub const MATERIAL_FLAG_TWO_SIDED_EMISSION: u32 = 1;
+
+/// A material as the tracers evaluate it. Texture fields index the texture table or are
+/// [`INVALID`]. Texture lookups multiply the matching factor.
+/// 96 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
+pub struct GpuMaterial {
+    /// Linear RGB albedo (diffuse), F0 (conductor) or transmission tint (dielectric); `w` unused.
+    pub base_color: [f32; 4],
+    /// Emitted radiance, linear RGB (W·sr⁻¹·m⁻², strength already applied); `w` is the scalar
+    /// weight used to pick this material's triangles as lights (luminance × mean texture value).
+    pub emission: [f32; 4],
+    /// Absorption coefficient inside a dielectric, per metre, linear RGB (Beer–Lambert); `w` unused.
+    pub absorption: [f32; 4],
+    pub kind: u32,
+    /// Perceptual roughness in [0, 1]; GGX α = roughness².
+    pub roughness: f32,
+    pub metallic: f32,
+    /// Index of refraction of the inside (dielectric) or of the coat (metal-rough).
+    pub ior: f32,
+    /// glTF `KHR_materials_transmission` factor for `MATERIAL_METAL_ROUGH`.
+    pub transmission: f32,
+    /// Scale of the tangent-space normal map's xy.
+    pub normal_scale: f32,
+    pub flags: u32,
+    pub base_color_texture: u32,
+    pub normal_texture: u32,
+    pub emission_texture: u32,
+    /// glTF metallic-roughness texture: roughness in G, metallic in B.
+    pub metal_rough_texture: u32,
+    pub _padding: u32,
+}
+const _: () = assert!(size_of::<GpuMaterial>() == 96);
+
+/// `GpuTexture::flags` bits 0–1 / 2–3: wrap mode in u / v.
+pub const WRAP_REPEAT: u32 = 0;
+pub const WRAP_CLAMP: u32 = 1;
+pub const WRAP_MIRROR: u32 = 2;
+/// `GpuTexture::flags` bit 4: nearest filtering (otherwise bilinear).
+pub const TEXTURE_FLAG_NEAREST: u32 = 1 << 4;
+
+/// One texture in the shared texel buffer: `width × height` texels from `texel_offset`, rows top
+/// to bottom, each texel four f16 values (linear RGBA, sRGB already decoded) packed in two u32.
+/// 16 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq, Eq)]
+pub struct GpuTexture {
+    pub texel_offset: u32,
+    pub width: u32,
+    pub height: u32,
+    pub flags: u32,
+}
+const _: () = assert!(size_of::<GpuTexture>() == 16);
+
+/// One emissive triangle in world space, and its entry of the alias table that picks lights in
+/// proportion to `weight` (area × material emission weight). Pick `i` uniformly, keep it if a
+/// second uniform number is below `alias_threshold`, else take `alias`.
+/// 64 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
+pub struct GpuLight {
+    pub p0: [f32; 3],
+    pub instance: u32,
+    pub p1: [f32; 3],
+    /// Mesh-local triangle index.
+    pub triangle: u32,
+    pub p2: [f32; 3],
+    pub weight: f32,
+    pub alias_threshold: f32,
+    pub alias: u32,
+    pub _padding: [u32; 2],
+}
+const _: () = assert!(size_of::<GpuLight>() == 64);
+
+/// `GpuFrameUniforms::sky_kind`: constant radiance `sky_zenith`.
+pub const SKY_CONSTANT: u32 = 0;
+/// `GpuFrameUniforms::sky_kind`: zenith → horizon → ground gradient.
+pub const SKY_GRADIENT: u32 = 1;
+
+/// Everything that changes per frame or per render: camera, sun, sky, image size, sampling.
+/// The camera basis vectors are pre-scaled: a pixel's direction is
+/// `forward + sx * right + sy * up` with `sx, sy` in [-1, 1] over the image.
+/// 192 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
+pub struct GpuFrameUniforms {
+    pub camera_position: [f32; 3],
+    /// Thin-lens aperture radius in metres (0: pinhole).
+    pub lens_radius: f32,
+    /// Camera right, scaled by `tan(vfov/2) * aspect`.
+    pub camera_right: [f32; 3],
+    /// Distance to the plane in focus, metres.
+    pub focus_distance: f32,
+    /// Camera up, scaled by `tan(vfov/2)`.
+    pub camera_up: [f32; 3],
+    pub _padding0: f32,
+    pub camera_forward: [f32; 3],
+    pub _padding1: f32,
+    /// Unit vector towards the sun.
+    pub sun_direction: [f32; 3],
+    /// Cosine of the sun's angular radius (1 for a delta sun).
+    pub sun_cos_radius: f32,
+    /// Radiance of the sun disc, or irradiance for a delta sun (linear RGB).
+    pub sun_radiance: [f32; 3],
+    /// Solid angle of the sun disc in sr; 0 for a delta sun; negative when there is no sun.
+    pub sun_solid_angle: f32,
+    pub sky_zenith: [f32; 4],
+    pub sky_horizon: [f32; 4],
+    pub sky_ground: [f32; 4],
+    pub width: u32,
+    pub height: u32,
+    /// Samples per pixel traced in this dispatch.
+    pub spp: u32,
+    /// Index of the first sample of this dispatch (samples accumulate across dispatches).
+    pub sample_base: u32,
+    pub seed: u32,
+    /// Maximum number of scattering events on a path (Mitsuba's `max_depth - 1`).
+    pub max_bounces: u32,
+    /// Scattering events before Russian roulette may end a path.
+    pub roulette_start: u32,
+    pub light_count: u32,
+    /// Sum of all lights' `weight`.
+    pub light_weight_total: f32,
+    /// Multiplies the roulette survival probability (1: default; lower trades noise for speed).
+    pub roulette_scale: f32,
+    pub sky_kind: u32,
+    /// Index of the TLAS root in the node buffer.
+    pub tlas_root: u32,
+}
+const _: () = assert!(size_of::<GpuFrameUniforms>() == 192);

@@ -1,0 +1,138 @@
+// Twins of the `Gpu…` structs in engine/src/layout.rs: same names, field order, sizes.
+// tests/layout.rs parses this file with naga and compares every size and offset.
+// Conventions: right-handed, +Y up, metres; colours are linear Rec.709 radiance.
+
+const INVALID: u32 = 0xffffffffu;
+const LEAF_BIT: u32 = 0x80000000u;
+
+const INSTANCE_FLAG_IDENTITY: u32 = 1u;
+
+const MATERIAL_DIFFUSE: u32 = 0u;
+const MATERIAL_CONDUCTOR: u32 = 1u;
+const MATERIAL_DIELECTRIC: u32 = 2u;
+const MATERIAL_METAL_ROUGH: u32 = 3u;
+const MATERIAL_FLAG_TWO_SIDED_EMISSION: u32 = 1u;
+
+const WRAP_REPEAT: u32 = 0u;
+const WRAP_CLAMP: u32 = 1u;
+const WRAP_MIRROR: u32 = 2u;
+const TEXTURE_FLAG_NEAREST: u32 = 16u;
+
+const SKY_CONSTANT: u32 = 0u;
+const SKY_GRADIENT: u32 = 1u;
+
+struct GpuBvh8Node {
+    min_x: array<f32, 8>,
+    max_x: array<f32, 8>,
+    min_y: array<f32, 8>,
+    max_y: array<f32, 8>,
+    min_z: array<f32, 8>,
+    max_z: array<f32, 8>,
+    child: array<u32, 8>,
+    perm: array<u32, 8>,
+}
+
+struct GpuTri4 {
+    v0_x: vec4<f32>,
+    v0_y: vec4<f32>,
+    v0_z: vec4<f32>,
+    e1_x: vec4<f32>,
+    e1_y: vec4<f32>,
+    e1_z: vec4<f32>,
+    e2_x: vec4<f32>,
+    e2_y: vec4<f32>,
+    e2_z: vec4<f32>,
+    prim: vec4<u32>,
+}
+
+struct GpuInstance {
+    world_from_object: array<vec4<f32>, 3>,
+    object_from_world: array<vec4<f32>, 3>,
+    node_base: u32,
+    block_base: u32,
+    triangle_base: u32,
+    vertex_base: u32,
+    material_override: u32,
+    flags: u32,
+    _padding: vec2<u32>,
+}
+
+struct GpuTriangle {
+    indices: array<u32, 3>,
+    material: u32,
+}
+
+struct GpuVertex {
+    position: array<f32, 3>,
+    u: f32,
+    normal: array<f32, 3>,
+    v: f32,
+    tangent: vec4<f32>,
+}
+
+struct GpuMaterial {
+    base_color: vec4<f32>,
+    emission: vec4<f32>,
+    absorption: vec4<f32>,
+    kind: u32,
+    roughness: f32,
+    metallic: f32,
+    ior: f32,
+    transmission: f32,
+    normal_scale: f32,
+    flags: u32,
+    base_color_texture: u32,
+    normal_texture: u32,
+    emission_texture: u32,
+    metal_rough_texture: u32,
+    _padding: u32,
+}
+
+struct GpuTexture {
+    texel_offset: u32,
+    width: u32,
+    height: u32,
+    flags: u32,
+}
+
+struct GpuLight {
+    p0: vec3<f32>,
+    instance: u32,
+    p1: vec3<f32>,
+    triangle: u32,
+    p2: vec3<f32>,
+    weight: f32,
+    alias_threshold: f32,
+    alias: u32,
+    _padding: vec2<u32>,
+}
+
+struct GpuFrameUniforms {
+    camera_position: vec3<f32>,
+    lens_radius: f32,
+    camera_right: vec3<f32>,
+    focus_distance: f32,
+    camera_up: vec3<f32>,
+    _padding0: f32,
+    camera_forward: vec3<f32>,
+    _padding1: f32,
+    sun_direction: vec3<f32>,
+    sun_cos_radius: f32,
+    sun_radiance: vec3<f32>,
+    sun_solid_angle: f32,
+    sky_zenith: vec4<f32>,
+    sky_horizon: vec4<f32>,
+    sky_ground: vec4<f32>,
+    width: u32,
+    height: u32,
+    spp: u32,
+    sample_base: u32,
+    seed: u32,
+    max_bounces: u32,
+    roulette_start: u32,
+    light_count: u32,
+    light_weight_total: f32,
+    roulette_scale: f32,
+    sky_kind: u32,
+    tlas_root: u32,
+}
