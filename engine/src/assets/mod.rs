@@ -8,3 +8,12 @@ mod root;
 pub use error::{AssetError, AssetResult};
 pub use model::{Material, MaterialKind, Mesh, Model, Placement, Texture, TextureRef, Wrap};
 pub use root::AssetRoot;
+
+mod level;
+pub use level::{
+    CameraDesc, InstanceEntry, Level, LevelMaterial, ModelEntry, RenderSettings, SkyDesc, SunDesc,
+    TransformDesc,
+};
+
+mod scene_desc;
+pub use scene_desc::{SceneDesc, SceneInstance};

@@ -1,0 +1,119 @@
+//! Loading a level: the RON file and every model it names, into a [`SceneDesc`].
+//!
+//! Owns: resolving model paths through the [`AssetRoot`], loading each model once, turning
+//! level materials into engine materials, and checking every name the level uses (models,
+//! materials) with an error that names the level and the item.
+//! Must not: build BVHs or touch the GPU.
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use glam::Vec3;
+use rayon::prelude::*;
+
+use super::error::{AssetError, AssetResult};
+use super::level::{Level, LevelMaterial};
+use super::model::Material;
+use super::root::AssetRoot;
+use super::scene_desc::{SceneDesc, SceneInstance};
+
+/// Reads `level_path` and loads everything it names from `root` (models in parallel).
+pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<SceneDesc> {
+    let level = Level::read(level_path)?;
+    scene_from_level(level_path, &level, root)
+}
+
+/// Loads the models of an already parsed `level` (read from `level_path`).
+pub fn scene_from_level(level_path: &Path, level: &Level, root: &AssetRoot) -> AssetResult<SceneDesc> {
+    let level_error = |message: String| AssetError::Level {
+        path: level_path.to_path_buf(),
+        message,
+    };
+    let mut model_index = HashMap::new();
+    for (i, entry) in level.models.iter().enumerate() {
+        if model_index.insert(entry.name.as_str(), i).is_some() {
+            return Err(level_error(format!("model name {:?} is used twice", entry.name)));
+        }
+    }
+    let mut material_index = HashMap::new();
+    for (i, m) in level.materials.iter().enumerate() {
+        if material_index.insert(m.name.as_str(), i).is_some() {
+            return Err(level_error(format!("material name {:?} is used twice", m.name)));
+        }
+    }
+    let mut instances = Vec::with_capacity(level.instances.len());
+    for (i, instance) in level.instances.iter().enumerate() {
+        let Some(&model) = model_index.get(instance.model.as_str()) else {
+            return Err(level_error(format!(
+                "instance {i} uses the model {:?}, which the level does not define",
+                instance.model
+            )));
+        };
+        let material_override = match &instance.material {
+            None => None,
+            Some(name) => Some(*material_index.get(name.as_str()).ok_or_else(|| {
+                level_error(format!(
+                    "instance {i} uses the material {name:?}, which the level does not define"
+                ))
+            })?),
+        };
+        let world_from_model = instance.transform.world_from_model();
+        if !world_from_model.is_finite() || world_from_model.determinant() == 0.0 {
+            return Err(level_error(format!(
+                "instance {i} ({:?}) has a degenerate or non-finite transform",
+                instance.model
+            )));
+        }
+        instances.push(SceneInstance {
+            model,
+            world_from_model,
+            material_override,
+        });
+    }
+    let camera = &level.camera;
+    if !(camera.vertical_fov_deg > 0.0 && camera.vertical_fov_deg < 180.0) {
+        return Err(level_error(format!(
+            "camera.vertical_fov_deg must be in (0, 180), not {}",
+            camera.vertical_fov_deg
+        )));
+    }
+    if Vec3::from(camera.look_at) == Vec3::from(camera.position) {
+        return Err(level_error("camera.look_at equals camera.position".into()));
+    }
+    let models = level
+        .models
+        .par_iter()
+        .map(|entry| super::load_model(root, level_path, &entry.path))
+        .collect::<AssetResult<Vec<_>>>()?;
+    for (model, entry) in models.iter().zip(&level.models) {
+        for note in &model.notes {
+            log::info!("{}: {}: {note}", level_path.display(), entry.path);
+        }
+    }
+    Ok(SceneDesc {
+        source: level_path.to_path_buf(),
+        models,
+        level_materials: level.materials.iter().map(level_material).collect(),
+        instances,
+        camera: level.camera,
+        sun: level.sun,
+        sky: level.sky,
+        render: level.render,
+    })
+}
+
+fn level_material(m: &LevelMaterial) -> Material {
+    Material {
+        name: m.name.clone(),
+        kind: m.kind,
+        base_color: Vec3::from(m.base_color),
+        emission: Vec3::from(m.emission),
+        two_sided_emission: m.two_sided_emission,
+        roughness: m.roughness,
+        metallic: m.metallic,
+        ior: m.ior,
+        attenuation_color: Vec3::from(m.attenuation_color),
+        attenuation_distance: m.attenuation_distance.unwrap_or(f32::INFINITY),
+        ..Material::default()
+    }
+}

@@ -1,0 +1,105 @@
+//! The camera and the per-render uniforms built around it.
+//!
+//! Owns: turning a `CameraDesc` (position, look-at, up, vertical FOV, lens) plus image size,
+//! sampling settings, sun and sky into a `GpuFrameUniforms`. The pixel-to-ray mapping is the
+//! one of the reference renders (`shared/external/reference/*/scene.md`): for pixel (px, py),
+//! py downward, sampled at (u, v) in [0,1)², `sx = 2 (px+u)/W − 1`, `sy = 1 − 2 (py+v)/H`,
+//! direction = normalize(forward + sx·right + sy·up) with right and up pre-scaled by
+//! tan(vfov/2)·aspect and tan(vfov/2).
+//! Must not: know which tracer consumes the uniforms.
+
+use glam::Vec3;
+
+use super::lights::fill_sun_and_sky;
+use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
+use crate::layout::GpuFrameUniforms;
+
+/// What one render call needs besides the scene.
+#[derive(Clone, Copy, Debug)]
+pub struct FrameSettings {
+    pub width: u32,
+    pub height: u32,
+    /// Samples per pixel traced by this call.
+    pub spp: u32,
+    /// Global index of the first sample (so successive calls continue the same sequence).
+    pub sample_base: u32,
+    pub seed: u32,
+    pub max_bounces: u32,
+    pub roulette_start: u32,
+    /// Multiplies the roulette survival probability; 1 is the default.
+    pub roulette_scale: f32,
+}
+
+impl FrameSettings {
+    /// Settings for a `width × height` image with the level's bounce settings.
+    pub fn new(width: u32, height: u32, spp: u32, seed: u32, render: &RenderSettings) -> Self {
+        Self {
+            width,
+            height,
+            spp,
+            sample_base: 0,
+            seed,
+            max_bounces: render.max_bounces,
+            roulette_start: render.roulette_start,
+            roulette_scale: 1.0,
+        }
+    }
+}
+
+/// Builds the uniforms of one render call. Light totals and the TLAS root come from the scene.
+pub fn frame_uniforms(
+    camera: &CameraDesc,
+    sun: Option<&SunDesc>,
+    sky: &SkyDesc,
+    frame: &FrameSettings,
+    light_count: u32,
+    light_weight_total: f32,
+    tlas_root: u32,
+) -> GpuFrameUniforms {
+    let position = Vec3::from(camera.position);
+    let look_at = Vec3::from(camera.look_at);
+    let forward = (look_at - position).try_normalize().unwrap_or(Vec3::NEG_Z);
+    let up_hint = Vec3::from(camera.up);
+    let right = forward
+        .cross(up_hint)
+        .try_normalize()
+        .unwrap_or_else(|| forward.any_orthonormal_vector());
+    let up = right.cross(forward);
+    let tan_half = (camera.vertical_fov_deg.clamp(1e-3, 179.0).to_radians() * 0.5).tan();
+    let aspect = frame.width.max(1) as f32 / frame.height.max(1) as f32;
+    let focus_distance = camera
+        .focus_distance
+        .unwrap_or_else(|| (look_at - position).length())
+        .max(1e-4);
+    let mut u = GpuFrameUniforms {
+        camera_position: position.to_array(),
+        lens_radius: camera.aperture_radius.max(0.0),
+        camera_right: (right * tan_half * aspect).to_array(),
+        focus_distance,
+        camera_up: (up * tan_half).to_array(),
+        _padding0: 0.0,
+        camera_forward: forward.to_array(),
+        _padding1: 0.0,
+        sun_direction: [0.0, 1.0, 0.0],
+        sun_cos_radius: 1.0,
+        sun_radiance: [0.0; 3],
+        sun_solid_angle: -1.0,
+        sky_zenith: [0.0; 4],
+        sky_horizon: [0.0; 4],
+        sky_ground: [0.0; 4],
+        width: frame.width,
+        height: frame.height,
+        spp: frame.spp,
+        sample_base: frame.sample_base,
+        seed: frame.seed,
+        max_bounces: frame.max_bounces,
+        roulette_start: frame.roulette_start,
+        light_count,
+        light_weight_total,
+        roulette_scale: frame.roulette_scale,
+        sky_kind: 0,
+        tlas_root,
+    };
+    fill_sun_and_sky(&mut u, sun, sky);
+    u
+}

@@ -1,0 +1,13 @@
+//! The CPU tracer: the same path tracing algorithm as the GPU tracer, in Rust, parallel over
+//! image tiles with rayon, reading the same flattened scene.
+
+pub mod bsdf;
+pub mod integrator;
+pub mod microfacet;
+pub mod rng;
+pub mod sampling;
+pub mod surface;
+pub mod texture;
+mod tracer;
+
+pub use tracer::CpuTracer;

@@ -1,0 +1,86 @@
+//! Texture lookups of the CPU tracer (twin: `shaders/shared/texture.wgsl`).
+//!
+//! Owns: wrapping, nearest and bilinear filtering over the packed f16 texel buffer.
+//! Texture coordinates follow glTF: (0, 0) is the top-left of the image, v grows downward.
+//! Must not: decode image files.
+
+use glam::{Vec2, Vec4};
+use half::f16;
+
+use crate::layout::{GpuTexture, TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR};
+
+fn unpack(t: [u32; 2]) -> Vec4 {
+    let h = |bits: u32| f16::from_bits(bits as u16).to_f32();
+    Vec4::new(h(t[0] & 0xffff), h(t[0] >> 16), h(t[1] & 0xffff), h(t[1] >> 16))
+}
+
+fn wrap(i: i32, size: i32, mode: u32) -> i32 {
+    match mode {
+        WRAP_CLAMP => i.clamp(0, size - 1),
+        WRAP_MIRROR => {
+            let m = i.rem_euclid(2 * size);
+            if m >= size { 2 * size - 1 - m } else { m }
+        }
+        _ => i.rem_euclid(size),
+    }
+}
+
+/// Samples texture `index` at `uv`; returns opaque white for `INVALID` or a broken index.
+pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2) -> Vec4 {
+    let Some(t) = textures.get(index as usize) else {
+        return Vec4::ONE;
+    };
+    if t.width == 0 || t.height == 0 {
+        return Vec4::ONE;
+    }
+    let uv = if uv.is_finite() { uv } else { Vec2::ZERO };
+    let (w, h) = (t.width as i32, t.height as i32);
+    let (wrap_u, wrap_v) = (t.flags & 3, (t.flags >> 2) & 3);
+    let fetch = |x: i32, y: i32| {
+        let x = wrap(x, w, wrap_u);
+        let y = wrap(y, h, wrap_v);
+        let i = t.texel_offset as usize + (y * w + x) as usize;
+        texels.get(i).map(|&p| unpack(p)).unwrap_or(Vec4::ONE)
+    };
+    // Coordinates far outside [0, 1] would overflow i32; wrap them into a safe range first.
+    let x = (uv.x * w as f32).clamp(-1.0e6, 1.0e6);
+    let y = (uv.y * h as f32).clamp(-1.0e6, 1.0e6);
+    if t.flags & TEXTURE_FLAG_NEAREST != 0 {
+        return fetch(x.floor() as i32, y.floor() as i32);
+    }
+    let (x, y) = (x - 0.5, y - 0.5);
+    let (x0, y0) = (x.floor(), y.floor());
+    let (fx, fy) = (x - x0, y - y0);
+    let (x0, y0) = (x0 as i32, y0 as i32);
+    let top = fetch(x0, y0) * (1.0 - fx) + fetch(x0 + 1, y0) * fx;
+    let bottom = fetch(x0, y0 + 1) * (1.0 - fx) + fetch(x0 + 1, y0 + 1) * fx;
+    top * (1.0 - fy) + bottom * fy
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::layout::WRAP_REPEAT;
+    use crate::render::materials::pack_texel;
+
+    #[test]
+    fn bilinear_and_wrap() {
+        let px = |v: f32| pack_texel([f16::from_f32(v); 4]);
+        // 2×1 texture: 0 and 1.
+        let texels = vec![px(0.0), px(1.0)];
+        let mut t = GpuTexture { texel_offset: 0, width: 2, height: 1, flags: WRAP_REPEAT };
+        let s = |t: &GpuTexture, u: f32| sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5)).x;
+        assert_eq!(s(&t, 0.25), 0.0); // texel centre
+        assert_eq!(s(&t, 0.5), 0.5); // half way
+        assert_eq!(s(&t, 0.0), 0.5); // repeat: blends texel 1 (wrapped) and texel 0
+        t.flags = WRAP_CLAMP;
+        assert_eq!(s(&t, 0.0), 0.0);
+        t.flags = WRAP_MIRROR;
+        assert_eq!(s(&t, -0.25), 0.0);
+        assert_eq!(s(&t, 1.25), 1.0);
+        t.flags = TEXTURE_FLAG_NEAREST;
+        assert_eq!(s(&t, 0.49), 0.0);
+        assert_eq!(s(&t, 0.51), 1.0);
+        assert_eq!(sample(&[], &texels, 0, Vec2::ZERO), Vec4::ONE);
+    }
+}

@@ -1,0 +1,107 @@
+//! [`CpuTracer`]: renders a `RenderScene` on all CPU cores.
+//!
+//! Owns: splitting the image into 16×16 tiles handed to rayon, running the integrator for every
+//! sample of every pixel of a tile, and adding the tile sums to the film. Sums are formed in
+//! sample order inside each pixel, so the film is bit-identical for any thread count.
+//! Must not: change the scene.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use glam::Vec3;
+use rayon::prelude::*;
+
+use super::integrator::{radiance, RayCounts};
+use crate::layout::GpuFrameUniforms;
+use crate::render::film::Film;
+use crate::render::scene::RenderScene;
+use crate::render::tracer::{RenderError, RenderStats, Tracer};
+
+/// Tile edge in pixels.
+const TILE: u32 = 16;
+
+/// The CPU path tracer.
+pub struct CpuTracer {
+    scene: Arc<RenderScene>,
+    film: Film,
+}
+
+impl CpuTracer {
+    pub fn new(scene: Arc<RenderScene>) -> Self {
+        Self {
+            scene,
+            film: Film::new(0, 0),
+        }
+    }
+}
+
+impl Tracer for CpuTracer {
+    fn name(&self) -> &'static str {
+        "cpu"
+    }
+
+    fn device(&self) -> String {
+        format!("CPU, {} threads", rayon::current_num_threads())
+    }
+
+    fn render(&mut self, u: &GpuFrameUniforms) -> Result<RenderStats, RenderError> {
+        if u.width == 0 || u.height == 0 {
+            return Err(RenderError::BadSize {
+                width: u.width,
+                height: u.height,
+                reason: "width and height must be positive".into(),
+            });
+        }
+        if self.film.width != u.width || self.film.height != u.height {
+            self.film = Film::new(u.width, u.height);
+        }
+        let started = Instant::now();
+        let tiles_x = u.width.div_ceil(TILE);
+        let tiles_y = u.height.div_ceil(TILE);
+        let scene = &*self.scene;
+        let tracer = scene.trace_scene();
+        let results: Vec<(u32, Vec<Vec3>, RayCounts)> = (0..tiles_x * tiles_y)
+            .into_par_iter()
+            .map(|tile| {
+                let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
+                let (x1, y1) = ((x0 + TILE).min(u.width), (y0 + TILE).min(u.height));
+                let mut counts = RayCounts::default();
+                let mut sums = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
+                for y in y0..y1 {
+                    for x in x0..x1 {
+                        let mut sum = Vec3::ZERO;
+                        for s in 0..u.spp {
+                            sum += radiance(scene, &tracer, u, x, y, u.sample_base + s, &mut counts);
+                        }
+                        sums.push(sum);
+                    }
+                }
+                (tile, sums, counts)
+            })
+            .collect();
+        let mut counts = RayCounts::default();
+        for (tile, sums, c) in results {
+            counts += c;
+            let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
+            let x1 = (x0 + TILE).min(u.width);
+            let w = (x1 - x0) as usize;
+            for (i, s) in sums.iter().enumerate() {
+                let (x, y) = (x0 as usize + i % w, y0 as usize + i / w);
+                self.film.sum[y * u.width as usize + x] += *s;
+            }
+        }
+        self.film.samples += u.spp;
+        Ok(RenderStats {
+            counts,
+            seconds: started.elapsed().as_secs_f64(),
+        })
+    }
+
+    fn film(&mut self) -> Result<Film, RenderError> {
+        Ok(self.film.clone())
+    }
+
+    fn clear(&mut self) {
+        self.film = Film::new(self.film.width, self.film.height);
+    }
+}

@@ -1,0 +1,68 @@
+//! The wgpu device the GPU tracer runs on (render thread only).
+//!
+//! Owns: creating a headless instance, adapter and device with the adapter's own limits (wgpu's
+//! defaults are lower than what lavapipe offers: 128 MiB per storage binding), and routing
+//! uncaptured wgpu errors to the log instead of a panic. Without a GPU, Mesa's lavapipe
+//! (software Vulkan) runs the same WGSL on the CPU.
+//! Must not: know scenes or shaders.
+
+use std::sync::Arc;
+
+use crate::render::tracer::RenderError;
+
+/// A device and its queue.
+pub struct GpuContext {
+    pub device: wgpu::Device,
+    pub queue: wgpu::Queue,
+    pub info: wgpu::AdapterInfo,
+    pub limits: wgpu::Limits,
+}
+
+impl GpuContext {
+    /// Opens the best adapter without any window or display. Honours `WGPU_BACKEND` and the
+    /// other wgpu environment variables.
+    pub fn headless() -> Result<Arc<Self>, RenderError> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+        }))
+        .map_err(|_| RenderError::NoAdapter)?;
+        let info = adapter.get_info();
+        let limits = adapter.limits();
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("candela"),
+            required_features: wgpu::Features::empty(),
+            required_limits: limits.clone(),
+            ..Default::default()
+        }))
+        .map_err(|e| RenderError::Device(e.to_string()))?;
+        device.on_uncaptured_error(Arc::new(|error: wgpu::Error| {
+            log::error!("wgpu: {error}");
+        }));
+        log::info!(
+            "GPU adapter: {} ({:?}, {:?}, driver {} {})",
+            info.name,
+            info.device_type,
+            info.backend,
+            info.driver,
+            info.driver_info
+        );
+        Ok(Arc::new(Self {
+            device,
+            queue,
+            info,
+            limits,
+        }))
+    }
+
+    /// "name (type, backend)" for reports.
+    pub fn describe(&self) -> String {
+        format!(
+            "{} ({:?}, {:?})",
+            self.info.name, self.info.device_type, self.info.backend
+        )
+    }
+}

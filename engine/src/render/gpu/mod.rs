@@ -1,0 +1,9 @@
+//! The GPU tracer: wgpu device set-up, the shader registry, scene upload and the tracing pass.
+
+mod context;
+mod shaders;
+mod tracer;
+
+pub use context::GpuContext;
+pub use shaders::{compose, ShaderSource, SHARED};
+pub use tracer::GpuTracer;

@@ -1,0 +1,321 @@
+//! [`GpuTracer`]: the path tracer as a wgpu compute pass (render thread only).
+//!
+//! Owns: uploading a `RenderScene` once (storage buffers in `layout` form, bound as in
+//! `shaders/shared/bindings.wgsl`), the film and ray-counter buffers, dispatching the tracing
+//! pass, and reading results back.
+//! Must not: modify the scene on the CPU side or know about windows.
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use glam::Vec3;
+use wgpu::util::DeviceExt;
+
+use super::context::GpuContext;
+use super::shaders::{compose, TRACE};
+use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
+use crate::render::film::Film;
+use crate::render::scene::RenderScene;
+use crate::render::tracer::{RayCounts, RenderError, RenderStats, Tracer};
+
+/// Workgroup edge of `trace_main` (8×8 invocations).
+const WORKGROUP: u32 = 8;
+
+/// The GPU path tracer.
+pub struct GpuTracer {
+    context: Arc<GpuContext>,
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    /// Uniforms, then the nine scene buffers, in binding order 0..=9.
+    scene_buffers: Vec<wgpu::Buffer>,
+    film: Option<FilmBuffers>,
+    samples: u32,
+}
+
+struct FilmBuffers {
+    width: u32,
+    height: u32,
+    film: wgpu::Buffer,
+    counters: wgpu::Buffer,
+    bind_group: wgpu::BindGroup,
+}
+
+/// Bytes of `data`, or one zeroed element when it is empty (bindings may not be empty).
+fn non_empty<T: bytemuck::Pod + bytemuck::Zeroable>(data: &[T]) -> Vec<u8> {
+    if data.is_empty() {
+        bytemuck::bytes_of(&T::zeroed()).to_vec()
+    } else {
+        bytemuck::cast_slice(data).to_vec()
+    }
+}
+
+impl GpuTracer {
+    /// Uploads `scene` and builds the pipeline.
+    pub fn new(context: Arc<GpuContext>, scene: &RenderScene) -> Result<Self, RenderError> {
+        let device = &context.device;
+        let max_binding = context.limits.max_storage_buffer_binding_size as u64;
+        let contents: [(&str, Vec<u8>); 9] = [
+            ("nodes", non_empty(&scene.nodes)),
+            ("blocks", non_empty::<GpuTri4>(&scene.blocks)),
+            ("instances", non_empty(&scene.instances)),
+            ("triangles", non_empty::<GpuTriangle>(&scene.triangles)),
+            ("vertices", non_empty::<GpuVertex>(&scene.vertices)),
+            ("materials", non_empty(&scene.materials)),
+            ("textures", non_empty::<GpuTexture>(&scene.textures)),
+            ("texels", non_empty(&scene.texels)),
+            ("lights", non_empty(&scene.lights.lights)),
+        ];
+        for (name, bytes) in &contents {
+            if bytes.len() as u64 > max_binding {
+                return Err(RenderError::TooLarge(format!(
+                    "{name} need {} bytes; this device binds at most {max_binding} bytes per buffer",
+                    bytes.len()
+                )));
+            }
+        }
+        let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let mut scene_buffers = vec![device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("frame uniforms"),
+            size: size_of::<GpuFrameUniforms>() as u64,
+            usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        })];
+        for (name, bytes) in &contents {
+            scene_buffers.push(device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some(name),
+                contents: bytes,
+                usage: wgpu::BufferUsages::STORAGE,
+            }));
+        }
+        let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let mut entries = vec![wgpu::BindGroupLayoutEntry {
+            binding: 0,
+            visibility: wgpu::ShaderStages::COMPUTE,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Uniform,
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        }];
+        entries.extend((1..=9).map(|b| storage(b, true)));
+        entries.push(storage(10, false));
+        entries.push(storage(11, false));
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("trace bindings"),
+            entries: &entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("trace"),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: 0,
+        });
+        let source = compose(TRACE);
+        let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+            label: Some("trace.wgsl"),
+            source: wgpu::ShaderSource::Wgsl(source.into()),
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some("trace"),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some("trace_main"),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        if let Some(error) = pollster::block_on(scope.pop()) {
+            return Err(RenderError::Device(error.to_string()));
+        }
+        Ok(Self {
+            context,
+            pipeline,
+            layout,
+            scene_buffers,
+            film: None,
+            samples: 0,
+        })
+    }
+
+    fn film_buffers(&mut self, width: u32, height: u32) -> Result<&FilmBuffers, RenderError> {
+        let matches = matches!(&self.film, Some(f) if f.width == width && f.height == height);
+        if !matches {
+            let device = &self.context.device;
+            let bytes = width as u64 * height as u64 * 16;
+            if bytes > self.context.limits.max_storage_buffer_binding_size as u64 {
+                return Err(RenderError::BadSize {
+                    width,
+                    height,
+                    reason: "the film does not fit one storage buffer of this device".into(),
+                });
+            }
+            let film = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("film"),
+                size: bytes,
+                usage: wgpu::BufferUsages::STORAGE
+                    | wgpu::BufferUsages::COPY_SRC
+                    | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let counters = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("ray counters"),
+                size: 16,
+                usage: wgpu::BufferUsages::STORAGE
+                    | wgpu::BufferUsages::COPY_SRC
+                    | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let mut entries: Vec<wgpu::BindGroupEntry> = self
+                .scene_buffers
+                .iter()
+                .enumerate()
+                .map(|(i, b)| wgpu::BindGroupEntry {
+                    binding: i as u32,
+                    resource: b.as_entire_binding(),
+                })
+                .collect();
+            entries.push(wgpu::BindGroupEntry {
+                binding: 10,
+                resource: film.as_entire_binding(),
+            });
+            entries.push(wgpu::BindGroupEntry {
+                binding: 11,
+                resource: counters.as_entire_binding(),
+            });
+            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("trace"),
+                layout: &self.layout,
+                entries: &entries,
+            });
+            self.film = Some(FilmBuffers {
+                width,
+                height,
+                film,
+                counters,
+                bind_group,
+            });
+            self.samples = 0;
+        }
+        self.film
+            .as_ref()
+            .ok_or_else(|| RenderError::Device("film buffers missing".into()))
+    }
+
+    /// Copies `buffer` into a mappable buffer and returns its bytes.
+    fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, RenderError> {
+        let device = &self.context.device;
+        let staging = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size: buffer.size(),
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = device.create_command_encoder(&Default::default());
+        encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, buffer.size());
+        self.context.queue.submit([encoder.finish()]);
+        let (sender, receiver) = std::sync::mpsc::channel();
+        staging.map_async(wgpu::MapMode::Read, .., move |result| {
+            let _ = sender.send(result);
+        });
+        device
+            .poll(wgpu::PollType::Wait {
+                submission_index: None,
+                timeout: None,
+            })
+            .map_err(|e| RenderError::Device(e.to_string()))?;
+        receiver
+            .recv()
+            .map_err(|e| RenderError::Device(e.to_string()))?
+            .map_err(|e| RenderError::Device(e.to_string()))?;
+        let bytes = staging
+            .get_mapped_range(..)
+            .map_err(|e| RenderError::Device(e.to_string()))?
+            .to_vec();
+        staging.unmap();
+        Ok(bytes)
+    }
+}
+
+impl Tracer for GpuTracer {
+    fn name(&self) -> &'static str {
+        "gpu"
+    }
+
+    fn device(&self) -> String {
+        self.context.describe()
+    }
+
+    fn render(&mut self, u: &GpuFrameUniforms) -> Result<RenderStats, RenderError> {
+        if u.width == 0 || u.height == 0 {
+            return Err(RenderError::BadSize {
+                width: u.width,
+                height: u.height,
+                reason: "width and height must be positive".into(),
+            });
+        }
+        let started = Instant::now();
+        self.film_buffers(u.width, u.height)?;
+        let context = Arc::clone(&self.context);
+        let Some(film) = self.film.as_ref() else {
+            return Err(RenderError::Device("film buffers missing".into()));
+        };
+        context
+            .queue
+            .write_buffer(&self.scene_buffers[0], 0, bytemuck::bytes_of(u));
+        let mut encoder = context.device.create_command_encoder(&Default::default());
+        encoder.clear_buffer(&film.counters, 0, None);
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
+                label: Some("trace"),
+                timestamp_writes: None,
+            });
+            pass.set_pipeline(&self.pipeline);
+            pass.set_bind_group(0, &film.bind_group, &[]);
+            pass.dispatch_workgroups(u.width.div_ceil(WORKGROUP), u.height.div_ceil(WORKGROUP), 1);
+        }
+        context.queue.submit([encoder.finish()]);
+        let counters_bytes = self.read_buffer(&film.counters)?;
+        let c: &[u32] = bytemuck::cast_slice(&counters_bytes);
+        self.samples += u.spp;
+        Ok(RenderStats {
+            counts: RayCounts {
+                camera: c[0] as u64,
+                bounce: c[1] as u64,
+                shadow: c[2] as u64,
+                dropped: c[3] as u64,
+            },
+            seconds: started.elapsed().as_secs_f64(),
+        })
+    }
+
+    fn film(&mut self) -> Result<Film, RenderError> {
+        let Some(film) = self.film.as_ref() else {
+            return Ok(Film::new(0, 0));
+        };
+        let bytes = self.read_buffer(&film.film)?;
+        let texels: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
+        Ok(Film {
+            width: film.width,
+            height: film.height,
+            sum: texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect(),
+            samples: self.samples,
+        })
+    }
+
+    fn clear(&mut self) {
+        if let Some(film) = &self.film {
+            let mut encoder = self.context.device.create_command_encoder(&Default::default());
+            encoder.clear_buffer(&film.film, 0, None);
+            self.context.queue.submit([encoder.finish()]);
+        }
+        self.samples = 0;
+    }
+}

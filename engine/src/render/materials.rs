@@ -1,0 +1,122 @@
+//! Materials and textures in the form the tracers read.
+//!
+//! Owns: converting engine [`Material`]s into `GpuMaterial` (roughness, absorption coefficients,
+//! light-picking weight) and packing every model's textures into one texel buffer with a
+//! `GpuTexture` table. Must not: decode images (the loaders did) or sample textures.
+
+use glam::Vec3;
+use half::f16;
+
+use crate::assets::{Material, MaterialKind, Model, Wrap};
+use crate::layout::{
+    GpuMaterial, GpuTexture, INVALID, MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_DIFFUSE,
+    MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH, TEXTURE_FLAG_NEAREST, WRAP_CLAMP,
+    WRAP_MIRROR, WRAP_REPEAT,
+};
+use crate::render::cpu::sampling::luminance;
+
+fn wrap_bits(w: Wrap) -> u32 {
+    match w {
+        Wrap::Repeat => WRAP_REPEAT,
+        Wrap::Clamp => WRAP_CLAMP,
+        Wrap::Mirror => WRAP_MIRROR,
+    }
+}
+
+/// Packs two f16 pairs: `[r | g << 16, b | a << 16]` (WGSL `unpack2x16float` order).
+pub fn pack_texel(t: [f16; 4]) -> [u32; 2] {
+    let bits = t.map(|c| c.to_bits() as u32);
+    [bits[0] | (bits[1] << 16), bits[2] | (bits[3] << 16)]
+}
+
+/// Texture table, texels, the first global texture index of each model, and the mean RGB
+/// luminance of every (global) texture.
+pub fn pack_textures(models: &[Model]) -> (Vec<GpuTexture>, Vec<[u32; 2]>, Vec<u32>, Vec<f32>) {
+    let mut table = Vec::new();
+    let mut texels = Vec::new();
+    let mut bases = Vec::with_capacity(models.len());
+    let mut means = Vec::new();
+    for model in models {
+        bases.push(table.len() as u32);
+        for texture in &model.textures {
+            let mut flags = wrap_bits(texture.wrap_u) | (wrap_bits(texture.wrap_v) << 2);
+            if texture.nearest {
+                flags |= TEXTURE_FLAG_NEAREST;
+            }
+            table.push(GpuTexture {
+                texel_offset: texels.len() as u32,
+                width: texture.width,
+                height: texture.height,
+                flags,
+            });
+            let mut sum = 0.0f64;
+            for t in &texture.texels {
+                texels.push(pack_texel(*t));
+                sum += luminance(Vec3::new(t[0].to_f32(), t[1].to_f32(), t[2].to_f32())) as f64;
+            }
+            means.push((sum / texture.texels.len().max(1) as f64) as f32);
+        }
+    }
+    if texels.is_empty() {
+        // Storage buffers may not be empty.
+        texels.push([0, 0]);
+    }
+    (table, texels, bases, means)
+}
+
+/// Converts one material; `texture_base` is the global index of its model's first texture and
+/// `texture_means` the mean luminance of each global texture.
+pub fn to_gpu_material(m: &Material, texture_base: u32, texture_means: &[f32]) -> GpuMaterial {
+    let tex = |t: Option<crate::assets::TextureRef>| {
+        t.map(|t| texture_base + t.0 as u32).unwrap_or(INVALID)
+    };
+    let kind = match m.kind {
+        MaterialKind::Diffuse => MATERIAL_DIFFUSE,
+        MaterialKind::Conductor => MATERIAL_CONDUCTOR,
+        MaterialKind::Dielectric => MATERIAL_DIELECTRIC,
+        MaterialKind::MetalRough => MATERIAL_METAL_ROUGH,
+    };
+    let emission_texture = tex(m.emission_texture);
+    let texture_mean = if emission_texture == INVALID {
+        1.0
+    } else {
+        texture_means
+            .get(emission_texture as usize)
+            .copied()
+            .unwrap_or(1.0)
+    };
+    let emission = m.emission.max(Vec3::ZERO);
+    let emission_weight = if emission.is_finite() {
+        luminance(emission) * texture_mean
+    } else {
+        0.0
+    };
+    // Beer–Lambert: colour c left after distance d ⇒ σ = −ln(c) / d per channel.
+    let absorption = if m.attenuation_distance.is_finite() && m.attenuation_distance > 0.0 {
+        let c = m.attenuation_color.clamp(Vec3::splat(1e-6), Vec3::ONE);
+        Vec3::new(-c.x.ln(), -c.y.ln(), -c.z.ln()) / m.attenuation_distance
+    } else {
+        Vec3::ZERO
+    };
+    GpuMaterial {
+        base_color: m.base_color.clamp(Vec3::ZERO, Vec3::ONE).extend(1.0).to_array(),
+        emission: emission.extend(emission_weight.max(0.0)).to_array(),
+        absorption: absorption.extend(0.0).to_array(),
+        kind,
+        roughness: m.roughness.clamp(0.0, 1.0),
+        metallic: m.metallic.clamp(0.0, 1.0),
+        ior: if m.ior.is_finite() && m.ior > 1e-3 { m.ior } else { 1.5 },
+        transmission: m.transmission.clamp(0.0, 1.0),
+        normal_scale: m.normal_scale,
+        flags: if m.two_sided_emission {
+            MATERIAL_FLAG_TWO_SIDED_EMISSION
+        } else {
+            0
+        },
+        base_color_texture: tex(m.base_color_texture),
+        normal_texture: tex(m.normal_texture),
+        emission_texture,
+        metal_rough_texture: tex(m.metal_rough_texture),
+        _padding: 0,
+    }
+}

@@ -1,0 +1,14 @@
+//! Rendering: the render-side scene, lights, camera, the `Tracer` trait with its GPU and CPU
+//! implementations, and the film.
+
+pub mod camera;
+pub mod cpu;
+pub mod film;
+pub mod lights;
+pub mod materials;
+pub mod scene;
+pub mod tracer;
+
+pub use camera::{frame_uniforms, FrameSettings};
+pub use scene::RenderScene;
+pub use tracer::{RenderError, RenderStats, Tracer};

@@ -1,0 +1,60 @@
+//! The `Tracer` trait: what every tracer (GPU or CPU) offers the frame loop and the tools.
+//!
+//! Owns: the trait, render statistics and render errors. Both implementations run the same
+//! algorithm over the same `RenderScene` buffers with the same RNG, so their films agree
+//! within Monte-Carlo noise (`tests/gpu_matches_cpu.rs`).
+//! Must not: hold scene data itself.
+
+pub use super::cpu::integrator::RayCounts;
+use super::film::Film;
+use crate::layout::GpuFrameUniforms;
+
+/// What one `render` call did.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RenderStats {
+    pub counts: RayCounts,
+    /// Wall time of the call, seconds.
+    pub seconds: f64,
+}
+
+impl RenderStats {
+    /// All rays traced (camera + bounce + shadow).
+    pub fn rays(&self) -> u64 {
+        self.counts.camera + self.counts.bounce + self.counts.shadow
+    }
+}
+
+/// Things that can go wrong while rendering.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    #[error(
+        "no GPU adapter found (not even a software Vulkan driver such as Mesa's lavapipe); \
+         install mesa-vulkan-drivers, or use the CPU tracer (--tracer cpu)"
+    )]
+    NoAdapter,
+    #[error("GPU device error: {0}")]
+    Device(String),
+    #[error("the scene does not fit the GPU: {0}")]
+    TooLarge(String),
+    #[error("image size {width}×{height} is not allowed: {reason}")]
+    BadSize {
+        width: u32,
+        height: u32,
+        reason: String,
+    },
+}
+
+/// A path tracer that accumulates samples into its film.
+pub trait Tracer {
+    /// "gpu" or "cpu".
+    fn name(&self) -> &'static str;
+    /// A description of the device (adapter name, thread count).
+    fn device(&self) -> String;
+    /// Traces `uniforms.spp` samples per pixel (starting at `uniforms.sample_base`) and adds
+    /// them to the film. The film is resized and cleared when the image size changes.
+    fn render(&mut self, uniforms: &GpuFrameUniforms) -> Result<RenderStats, RenderError>;
+    /// The accumulated image so far (mean radiance per pixel).
+    fn film(&mut self) -> Result<Film, RenderError>;
+    /// Forgets every accumulated sample.
+    fn clear(&mut self);
+}

@@ -1,0 +1,18 @@
+// The scene bindings every tracing pass sees (group 0), in the order of
+// engine/src/render/gpu/bindings.rs. All scene buffers are read-only; the film and the ray
+// counters are written.
+
+@group(0) @binding(0) var<uniform> frame: GpuFrameUniforms;
+@group(0) @binding(1) var<storage, read> nodes: array<GpuBvh8Node>;
+@group(0) @binding(2) var<storage, read> blocks: array<GpuTri4>;
+@group(0) @binding(3) var<storage, read> instances: array<GpuInstance>;
+@group(0) @binding(4) var<storage, read> triangles: array<GpuTriangle>;
+@group(0) @binding(5) var<storage, read> vertices: array<GpuVertex>;
+@group(0) @binding(6) var<storage, read> materials: array<GpuMaterial>;
+@group(0) @binding(7) var<storage, read> textures: array<GpuTexture>;
+@group(0) @binding(8) var<storage, read> texels: array<vec2<u32>>;
+@group(0) @binding(9) var<storage, read> lights: array<GpuLight>;
+// Sum of sample radiance per pixel (rgb), rows top to bottom.
+@group(0) @binding(10) var<storage, read_write> film: array<vec4<f32>>;
+// Rays traced: camera, bounce, shadow; and dropped (non-finite) samples.
+@group(0) @binding(11) var<storage, read_write> counters: array<atomic<u32>, 4>;

@@ -1,0 +1,259 @@
+// The path tracing pass: one invocation per pixel traces `frame.spp` samples and adds their
+// radiance to the film. Twin of engine/src/render/cpu/integrator.rs (same algorithm, same RNG
+// draws in the same order). Composed after shared/{types,bindings,rng,sampling,microfacet,
+// bsdf,texture,traverse,surface}.wgsl by engine/src/render/gpu/shaders.rs.
+
+const FAR: f32 = 3.0e38;
+const NEE_RANDOMS: u32 = 6u;
+
+var<private> count_camera: u32;
+var<private> count_bounce: u32;
+var<private> count_shadow: u32;
+
+fn sky_radiance(d: vec3<f32>) -> vec3<f32> {
+    let zenith = frame.sky_zenith.xyz;
+    if (frame.sky_kind != SKY_GRADIENT) {
+        return zenith;
+    }
+    let horizon = frame.sky_horizon.xyz;
+    let ground = frame.sky_ground.xyz;
+    if (d.y >= 0.0) {
+        return mix(horizon, zenith, sqrt(min(d.y, 1.0)));
+    }
+    return mix(horizon, ground, sqrt(min(-d.y, 1.0)));
+}
+
+fn camera_ray(px: u32, py: u32, rng: ptr<function, Rng>) -> Ray {
+    let jx = rng_next(rng);
+    let jy = rng_next(rng);
+    let sx = 2.0 * (f32(px) + jx) / f32(frame.width) - 1.0;
+    let sy = 1.0 - 2.0 * (f32(py) + jy) / f32(frame.height);
+    let forward = frame.camera_forward;
+    var direction = normalize(forward + frame.camera_right * sx + frame.camera_up * sy);
+    var origin = frame.camera_position;
+    let lx = rng_next(rng);
+    let ly = rng_next(rng);
+    if (frame.lens_radius > 0.0) {
+        let focus = origin + direction * (frame.focus_distance / dot(direction, forward));
+        let disc = concentric_disc(vec2<f32>(lx, ly)) * frame.lens_radius;
+        origin += normalize(frame.camera_right) * disc.x + normalize(frame.camera_up) * disc.y;
+        direction = normalize(focus - origin);
+    }
+    return Ray(origin, 0.0, direction, FAR);
+}
+
+fn unoccluded(x: vec3<f32>, ng: vec3<f32>, direction: vec3<f32>, distance: f32) -> bool {
+    count_shadow += 1u;
+    let side = select(-ng, ng, dot(direction, ng) >= 0.0);
+    let hit = trace_ray(Ray(offset_origin(x, side), 0.0, direction, distance), true);
+    return !hit.found;
+}
+
+struct LightEmission {
+    radiance: vec3<f32>,
+    two_sided: bool,
+}
+
+fn light_emission(instance: u32, triangle: u32, bary: vec2<f32>) -> LightEmission {
+    let inst = instances[instance];
+    let tri = triangles[inst.triangle_base + triangle];
+    var material = tri.material;
+    if (inst.material_override != INVALID) {
+        material = inst.material_override;
+    }
+    let m = materials[material];
+    var emission = m.emission.xyz;
+    if (m.emission_texture != INVALID) {
+        let a = vertices[inst.vertex_base + tri.indices[0]];
+        let b = vertices[inst.vertex_base + tri.indices[1]];
+        let c = vertices[inst.vertex_base + tri.indices[2]];
+        let uv = vec2<f32>(a.u, a.v) * (1.0 - bary.x - bary.y) + vec2<f32>(b.u, b.v) * bary.x + vec2<f32>(c.u, c.v) * bary.y;
+        emission *= sample_texture(m.emission_texture, uv).xyz;
+    }
+    return LightEmission(emission, (m.flags & MATERIAL_FLAG_TWO_SIDED_EMISSION) != 0u);
+}
+
+fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, rng: ptr<function, Rng>) -> vec3<f32> {
+    var xi: array<f32, 6>;
+    for (var i = 0u; i < NEE_RANDOMS; i++) {
+        xi[i] = rng_next(rng);
+    }
+    var sum = vec3<f32>(0.0);
+    if (frame.light_count > 0u && frame.light_weight_total > 0.0) {
+        let n_lights = frame.light_count;
+        let pick = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
+        var light = lights[pick];
+        if (xi[1] >= light.alias_threshold) {
+            light = lights[light.alias];
+        }
+        let bary = uniform_triangle(vec2<f32>(xi[2], xi[3]));
+        let p = light.p0 + (light.p1 - light.p0) * bary.x + (light.p2 - light.p0) * bary.y;
+        let cr = cross(light.p1 - light.p0, light.p2 - light.p0);
+        let area = 0.5 * length(cr);
+        let to_light = p - x;
+        let dist2 = dot(to_light, to_light);
+        if (area > 0.0 && dist2 > 0.0) {
+            let dist = sqrt(dist2);
+            let wi = to_light / dist;
+            let emitter = light_emission(light.instance, light.triangle, bary);
+            var cos_light = -dot(wi, cr / (2.0 * area));
+            if (emitter.two_sided) {
+                cos_light = abs(cos_light);
+            }
+            if (cos_light > 0.0 && any(emitter.radiance != vec3<f32>(0.0))) {
+                let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
+                let light_pdf = light.weight / frame.light_weight_total * dist2 / (cos_light * area);
+                if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, wi, dist * (1.0 - 1e-4))) {
+                    let w = power_heuristic(light_pdf, e.pdf);
+                    sum += e.value * emitter.radiance * (w / light_pdf);
+                }
+            }
+        }
+    }
+    if (frame.sun_solid_angle >= 0.0) {
+        let sun = frame.sun_direction;
+        if (frame.sun_solid_angle == 0.0) {
+            let e = bsdf_eval(bsdf, wo_local, to_local(sun, f));
+            if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, sun, FAR)) {
+                sum += e.value * frame.sun_radiance;
+            }
+        } else {
+            let wi = to_world(uniform_cone(vec2<f32>(xi[4], xi[5]), frame.sun_cos_radius), basis(sun));
+            let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
+            if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, wi, FAR)) {
+                let sun_pdf = 1.0 / frame.sun_solid_angle;
+                sum += e.value * frame.sun_radiance * (power_heuristic(sun_pdf, e.pdf) / sun_pdf);
+            }
+        }
+    }
+    return sum;
+}
+
+fn is_finite3(v: vec3<f32>) -> bool {
+    return all(v == v) && all(abs(v) <= vec3<f32>(3.4e38));
+}
+
+fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
+    var rng = rng_new(vec2<u32>(px, py), sample, frame.seed);
+    var ray = camera_ray(px, py, &rng);
+    count_camera += 1u;
+    var throughput = vec3<f32>(1.0);
+    var result = vec3<f32>(0.0);
+    var last_pdf = 0.0;
+    var last_delta = true;
+    var bounce = 0u;
+    loop {
+        let hit = trace_ray(ray, false);
+        if (!hit.found) {
+            var escaped = sky_radiance(ray.direction);
+            if (frame.sun_solid_angle > 0.0 && dot(ray.direction, frame.sun_direction) >= frame.sun_cos_radius) {
+                var w = 1.0;
+                if (!last_delta) {
+                    w = power_heuristic(last_pdf, 1.0 / frame.sun_solid_angle);
+                }
+                escaped += frame.sun_radiance * w;
+            }
+            result += throughput * escaped;
+            break;
+        }
+        let surface = resolve_surface(hit, ray.direction);
+        let shading = shade_surface(surface);
+        let wo = -ray.direction;
+        let front = dot(wo, surface.geometric_normal) > 0.0;
+        if (!front && any(shading.absorption != vec3<f32>(0.0))) {
+            throughput *= exp(-shading.absorption * hit.t);
+        }
+        if (any(shading.emission != vec3<f32>(0.0)) && (front || shading.two_sided_emission)) {
+            var w = 1.0;
+            if (!last_delta && frame.light_count > 0u) {
+                let cos_light = abs(dot(wo, surface.geometric_normal));
+                let light_pdf = materials[surface.material].emission.w * hit.t * hit.t / max(frame.light_weight_total * cos_light, 1e-30);
+                w = power_heuristic(last_pdf, light_pdf);
+            }
+            result += throughput * shading.emission * w;
+        }
+        if (bounce >= frame.max_bounces) {
+            break;
+        }
+        bounce += 1u;
+
+        var bsdf = shading.bsdf;
+        var ng = surface.geometric_normal;
+        var ns = shading.shading_normal;
+        if (!bsdf_is_two_sided(bsdf) && !front && bsdf.kind != MATERIAL_DIELECTRIC) {
+            bsdf.kind = MATERIAL_DIELECTRIC;
+        }
+        if (bsdf_is_two_sided(bsdf) && !front) {
+            ng = -ng;
+            ns = -ns;
+        }
+        if (dot(wo, ns) * dot(wo, ng) <= 0.0) {
+            ns = ng;
+        }
+        let f = basis(ns);
+        let wo_local = to_local(wo, f);
+
+        if (!bsdf_is_delta(bsdf)) {
+            result += throughput * next_event(bsdf, surface.position, ng, f, wo_local, &rng);
+        } else {
+            for (var i = 0u; i < NEE_RANDOMS; i++) {
+                rng_next(&rng);
+            }
+        }
+
+        let x0 = rng_next(&rng);
+        let x1 = rng_next(&rng);
+        let x2 = rng_next(&rng);
+        let s = bsdf_sample(bsdf, wo_local, vec3<f32>(x0, x1, x2));
+        if (!s.valid) {
+            break;
+        }
+        let wi = to_world(s.wi, f);
+        let below = s.wi.z < 0.0;
+        if ((dot(wi, ng) < 0.0) != below) {
+            break;
+        }
+        throughput *= s.weight;
+        last_pdf = s.pdf;
+        last_delta = s.delta;
+        let side = select(ng, -ng, below);
+        ray = Ray(offset_origin(surface.position, side), 0.0, wi, FAR);
+        count_bounce += 1u;
+
+        let xr = rng_next(&rng);
+        if (bounce >= frame.roulette_start) {
+            let survive = min(max(throughput.x, max(throughput.y, throughput.z)) * frame.roulette_scale, 0.95);
+            if (xr >= survive) {
+                break;
+            }
+            throughput /= survive;
+        }
+        if (!is_finite3(throughput)) {
+            break;
+        }
+    }
+    if (is_finite3(result)) {
+        return result;
+    }
+    atomicAdd(&counters[3], 1u);
+    return vec3<f32>(0.0);
+}
+
+@compute @workgroup_size(8, 8, 1)
+fn trace_main(@builtin(global_invocation_id) id: vec3<u32>) {
+    if (id.x >= frame.width || id.y >= frame.height) {
+        return;
+    }
+    count_camera = 0u;
+    count_bounce = 0u;
+    count_shadow = 0u;
+    var sum = vec3<f32>(0.0);
+    for (var s = 0u; s < frame.spp; s++) {
+        sum += radiance(id.x, id.y, frame.sample_base + s);
+    }
+    let index = id.y * frame.width + id.x;
+    film[index] = film[index] + vec4<f32>(sum, 0.0);
+    atomicAdd(&counters[0], count_camera);
+    atomicAdd(&counters[1], count_bounce);
+    atomicAdd(&counters[2], count_shadow);
+}

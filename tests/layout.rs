@@ -1,0 +1,79 @@
+//! Every GPU struct has the same size and field offsets in Rust (`engine/src/layout.rs`) and in
+//! WGSL (`shaders/shared/types.wgsl`, parsed with naga, which applies WGSL's layout rules).
+
+use std::collections::HashMap;
+use std::mem::{offset_of, size_of};
+
+use candela::layout::*;
+
+/// (struct name, size, [(field, offset)]) of the Rust side.
+type RustLayout = (&'static str, usize, Vec<(&'static str, usize)>);
+
+macro_rules! rust_layout {
+    ($ty:ident { $($field:ident),* $(,)? }) => {
+        (stringify!($ty), size_of::<$ty>(), vec![$((stringify!($field), offset_of!($ty, $field))),*])
+    };
+}
+
+fn rust_layouts() -> Vec<RustLayout> {
+    vec![
+        rust_layout!(GpuBvh8Node { min_x, max_x, min_y, max_y, min_z, max_z, child, perm }),
+        rust_layout!(GpuTri4 { v0_x, v0_y, v0_z, e1_x, e1_y, e1_z, e2_x, e2_y, e2_z, prim }),
+        rust_layout!(GpuInstance {
+            world_from_object, object_from_world, node_base, block_base, triangle_base,
+            vertex_base, material_override, flags, _padding
+        }),
+        rust_layout!(GpuTriangle { indices, material }),
+        rust_layout!(GpuVertex { position, u, normal, v, tangent }),
+        rust_layout!(GpuMaterial {
+            base_color, emission, absorption, kind, roughness, metallic, ior, transmission,
+            normal_scale, flags, base_color_texture, normal_texture, emission_texture,
+            metal_rough_texture, _padding
+        }),
+        rust_layout!(GpuTexture { texel_offset, width, height, flags }),
+        rust_layout!(GpuLight { p0, instance, p1, triangle, p2, weight, alias_threshold, alias, _padding }),
+        rust_layout!(GpuFrameUniforms {
+            camera_position, lens_radius, camera_right, focus_distance, camera_up, _padding0,
+            camera_forward, _padding1, sun_direction, sun_cos_radius, sun_radiance,
+            sun_solid_angle, sky_zenith, sky_horizon, sky_ground, width, height, spp,
+            sample_base, seed, max_bounces, roulette_start, light_count, light_weight_total,
+            roulette_scale, sky_kind, tlas_root
+        }),
+    ]
+}
+
+#[test]
+fn rust_and_wgsl_layouts_agree() {
+    let path = candela_tests::repo().join("shaders/shared/types.wgsl");
+    let source = std::fs::read_to_string(&path).expect("shaders/shared/types.wgsl is readable");
+    let module = naga::front::wgsl::parse_str(&source)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+    let mut wgsl: HashMap<String, (u32, Vec<(String, u32)>)> = HashMap::new();
+    for (_, ty) in module.types.iter() {
+        if let (Some(name), naga::TypeInner::Struct { members, span }) = (&ty.name, &ty.inner) {
+            let fields = members
+                .iter()
+                .map(|m| (m.name.clone().unwrap_or_default(), m.offset))
+                .collect();
+            wgsl.insert(name.clone(), (*span, fields));
+        }
+    }
+    let rust = rust_layouts();
+    assert_eq!(
+        rust.len(),
+        wgsl.len(),
+        "every Gpu struct needs a twin on the other side (WGSL has {:?})",
+        wgsl.keys().collect::<Vec<_>>()
+    );
+    for (name, size, fields) in rust {
+        let (wgsl_size, wgsl_fields) = wgsl
+            .get(name)
+            .unwrap_or_else(|| panic!("{name} has no WGSL twin in types.wgsl"));
+        assert_eq!(size as u32, *wgsl_size, "{name}: size differs (Rust, WGSL)");
+        let rust_fields: Vec<(String, u32)> = fields
+            .iter()
+            .map(|(f, o)| (f.to_string(), *o as u32))
+            .collect();
+        assert_eq!(&rust_fields, wgsl_fields, "{name}: field names/offsets differ (Rust vs WGSL)");
+    }
+}
