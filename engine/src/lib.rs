@@ -11,3 +11,6 @@
 pub mod layout;
 
 pub mod assets;
+
+pub mod accel;
+pub mod trace;

@@ -1,0 +1,159 @@
+//! Rays, hits, and the per-ray values every traversal derives from a ray.
+//!
+//! Owns: [`Ray`], [`Hit`], the safe reciprocal and octant rules, and the object-space transform
+//! of a ray for an instance. Pure value code, any thread. Must not: walk trees.
+
+use glam::Vec3;
+
+use crate::layout::{GpuInstance, INSTANCE_FLAG_IDENTITY};
+
+/// A ray `origin + t · direction` for `t_min < t < t_max`. `direction` need not be unit length;
+/// `t` is measured in units of `direction`. All components must be finite (NaN or infinite
+/// values give unspecified results, never a panic). `t_min >= 0` is expected.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Ray {
+    pub origin: Vec3,
+    pub t_min: f32,
+    pub direction: Vec3,
+    pub t_max: f32,
+}
+
+impl Ray {
+    /// A ray over `0 < t < +inf`.
+    pub fn new(origin: Vec3, direction: Vec3) -> Self {
+        Self {
+            origin,
+            t_min: 0.0,
+            direction,
+            t_max: f32::INFINITY,
+        }
+    }
+
+    /// A ray over `t_min < t < t_max`.
+    pub fn with_range(origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Self {
+        Self {
+            origin,
+            t_min,
+            direction,
+            t_max,
+        }
+    }
+}
+
+/// The closest intersection of a ray. The hit point is `v0 + u·e1 + v·e2` of the triangle
+/// (barycentric weights `(1-u-v, u, v)` of its vertices 0, 1, 2), `t` the ray parameter.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    pub t: f32,
+    pub u: f32,
+    pub v: f32,
+    /// Index into `TraceScene::instances` (`INVALID` for the single-BLAS entry points).
+    pub instance: u32,
+    /// Mesh-local triangle index (`GpuTri4::prim`).
+    pub triangle: u32,
+}
+
+/// Direction components smaller than this in magnitude count as zero for the slab test.
+pub const RCP_MIN_ABS: f32 = 1e-30;
+
+/// What every slab test needs from a ray, computed once per ray (and per instance).
+///
+/// Per axis, `t = (plane - origin) · rcp`, near planes with `near_origin`, far planes with
+/// `far_origin`. For ordinary components both origins are the ray origin and `rcp = 1 / d`.
+/// A zero component (`|d| < RCP_MIN_ABS`, either sign) would give `0 · inf = NaN` for a ray
+/// lying in a box face, so instead `rcp = ±1/RCP_MIN_ABS` (sign of `d`, `-0.0` negative) and the
+/// two origins are nudged by `δ = |o|·2⁻²⁰ + 1e-20` in opposite directions, so that a box face
+/// exactly at the origin's coordinate counts as inside (distances `≥ δ·1e30 ≥ 1e10` instead of
+/// 0). The slab is then `(-big, +big)` when `min <= o <= max` (a box within δ of the ray
+/// counts as touched, which only costs a visit) and empty otherwise. No NaN, no special case
+/// in the loop.
+#[derive(Clone, Copy, Debug)]
+pub struct SlabRay {
+    pub rcp: Vec3,
+    pub near_origin: Vec3,
+    pub far_origin: Vec3,
+    /// Bit 0/1/2 set when the x/y/z direction has its sign bit set (`-0.0` included).
+    pub octant: u32,
+}
+
+impl SlabRay {
+    #[inline(always)]
+    pub fn new(origin: Vec3, direction: Vec3) -> Self {
+        let mut s = Self {
+            rcp: Vec3::ZERO,
+            near_origin: origin,
+            far_origin: origin,
+            octant: octant(direction),
+        };
+        for axis in 0..3 {
+            let (o, d) = (origin[axis], direction[axis]);
+            if d.abs() < RCP_MIN_ABS {
+                let sign = 1.0f32.copysign(d);
+                let delta = o.abs() * (1.0 / 1_048_576.0) + 1e-20;
+                s.rcp[axis] = sign * (1.0 / RCP_MIN_ABS);
+                s.near_origin[axis] = o + sign * delta;
+                s.far_origin[axis] = o - sign * delta;
+            } else {
+                s.rcp[axis] = 1.0 / d;
+            }
+        }
+        s
+    }
+}
+
+/// Octant of a direction: bit 0/1/2 set when x/y/z has its sign bit set (so `-0.0` counts as
+/// negative, matching the sign of [`SlabRay::rcp`]).
+#[inline(always)]
+pub fn octant(d: Vec3) -> u32 {
+    u32::from(d.x.is_sign_negative())
+        | u32::from(d.y.is_sign_negative()) << 1
+        | u32::from(d.z.is_sign_negative()) << 2
+}
+
+/// Slab intervals are widened by this factor on the far side (`t_far · ROBUST_FAR`), so rounding
+/// in `(plane - origin) · rcp` never rejects a box that the exact ray touches (Ize 2013, "Robust
+/// BVH Ray Traversal": 1 + 2γ₃ with γₙ = n·2⁻²⁴/(1 - n·2⁻²⁴); this is a little larger).
+pub const ROBUST_FAR: f32 = 1.0 + 4.0 * f32::EPSILON;
+
+/// The ray in an instance's object space: `object_from_world` applied to the origin (as a point)
+/// and to the direction (as a vector, not renormalised, so `t` stays the world `t`). Identity
+/// instances return the ray unchanged. Every tracer calls this function, so all agree bit for bit.
+#[inline(always)]
+pub fn to_object_space(instance: &GpuInstance, ray: &Ray) -> Ray {
+    if instance.flags & INSTANCE_FLAG_IDENTITY != 0 {
+        return *ray;
+    }
+    let m = &instance.object_from_world;
+    let (o, d) = (ray.origin, ray.direction);
+    let point = |r: &[f32; 4]| r[0] * o.x + r[1] * o.y + r[2] * o.z + r[3];
+    let vector = |r: &[f32; 4]| r[0] * d.x + r[1] * d.y + r[2] * d.z;
+    Ray {
+        origin: Vec3::new(point(&m[0]), point(&m[1]), point(&m[2])),
+        t_min: ray.t_min,
+        direction: Vec3::new(vector(&m[0]), vector(&m[1]), vector(&m[2])),
+        t_max: ray.t_max,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slab_ray_zero_components_are_finite_and_signed() {
+        let s = SlabRay::new(Vec3::new(2.0, 0.0, -3.0), Vec3::new(0.0, -0.0, 4.0));
+        assert_eq!(s.octant, 0b010);
+        assert!(s.rcp.x > 1e29 && s.rcp.y < -1e29 && s.rcp.z == 0.25);
+        assert!(s.near_origin.x > 2.0 && s.far_origin.x < 2.0);
+        assert!(s.near_origin.y < 0.0 && s.far_origin.y > 0.0);
+        assert_eq!((s.near_origin.z, s.far_origin.z), (-3.0, -3.0));
+        // A box face exactly at the origin's x: inside, with finite distances, never NaN.
+        for plane in [f32::INFINITY, f32::NEG_INFINITY, 2.0, 5.0] {
+            let near = (plane - s.near_origin.x) * s.rcp.x;
+            let far = (plane - s.far_origin.x) * s.rcp.x;
+            assert!(!near.is_nan() && !far.is_nan());
+        }
+        assert!((2.0 - s.far_origin.x) * s.rcp.x >= 1e10);
+        assert!((2.0 - s.near_origin.x) * s.rcp.x <= -1e10);
+    }
+}

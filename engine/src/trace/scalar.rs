@@ -1,0 +1,128 @@
+//! Reference traversal: one ray at a time, one child at a time. Always compiled, the fallback on
+//! CPUs without AVX2, and the algorithm the WGSL traversal follows step for step.
+//!
+//! Input: nodes and blocks in the shared layout (see [`crate::layout::GpuBvh8Node`]), a ray.
+//! Output: closest hit or any hit. Any thread; reads only. Must not: allocate.
+//!
+//! Algorithm per 8-wide node, for a ray of octant `o` (sign bits of the direction):
+//! 1. for each slot, slab distances `(plane - origin) · rcp` ([`SlabRay`]: safe reciprocal,
+//!    no NaN) with the near plane read from `min` where the direction component is positive
+//!    and from `max` where it is negative (empty slots, `min = +inf, max = -inf`, then never
+//!    pass);
+//! 2. `t_near = max(near_x, near_y, near_z, t_min)`, `t_far = min(far_x, far_y, far_z, t_max)`,
+//!    hit when `t_near <= t_far · ROBUST_FAR`;
+//! 3. visit slots in the order `perm[rank] >> 3o & 7` for rank 7 down to 0 and push the hit
+//!    children with their `t_near`, so the front-most child is on top of the stack;
+//! 4. pop; skip entries whose `t_near` lies beyond the current closest hit; a leaf entry
+//!    (`LEAF_BIT`) is a triangle block (BLAS) or an instance (TLAS).
+
+use super::STACK_SIZE;
+use super::ray::{ROBUST_FAR, Ray, SlabRay};
+use super::triangle::intersect_lane;
+use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
+
+/// Closest hit inside one BLAS, in that BLAS's space: `(t, u, v, triangle)`.
+pub(crate) type BlasHit = (f32, f32, f32, u32);
+
+/// Walks one tree. `leaf(payload, t_max)` handles a leaf entry, may lower `t_max` (closest hit)
+/// and returns true to stop the walk (any hit). Returns true when a leaf asked to stop.
+#[inline(always)]
+pub(crate) fn walk(
+    nodes: &[GpuBvh8Node],
+    ray: &Ray,
+    t_max: &mut f32,
+    mut leaf: impl FnMut(u32, &mut f32) -> bool,
+) -> bool {
+    let SlabRay {
+        rcp,
+        near_origin: on,
+        far_origin: of,
+        octant,
+    } = SlabRay::new(ray.origin, ray.direction);
+    let shift = 3 * octant;
+    let negative = [octant & 1 != 0, octant & 2 != 0, octant & 4 != 0];
+    let mut stack_entry = [0u32; STACK_SIZE];
+    let mut stack_t = [0f32; STACK_SIZE];
+    let mut sp = 0usize;
+    let mut entry = 0u32; // the root: always an inner node
+    loop {
+        if entry & LEAF_BIT != 0 {
+            if leaf(entry & !LEAF_BIT, t_max) {
+                return true;
+            }
+        } else if let Some(node) = nodes.get(entry as usize) {
+            for rank in (0..8).rev() {
+                let slot = ((node.perm[rank] >> shift) & 7) as usize;
+                let (near_x, far_x) = pick(node.min_x[slot], node.max_x[slot], negative[0]);
+                let (near_y, far_y) = pick(node.min_y[slot], node.max_y[slot], negative[1]);
+                let (near_z, far_z) = pick(node.min_z[slot], node.max_z[slot], negative[2]);
+                let t_near = ((near_x - on.x) * rcp.x)
+                    .max((near_y - on.y) * rcp.y)
+                    .max((near_z - on.z) * rcp.z)
+                    .max(ray.t_min);
+                let t_far = ((far_x - of.x) * rcp.x)
+                    .min((far_y - of.y) * rcp.y)
+                    .min((far_z - of.z) * rcp.z)
+                    .min(*t_max);
+                let child = node.child[slot];
+                if t_near <= t_far * ROBUST_FAR && child != INVALID && sp < STACK_SIZE {
+                    stack_entry[sp] = child;
+                    stack_t[sp] = t_near;
+                    sp += 1;
+                }
+            }
+        }
+        loop {
+            if sp == 0 {
+                return false;
+            }
+            sp -= 1;
+            if stack_t[sp] <= *t_max * ROBUST_FAR {
+                entry = stack_entry[sp];
+                break;
+            }
+        }
+    }
+}
+
+/// `(near, far)` plane of one axis for the ray's direction sign on that axis.
+#[inline(always)]
+fn pick(min: f32, max: f32, negative: bool) -> (f32, f32) {
+    if negative { (max, min) } else { (min, max) }
+}
+
+/// Closest hit in one BLAS (`nodes`/`blocks` start at the BLAS's first node and block).
+pub(crate) fn closest_blas(
+    nodes: &[GpuBvh8Node],
+    blocks: &[GpuTri4],
+    ray: &Ray,
+    t_max: &mut f32,
+) -> Option<BlasHit> {
+    let mut best = None;
+    walk(nodes, ray, t_max, |payload, t_max| {
+        if let Some(block) = blocks.get(payload as usize) {
+            for lane in 0..4 {
+                if let Some((t, u, v)) =
+                    intersect_lane(block, lane, ray.origin, ray.direction, ray.t_min, *t_max)
+                {
+                    *t_max = t;
+                    best = Some((t, u, v, block.prim[lane]));
+                }
+            }
+        }
+        false
+    });
+    best
+}
+
+/// Any hit in one BLAS.
+pub(crate) fn occluded_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
+    let mut t_max = ray.t_max;
+    walk(nodes, ray, &mut t_max, |payload, t_max| {
+        blocks.get(payload as usize).is_some_and(|block| {
+            (0..4).any(|lane| {
+                intersect_lane(block, lane, ray.origin, ray.direction, ray.t_min, *t_max).is_some()
+            })
+        })
+    })
+}

@@ -1,0 +1,193 @@
+//! The public entry points: two-level (TLAS → instance → BLAS) queries over the flattened scene,
+//! single-BLAS queries, and the choice of kernel.
+//!
+//! Input: [`TraceScene`] (borrowed node, block and instance buffers) and a world-space [`Ray`].
+//! Output: [`Hit`] or a boolean. Any thread, many at once (read only). Must not: allocate or
+//! write anything; the scene is the previous frame's commit, shared with the render thread.
+
+use super::Kernel;
+use super::ray::{Hit, Ray, to_object_space};
+use super::scalar;
+use crate::layout::{GpuBvh8Node, GpuInstance, GpuTri4, INVALID};
+
+/// The flattened scene as both tracers read it. The TLAS lives in `nodes` from `tlas_root` on
+/// (its inner child indices are relative to `tlas_root`, its leaf payloads index `instances`);
+/// each instance's BLAS starts at its `node_base` / `block_base`.
+#[derive(Clone, Copy, Debug)]
+pub struct TraceScene<'a> {
+    pub nodes: &'a [GpuBvh8Node],
+    pub blocks: &'a [GpuTri4],
+    pub instances: &'a [GpuInstance],
+    pub tlas_root: u32,
+}
+
+/// One tree walk and block tests, implemented by each kernel (scalar, AVX2, AVX-512).
+pub(crate) trait Walker: Copy {
+    /// Closest hit in one BLAS: `(t, u, v, triangle)`; lowers `t_max` on a hit.
+    fn closest_blas(
+        self,
+        nodes: &[GpuBvh8Node],
+        blocks: &[GpuTri4],
+        ray: &Ray,
+        t_max: &mut f32,
+    ) -> Option<scalar::BlasHit>;
+    /// Any hit in one BLAS.
+    fn occluded_blas(self, nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool;
+    /// Walks a TLAS; `leaf(instance, t_max)` returns true to stop.
+    fn walk_tlas(
+        self,
+        nodes: &[GpuBvh8Node],
+        ray: &Ray,
+        t_max: &mut f32,
+        leaf: impl FnMut(u32, &mut f32) -> bool,
+    ) -> bool;
+}
+
+/// The reference kernel.
+#[derive(Clone, Copy)]
+pub(crate) struct ScalarWalker;
+
+impl Walker for ScalarWalker {
+    #[inline(always)]
+    fn closest_blas(
+        self,
+        nodes: &[GpuBvh8Node],
+        blocks: &[GpuTri4],
+        ray: &Ray,
+        t_max: &mut f32,
+    ) -> Option<scalar::BlasHit> {
+        scalar::closest_blas(nodes, blocks, ray, t_max)
+    }
+    #[inline(always)]
+    fn occluded_blas(self, nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
+        scalar::occluded_blas(nodes, blocks, ray)
+    }
+    #[inline(always)]
+    fn walk_tlas(
+        self,
+        nodes: &[GpuBvh8Node],
+        ray: &Ray,
+        t_max: &mut f32,
+        leaf: impl FnMut(u32, &mut f32) -> bool,
+    ) -> bool {
+        scalar::walk(nodes, ray, t_max, leaf)
+    }
+}
+
+/// The instance's BLAS buffers and object-space ray, or `None` when its bases are out of range.
+#[inline(always)]
+fn instance_view<'a>(
+    scene: &TraceScene<'a>,
+    index: u32,
+    ray: &Ray,
+) -> Option<(&'a [GpuBvh8Node], &'a [GpuTri4], Ray)> {
+    let instance = scene.instances.get(index as usize)?;
+    let nodes = scene.nodes.get(instance.node_base as usize..)?;
+    let blocks = scene.blocks.get(instance.block_base as usize..)?;
+    Some((nodes, blocks, to_object_space(instance, ray)))
+}
+
+/// Two-level closest hit with any kernel.
+#[inline(always)]
+pub(crate) fn closest_scene<W: Walker>(w: W, scene: &TraceScene, ray: &Ray) -> Option<Hit> {
+    let tlas = scene.nodes.get(scene.tlas_root as usize..)?;
+    let mut t_max = ray.t_max;
+    let mut best = None;
+    w.walk_tlas(tlas, ray, &mut t_max, |index, t_max| {
+        if let Some((nodes, blocks, local)) = instance_view(scene, index, ray)
+            && let Some((t, u, v, triangle)) = w.closest_blas(nodes, blocks, &local, t_max)
+        {
+            best = Some(Hit {
+                t,
+                u,
+                v,
+                instance: index,
+                triangle,
+            });
+        }
+        false
+    });
+    best
+}
+
+/// Two-level any hit with any kernel.
+#[inline(always)]
+pub(crate) fn occluded_scene<W: Walker>(w: W, scene: &TraceScene, ray: &Ray) -> bool {
+    let Some(tlas) = scene.nodes.get(scene.tlas_root as usize..) else {
+        return false;
+    };
+    let mut t_max = ray.t_max;
+    w.walk_tlas(tlas, ray, &mut t_max, |index, _| {
+        instance_view(scene, index, ray)
+            .is_some_and(|(nodes, blocks, local)| w.occluded_blas(nodes, blocks, &local))
+    })
+}
+
+impl TraceScene<'_> {
+    /// Closest hit along the ray (`t_min < t < t_max`), with the fastest kernel of this CPU.
+    pub fn closest(&self, ray: &Ray) -> Option<Hit> {
+        self.closest_with(Kernel::best(), ray)
+    }
+
+    /// Whether anything is hit along the ray (`t_min < t < t_max`); stops at the first hit.
+    pub fn occluded(&self, ray: &Ray) -> bool {
+        self.occluded_with(Kernel::best(), ray)
+    }
+
+    /// [`Self::closest`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
+    pub fn closest_with(&self, kernel: Kernel, ray: &Ray) -> Option<Hit> {
+        match kernel.checked() {
+            Kernel::Scalar => closest_scene(ScalarWalker, self, ray),
+        }
+    }
+
+    /// [`Self::occluded`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
+    pub fn occluded_with(&self, kernel: Kernel, ray: &Ray) -> bool {
+        match kernel.checked() {
+            Kernel::Scalar => occluded_scene(ScalarWalker, self, ray),
+        }
+    }
+}
+
+/// Closest hit in a single BLAS (`nodes`, `blocks` as [`crate::accel::Blas`] holds them), in its
+/// own space; `Hit::instance` is `INVALID`. Fastest kernel of this CPU.
+pub fn closest_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> Option<Hit> {
+    closest_blas_with(Kernel::best(), nodes, blocks, ray)
+}
+
+/// Whether a single BLAS is hit along the ray. Fastest kernel of this CPU.
+pub fn occluded_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
+    occluded_blas_with(Kernel::best(), nodes, blocks, ray)
+}
+
+/// [`closest_blas`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
+pub fn closest_blas_with(
+    kernel: Kernel,
+    nodes: &[GpuBvh8Node],
+    blocks: &[GpuTri4],
+    ray: &Ray,
+) -> Option<Hit> {
+    let mut t_max = ray.t_max;
+    let hit = match kernel.checked() {
+        Kernel::Scalar => scalar::closest_blas(nodes, blocks, ray, &mut t_max),
+    };
+    hit.map(|(t, u, v, triangle)| Hit {
+        t,
+        u,
+        v,
+        instance: INVALID,
+        triangle,
+    })
+}
+
+/// [`occluded_blas`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
+pub fn occluded_blas_with(
+    kernel: Kernel,
+    nodes: &[GpuBvh8Node],
+    blocks: &[GpuTri4],
+    ray: &Ray,
+) -> bool {
+    match kernel.checked() {
+        Kernel::Scalar => scalar::occluded_blas(nodes, blocks, ray),
+    }
+}
