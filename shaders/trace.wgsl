@@ -42,11 +42,16 @@ fn camera_ray(px: u32, py: u32, rng: ptr<function, Rng>) -> Ray {
     return Ray(origin, 0.0, direction, FAR);
 }
 
-fn unoccluded(x: vec3<f32>, ng: vec3<f32>, direction: vec3<f32>, distance: f32) -> bool {
-    count_shadow += 1u;
+// Shadow rays a surface wants traced, with what each adds to the result when unoccluded.
+struct ShadowRays {
+    count: u32,
+    rays: array<Ray, 2>,
+    contribution: array<vec3<f32>, 2>,
+}
+
+fn shadow_ray(x: vec3<f32>, ng: vec3<f32>, direction: vec3<f32>, distance: f32) -> Ray {
     let side = select(-ng, ng, dot(direction, ng) >= 0.0);
-    let hit = trace_ray(Ray(offset_origin(x, side), 0.0, direction, distance), true);
-    return !hit.found;
+    return Ray(offset_origin(x, side), 0.0, direction, distance);
 }
 
 struct LightEmission {
@@ -73,18 +78,22 @@ fn light_emission(instance: u32, triangle: u32, bary: vec2<f32>) -> LightEmissio
     return LightEmission(emission, (m.flags & MATERIAL_FLAG_TWO_SIDED_EMISSION) != 0u);
 }
 
-fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, rng: ptr<function, Rng>) -> vec3<f32> {
+// Direct light at a non-delta surface: one emissive triangle picked by power and the sun, each
+// weighted against BSDF sampling. Returns the shadow rays to trace; `throughput` is folded into
+// their contributions.
+fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, throughput: vec3<f32>, rng: ptr<function, Rng>) -> ShadowRays {
     var xi: array<f32, 6>;
     for (var i = 0u; i < NEE_RANDOMS; i++) {
         xi[i] = rng_next(rng);
     }
-    var sum = vec3<f32>(0.0);
+    var out: ShadowRays;
+    out.count = 0u;
     if (frame.light_count > 0u && frame.light_weight_total > 0.0) {
         let n_lights = frame.light_count;
         let pick = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
         var light = lights[pick];
         if (xi[1] >= light.alias_threshold) {
-            light = lights[light.alias];
+            light = lights[light.alias_index];
         }
         let bary = uniform_triangle(vec2<f32>(xi[2], xi[3]));
         let p = light.p0 + (light.p1 - light.p0) * bary.x + (light.p2 - light.p0) * bary.y;
@@ -103,36 +112,44 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             if (cos_light > 0.0 && any(emitter.radiance != vec3<f32>(0.0))) {
                 let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
                 let light_pdf = light.weight / frame.light_weight_total * dist2 / (cos_light * area);
-                if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, wi, dist * (1.0 - 1e-4))) {
+                if (any(e.value != vec3<f32>(0.0))) {
                     let w = power_heuristic(light_pdf, e.pdf);
-                    sum += e.value * emitter.radiance * (w / light_pdf);
+                    out.rays[out.count] = shadow_ray(x, ng, wi, dist * (1.0 - 1e-4));
+                    out.contribution[out.count] = throughput * e.value * emitter.radiance * (w / light_pdf);
+                    out.count += 1u;
                 }
             }
         }
     }
     if (frame.sun_solid_angle >= 0.0) {
         let sun = frame.sun_direction;
-        if (frame.sun_solid_angle == 0.0) {
-            let e = bsdf_eval(bsdf, wo_local, to_local(sun, f));
-            if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, sun, FAR)) {
-                sum += e.value * frame.sun_radiance;
-            }
-        } else {
-            let wi = to_world(uniform_cone(vec2<f32>(xi[4], xi[5]), frame.sun_cos_radius), basis(sun));
-            let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
-            if (any(e.value != vec3<f32>(0.0)) && unoccluded(x, ng, wi, FAR)) {
-                let sun_pdf = 1.0 / frame.sun_solid_angle;
-                sum += e.value * frame.sun_radiance * (power_heuristic(sun_pdf, e.pdf) / sun_pdf);
-            }
+        var wi = sun;
+        var scale = 1.0;
+        if (frame.sun_solid_angle > 0.0) {
+            wi = to_world(uniform_cone(vec2<f32>(xi[4], xi[5]), frame.sun_cos_radius), basis(sun));
+        }
+        let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
+        if (frame.sun_solid_angle > 0.0) {
+            let sun_pdf = 1.0 / frame.sun_solid_angle;
+            scale = power_heuristic(sun_pdf, e.pdf) / sun_pdf;
+        }
+        if (any(e.value != vec3<f32>(0.0))) {
+            out.rays[out.count] = shadow_ray(x, ng, wi, FAR);
+            out.contribution[out.count] = throughput * e.value * frame.sun_radiance * scale;
+            out.count += 1u;
         }
     }
-    return sum;
+    return out;
 }
 
 fn is_finite3(v: vec3<f32>) -> bool {
     return all(v == v) && all(abs(v) <= vec3<f32>(3.4e38));
 }
 
+// One sample's radiance estimate. A small state machine around a single `trace_ray` call
+// site: each iteration traces either the path's next extension ray or one of the shadow rays
+// its last surface asked for (lavapipe inlines every call, so one call site keeps the compiled
+// shader small). The random numbers are drawn in the same order as the CPU twin.
 fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var rng = rng_new(vec2<u32>(px, py), sample, frame.seed);
     var ray = camera_ray(px, py, &rng);
@@ -142,8 +159,34 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var last_pdf = 0.0;
     var last_delta = true;
     var bounce = 0u;
+    var shadows: ShadowRays;
+    shadows.count = 0u;
+    var shadow_index = 0u;
+    var tracing_shadow = false;
+    var have_next = true;
+    var next_ray = ray;
     loop {
-        let hit = trace_ray(ray, false);
+        var current = next_ray;
+        if (tracing_shadow) {
+            current = shadows.rays[shadow_index];
+        }
+        let hit = trace_ray(current, tracing_shadow);
+        if (tracing_shadow) {
+            count_shadow += 1u;
+            if (!hit.found) {
+                result += shadows.contribution[shadow_index];
+            }
+            shadow_index += 1u;
+            if (shadow_index < shadows.count) {
+                continue;
+            }
+            tracing_shadow = false;
+            if (!have_next) {
+                break;
+            }
+            continue;
+        }
+        ray = current;
         if (!hit.found) {
             var escaped = sky_radiance(ray.direction);
             if (frame.sun_solid_angle > 0.0 && dot(ray.direction, frame.sun_direction) >= frame.sun_cos_radius) {
@@ -193,42 +236,48 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         let f = basis(ns);
         let wo_local = to_local(wo, f);
 
+        shadows.count = 0u;
+        shadow_index = 0u;
         if (!bsdf_is_delta(bsdf)) {
-            result += throughput * next_event(bsdf, surface.position, ng, f, wo_local, &rng);
+            shadows = next_event(bsdf, surface.position, ng, f, wo_local, throughput, &rng);
         } else {
             for (var i = 0u; i < NEE_RANDOMS; i++) {
                 rng_next(&rng);
             }
         }
+        tracing_shadow = shadows.count > 0u;
 
         let x0 = rng_next(&rng);
         let x1 = rng_next(&rng);
         let x2 = rng_next(&rng);
         let s = bsdf_sample(bsdf, wo_local, vec3<f32>(x0, x1, x2));
-        if (!s.valid) {
-            break;
-        }
-        let wi = to_world(s.wi, f);
-        let below = s.wi.z < 0.0;
-        if ((dot(wi, ng) < 0.0) != below) {
-            break;
-        }
-        throughput *= s.weight;
-        last_pdf = s.pdf;
-        last_delta = s.delta;
-        let side = select(ng, -ng, below);
-        ray = Ray(offset_origin(surface.position, side), 0.0, wi, FAR);
-        count_bounce += 1u;
-
-        let xr = rng_next(&rng);
-        if (bounce >= frame.roulette_start) {
-            let survive = min(max(throughput.x, max(throughput.y, throughput.z)) * frame.roulette_scale, 0.95);
-            if (xr >= survive) {
-                break;
+        have_next = s.valid;
+        if (have_next) {
+            let wi = to_world(s.wi, f);
+            let below = s.wi.z < 0.0;
+            throughput *= s.weight;
+            if ((dot(wi, ng) < 0.0) != below || all(throughput == vec3<f32>(0.0))) {
+                have_next = false;
+            } else {
+                last_pdf = s.pdf;
+                last_delta = s.delta;
+                next_ray = Ray(offset_origin(surface.position, select(ng, -ng, below)), 0.0, wi, FAR);
+                count_bounce += 1u;
+                let xr = rng_next(&rng);
+                if (bounce >= frame.roulette_start) {
+                    let survive = min(max(throughput.x, max(throughput.y, throughput.z)) * frame.roulette_scale, 0.95);
+                    if (xr >= survive) {
+                        have_next = false;
+                    } else {
+                        throughput /= survive;
+                    }
+                }
+                if (!is_finite3(throughput)) {
+                    have_next = false;
+                }
             }
-            throughput /= survive;
         }
-        if (!is_finite3(throughput)) {
+        if (!tracing_shadow && !have_next) {
             break;
         }
     }

@@ -17,27 +17,109 @@ macro_rules! rust_layout {
 
 fn rust_layouts() -> Vec<RustLayout> {
     vec![
-        rust_layout!(GpuBvh8Node { min_x, max_x, min_y, max_y, min_z, max_z, child, perm }),
-        rust_layout!(GpuTri4 { v0_x, v0_y, v0_z, e1_x, e1_y, e1_z, e2_x, e2_y, e2_z, prim }),
+        rust_layout!(GpuBvh8Node {
+            min_x,
+            max_x,
+            min_y,
+            max_y,
+            min_z,
+            max_z,
+            child,
+            perm
+        }),
+        rust_layout!(GpuTri4 {
+            v0_x,
+            v0_y,
+            v0_z,
+            e1_x,
+            e1_y,
+            e1_z,
+            e2_x,
+            e2_y,
+            e2_z,
+            prim
+        }),
         rust_layout!(GpuInstance {
-            world_from_object, object_from_world, node_base, block_base, triangle_base,
-            vertex_base, material_override, flags, _padding
+            world_from_object,
+            object_from_world,
+            node_base,
+            block_base,
+            triangle_base,
+            vertex_base,
+            material_override,
+            flags,
+            _padding
         }),
         rust_layout!(GpuTriangle { indices, material }),
-        rust_layout!(GpuVertex { position, u, normal, v, tangent }),
-        rust_layout!(GpuMaterial {
-            base_color, emission, absorption, kind, roughness, metallic, ior, transmission,
-            normal_scale, flags, base_color_texture, normal_texture, emission_texture,
-            metal_rough_texture, _padding
+        rust_layout!(GpuVertex {
+            position,
+            u,
+            normal,
+            v,
+            tangent
         }),
-        rust_layout!(GpuTexture { texel_offset, width, height, flags }),
-        rust_layout!(GpuLight { p0, instance, p1, triangle, p2, weight, alias_threshold, alias, _padding }),
+        rust_layout!(GpuMaterial {
+            base_color,
+            emission,
+            absorption,
+            kind,
+            roughness,
+            metallic,
+            ior,
+            transmission,
+            normal_scale,
+            flags,
+            base_color_texture,
+            normal_texture,
+            emission_texture,
+            metal_rough_texture,
+            _padding
+        }),
+        rust_layout!(GpuTexture {
+            texel_offset,
+            width,
+            height,
+            flags
+        }),
+        rust_layout!(GpuLight {
+            p0,
+            instance,
+            p1,
+            triangle,
+            p2,
+            weight,
+            alias_threshold,
+            alias_index,
+            _padding
+        }),
         rust_layout!(GpuFrameUniforms {
-            camera_position, lens_radius, camera_right, focus_distance, camera_up, _padding0,
-            camera_forward, _padding1, sun_direction, sun_cos_radius, sun_radiance,
-            sun_solid_angle, sky_zenith, sky_horizon, sky_ground, width, height, spp,
-            sample_base, seed, max_bounces, roulette_start, light_count, light_weight_total,
-            roulette_scale, sky_kind, tlas_root
+            camera_position,
+            lens_radius,
+            camera_right,
+            focus_distance,
+            camera_up,
+            _padding0,
+            camera_forward,
+            _padding1,
+            sun_direction,
+            sun_cos_radius,
+            sun_radiance,
+            sun_solid_angle,
+            sky_zenith,
+            sky_horizon,
+            sky_ground,
+            width,
+            height,
+            spp,
+            sample_base,
+            seed,
+            max_bounces,
+            roulette_start,
+            light_count,
+            light_weight_total,
+            roulette_scale,
+            sky_kind,
+            tlas_root
         }),
     ]
 }
@@ -74,6 +156,9 @@ fn rust_and_wgsl_layouts_agree() {
             .iter()
             .map(|(f, o)| (f.to_string(), *o as u32))
             .collect();
-        assert_eq!(&rust_fields, wgsl_fields, "{name}: field names/offsets differ (Rust vs WGSL)");
+        assert_eq!(
+            &rust_fields, wgsl_fields,
+            "{name}: field names/offsets differ (Rust vs WGSL)"
+        );
     }
 }

@@ -231,7 +231,7 @@ const _: () = assert!(size_of::<GpuTexture>() == 16);
 
 /// One emissive triangle in world space, and its entry of the alias table that picks lights in
 /// proportion to `weight` (area × material emission weight). Pick `i` uniformly, keep it if a
-/// second uniform number is below `alias_threshold`, else take `alias`.
+/// second uniform number is below `alias_threshold`, else take `alias_index`.
 /// 64 bytes.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
@@ -244,7 +244,7 @@ pub struct GpuLight {
     pub p2: [f32; 3],
     pub weight: f32,
     pub alias_threshold: f32,
-    pub alias: u32,
+    pub alias_index: u32,
     pub _padding: [u32; 2],
 }
 const _: () = assert!(size_of::<GpuLight>() == 64);

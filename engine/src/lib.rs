@@ -14,3 +14,5 @@ pub mod assets;
 
 pub mod accel;
 pub mod trace;
+
+pub mod render;

@@ -1,7 +1,29 @@
 // Texture lookups, twin of engine/src/render/cpu/texture.rs (f16 texels, wrap, bilinear).
 
+// IEEE half → f32, exact (done by hand: unpack2x16float needs a capability not every
+// adapter offers).
+fn half_to_f32(h: u32) -> f32 {
+    let sign = (h >> 15u) & 1u;
+    let exponent = (h >> 10u) & 31u;
+    let mantissa = h & 1023u;
+    var magnitude: f32;
+    if (exponent == 0u) {
+        magnitude = f32(mantissa) * (1.0 / 16777216.0);
+    } else if (exponent == 31u) {
+        magnitude = bitcast<f32>(0x7f800000u | (mantissa << 13u));
+    } else {
+        magnitude = bitcast<f32>(((exponent + 112u) << 23u) | (mantissa << 13u));
+    }
+    return select(magnitude, -magnitude, sign == 1u);
+}
+
 fn texel_unpack(t: vec2<u32>) -> vec4<f32> {
-    return vec4<f32>(unpack2x16float(t.x), unpack2x16float(t.y));
+    return vec4<f32>(
+        half_to_f32(t.x & 0xffffu),
+        half_to_f32(t.x >> 16u),
+        half_to_f32(t.y & 0xffffu),
+        half_to_f32(t.y >> 16u),
+    );
 }
 
 fn wrap_texel(i: i32, size: i32, mode: u32) -> i32 {

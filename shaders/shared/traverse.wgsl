@@ -1,10 +1,11 @@
 // Two-level BVH8 traversal (TLAS over instances, one BLAS per mesh), twin of the scalar
-// traversal in engine/src/trace/. Octant-ordered slab test: the near plane of each child box
+// traversal in engine/src/trace/ (same tree, same order, same triangle test). Octant-ordered slab test: the near plane of each child box
 // is read from min or max by the sign of the ray direction, children are visited in the
 // node's precomputed front-to-back order for the ray's octant (GpuBvh8Node::perm), and a
 // short stack holds (entry, entry distance) pairs so that far entries are culled when popped.
 
-const STACK_SIZE: u32 = 96u;
+// 7 * (MAX_DEPTH - 1) + 8 entries fit (engine/src/accel/mod.rs), as in the CPU traversal.
+const STACK_SIZE: u32 = 256u;
 
 struct Ray {
     origin: vec3<f32>,
@@ -40,7 +41,8 @@ fn ray_octant(d: vec3<f32>) -> u32 {
 }
 
 // Möller–Trumbore, two-sided, over the four lanes of a leaf block.
-fn intersect_block(block_index: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, best: ptr<function, BlasHit>, any_hit: bool) {
+fn intersect_block(block_index: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, t_max: f32) -> BlasHit {
+    var best = BlasHit(t_max, 0.0, 0.0, INVALID, false);
     let b = blocks[block_index];
     for (var k = 0u; k < 4u; k++) {
         if (b.prim[k] == INVALID) {
@@ -66,133 +68,103 @@ fn intersect_block(block_index: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, bes
             continue;
         }
         let t = dot(e2, qvec) * inv;
-        if (t > t_min && t < (*best).t) {
-            *best = BlasHit(t, u, v, b.prim[k], true);
-            if (any_hit) {
-                return;
-            }
-        }
-    }
-}
-
-// Closest (or, with any_hit, first found) hit in one BLAS, in its object space.
-fn traverse_blas(node_base: u32, block_base: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, t_max: f32, any_hit: bool) -> BlasHit {
-    var best = BlasHit(t_max, 0.0, 0.0, INVALID, false);
-    let rcp = safe_rcp(d);
-    let oct = ray_octant(d);
-    let shift = 3u * oct;
-    let neg = d < vec3<f32>(0.0);
-    var stack_entry: array<u32, STACK_SIZE>;
-    var stack_t: array<f32, STACK_SIZE>;
-    var sp = 1u;
-    stack_entry[0] = 0u;
-    stack_t[0] = t_min;
-    while (sp > 0u) {
-        sp -= 1u;
-        let entry = stack_entry[sp];
-        if (stack_t[sp] > best.t) {
-            continue;
-        }
-        if ((entry & LEAF_BIT) != 0u) {
-            intersect_block(block_base + (entry & ~LEAF_BIT), o, d, t_min, &best, any_hit);
-            if (any_hit && best.found) {
-                return best;
-            }
-            continue;
-        }
-        let node = nodes[node_base + entry];
-        // Push in reverse front-to-back order so the nearest child is popped first.
-        for (var i = 0; i < 8; i++) {
-            let slot = (node.perm[7 - i] >> shift) & 7u;
-            let child = node.child[slot];
-            if (child == INVALID) {
-                continue;
-            }
-            let near = vec3<f32>(
-                select(node.min_x[slot], node.max_x[slot], neg.x),
-                select(node.min_y[slot], node.max_y[slot], neg.y),
-                select(node.min_z[slot], node.max_z[slot], neg.z),
-            );
-            let far = vec3<f32>(
-                select(node.max_x[slot], node.min_x[slot], neg.x),
-                select(node.max_y[slot], node.min_y[slot], neg.y),
-                select(node.max_z[slot], node.min_z[slot], neg.z),
-            );
-            let t0 = (near - o) * rcp;
-            let t1 = (far - o) * rcp;
-            let tn = max(max(t0.x, t0.y), max(t0.z, t_min));
-            let tf = min(min(t1.x, t1.y), min(t1.z, best.t));
-            if (tn <= tf && sp < STACK_SIZE) {
-                stack_entry[sp] = child;
-                stack_t[sp] = tn;
-                sp += 1u;
-            }
+        if (t > t_min && t < best.t) {
+            best = BlasHit(t, u, v, b.prim[k], true);
         }
     }
     return best;
 }
 
-// The scene: TLAS at frame.tlas_root, BLAS per instance.
+// Closest (or, with any_hit, first found) hit in the scene: the TLAS at frame.tlas_root, then
+// the BLAS of each instance it reaches. One loop and one stack serve both levels (lavapipe
+// inlines every call, so one traversal loop keeps the compiled shader small): entering an
+// instance remembers the stack depth, and when the stack drops back to it the world-space ray
+// is restored and the TLAS traversal resumes.
 fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
     var hit = Hit(ray.t_max, 0.0, 0.0, INVALID, INVALID, false);
-    let o = ray.origin;
-    let d = ray.direction;
-    let rcp = safe_rcp(d);
-    let shift = 3u * ray_octant(d);
-    let neg = d < vec3<f32>(0.0);
-    let root = frame.tlas_root;
-    var stack_entry: array<u32, 64>;
-    var stack_t: array<f32, 64>;
+    var o = ray.origin;
+    var d = ray.direction;
+    var rcp = safe_rcp(d);
+    var shift = 3u * ray_octant(d);
+    var neg = d < vec3<f32>(0.0);
+    var node_base = frame.tlas_root;
+    var block_base = 0u;
+    var instance = INVALID;
+    var in_blas = false;
+    var blas_floor = 0u;
+    var stack_entry: array<u32, STACK_SIZE>;
+    var stack_t: array<f32, STACK_SIZE>;
     var sp = 1u;
     stack_entry[0] = 0u;
     stack_t[0] = ray.t_min;
-    while (sp > 0u) {
+    loop {
+        if (in_blas && sp == blas_floor) {
+            // This instance is done: back to the TLAS in world space.
+            in_blas = false;
+            o = ray.origin;
+            d = ray.direction;
+            rcp = safe_rcp(d);
+            shift = 3u * ray_octant(d);
+            neg = d < vec3<f32>(0.0);
+            node_base = frame.tlas_root;
+        }
+        if (sp == 0u) {
+            break;
+        }
         sp -= 1u;
         let entry = stack_entry[sp];
-        if (stack_t[sp] > hit.t) {
+        let entry_t = stack_t[sp];
+        if (entry_t > hit.t) {
             continue;
         }
         if ((entry & LEAF_BIT) != 0u) {
-            let index = entry & ~LEAF_BIT;
-            let inst = instances[index];
-            var lo = o;
-            var ld = d;
-            if ((inst.flags & INSTANCE_FLAG_IDENTITY) == 0u) {
-                let q = vec4<f32>(o, 1.0);
-                lo = vec3<f32>(dot(inst.object_from_world[0], q), dot(inst.object_from_world[1], q), dot(inst.object_from_world[2], q));
-                ld = vec3<f32>(dot(inst.object_from_world[0].xyz, d), dot(inst.object_from_world[1].xyz, d), dot(inst.object_from_world[2].xyz, d));
-            }
-            let b = traverse_blas(inst.node_base, inst.block_base, lo, ld, ray.t_min, hit.t, any_hit);
-            if (b.found) {
-                hit = Hit(b.t, b.u, b.v, index, b.prim, true);
-                if (any_hit) {
-                    return hit;
+            let payload = entry & ~LEAF_BIT;
+            if (in_blas) {
+                let b = intersect_block(block_base + payload, o, d, ray.t_min, hit.t);
+                if (b.found) {
+                    hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
+                    if (any_hit) {
+                        return hit;
+                    }
                 }
+                continue;
             }
+            // Enter instance `payload`: its BLAS root goes on the stack.
+            let inst = instances[payload];
+            if ((inst.flags & INSTANCE_FLAG_IDENTITY) == 0u) {
+                let q = vec4<f32>(ray.origin, 1.0);
+                let r = inst.object_from_world;
+                o = vec3<f32>(dot(r[0], q), dot(r[1], q), dot(r[2], q));
+                d = vec3<f32>(dot(r[0].xyz, ray.direction), dot(r[1].xyz, ray.direction), dot(r[2].xyz, ray.direction));
+                rcp = safe_rcp(d);
+                shift = 3u * ray_octant(d);
+                neg = d < vec3<f32>(0.0);
+            }
+            node_base = inst.node_base;
+            block_base = inst.block_base;
+            instance = payload;
+            in_blas = true;
+            blas_floor = sp;
+            stack_entry[sp] = 0u;
+            stack_t[sp] = entry_t;
+            sp += 1u;
             continue;
         }
-        let node = nodes[root + entry];
-        for (var i = 0; i < 8; i++) {
-            let slot = (node.perm[7 - i] >> shift) & 7u;
-            let child = node.child[slot];
+        let n = node_base + entry;
+        // Push in reverse front-to-back order so the nearest child is popped first.
+        for (var i = 0u; i < 8u; i++) {
+            let slot = (nodes[n].perm[7u - i] >> shift) & 7u;
+            let child = nodes[n].child[slot];
             if (child == INVALID) {
                 continue;
             }
-            let near = vec3<f32>(
-                select(node.min_x[slot], node.max_x[slot], neg.x),
-                select(node.min_y[slot], node.max_y[slot], neg.y),
-                select(node.min_z[slot], node.max_z[slot], neg.z),
-            );
-            let far = vec3<f32>(
-                select(node.max_x[slot], node.min_x[slot], neg.x),
-                select(node.max_y[slot], node.min_y[slot], neg.y),
-                select(node.max_z[slot], node.min_z[slot], neg.z),
-            );
-            let t0 = (near - o) * rcp;
-            let t1 = (far - o) * rcp;
+            let lo = vec3<f32>(nodes[n].min_x[slot], nodes[n].min_y[slot], nodes[n].min_z[slot]);
+            let hi = vec3<f32>(nodes[n].max_x[slot], nodes[n].max_y[slot], nodes[n].max_z[slot]);
+            let t0 = (select(lo, hi, neg) - o) * rcp;
+            let t1 = (select(hi, lo, neg) - o) * rcp;
             let tn = max(max(t0.x, t0.y), max(t0.z, ray.t_min));
             let tf = min(min(t1.x, t1.y), min(t1.z, hit.t));
-            if (tn <= tf && sp < 64u) {
+            if (tn <= tf && sp < STACK_SIZE) {
                 stack_entry[sp] = child;
                 stack_t[sp] = tn;
                 sp += 1u;

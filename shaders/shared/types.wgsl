@@ -103,7 +103,7 @@ struct GpuLight {
     p2: vec3<f32>,
     weight: f32,
     alias_threshold: f32,
-    alias: u32,
+    alias_index: u32,
     _padding: vec2<u32>,
 }
 

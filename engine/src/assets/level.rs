@@ -255,12 +255,13 @@ impl Level {
             path: path.to_path_buf(),
             source,
         };
-        let text = ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).map_err(
-            |e| AssetError::Level {
-                path: path.to_path_buf(),
-                message: format!("cannot serialise: {e}"),
-            },
-        )?;
+        let text =
+            ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).map_err(|e| {
+                AssetError::Level {
+                    path: path.to_path_buf(),
+                    message: format!("cannot serialise: {e}"),
+                }
+            })?;
         let file_name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())

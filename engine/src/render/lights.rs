@@ -83,7 +83,7 @@ pub fn build_lights(
                 p2: v[2].to_array(),
                 weight,
                 alias_threshold: 1.0,
-                alias: 0,
+                alias_index: 0,
                 _padding: [0; 2],
             });
         }
@@ -99,7 +99,7 @@ pub fn build_lights(
             p2: [0.0; 3],
             weight: 0.0,
             alias_threshold: 1.0,
-            alias: 0,
+            alias_index: 0,
             _padding: [0; 2],
         });
     }
@@ -122,9 +122,12 @@ fn build_alias(lights: &mut [GpuLight]) -> f32 {
         .map(|l| l.weight as f64 * n as f64 / total)
         .collect();
     let (mut small, mut large): (Vec<usize>, Vec<usize>) = (0..n).partition(|&i| scaled[i] < 1.0);
-    while let (Some(s), Some(&l)) = (small.pop(), large.last()) {
+    while !small.is_empty() && !large.is_empty() {
+        let (Some(s), Some(&l)) = (small.pop(), large.last()) else {
+            break;
+        };
         lights[s].alias_threshold = scaled[s] as f32;
-        lights[s].alias = l as u32;
+        lights[s].alias_index = l as u32;
         scaled[l] -= 1.0 - scaled[s];
         if scaled[l] < 1.0 {
             large.pop();
@@ -133,7 +136,7 @@ fn build_alias(lights: &mut [GpuLight]) -> f32 {
     }
     for i in small.into_iter().chain(large) {
         lights[i].alias_threshold = 1.0;
-        lights[i].alias = i as u32;
+        lights[i].alias_index = i as u32;
     }
     total as f32
 }
@@ -203,7 +206,7 @@ mod tests {
                 p2: [0.0; 3],
                 weight: w,
                 alias_threshold: 0.0,
-                alias: 0,
+                alias_index: 0,
                 _padding: [0; 2],
             })
             .collect();
@@ -214,10 +217,15 @@ mod tests {
         let mut p = vec![0.0f32; lights.len()];
         for (i, l) in lights.iter().enumerate() {
             p[i] += l.alias_threshold / n;
-            p[l.alias as usize] += (1.0 - l.alias_threshold) / n;
+            p[l.alias_index as usize] += (1.0 - l.alias_threshold) / n;
         }
         for (i, w) in weights.iter().enumerate() {
-            assert!((p[i] - w / total).abs() < 1e-6, "{i}: {} vs {}", p[i], w / total);
+            assert!(
+                (p[i] - w / total).abs() < 1e-6,
+                "{i}: {} vs {}",
+                p[i],
+                w / total
+            );
         }
     }
 }

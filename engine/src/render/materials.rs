@@ -99,13 +99,21 @@ pub fn to_gpu_material(m: &Material, texture_base: u32, texture_means: &[f32]) -
         Vec3::ZERO
     };
     GpuMaterial {
-        base_color: m.base_color.clamp(Vec3::ZERO, Vec3::ONE).extend(1.0).to_array(),
+        base_color: m
+            .base_color
+            .clamp(Vec3::ZERO, Vec3::ONE)
+            .extend(1.0)
+            .to_array(),
         emission: emission.extend(emission_weight.max(0.0)).to_array(),
         absorption: absorption.extend(0.0).to_array(),
         kind,
         roughness: m.roughness.clamp(0.0, 1.0),
         metallic: m.metallic.clamp(0.0, 1.0),
-        ior: if m.ior.is_finite() && m.ior > 1e-3 { m.ior } else { 1.5 },
+        ior: if m.ior.is_finite() && m.ior > 1e-3 {
+            m.ior
+        } else {
+            1.5
+        },
         transmission: m.transmission.clamp(0.0, 1.0),
         normal_scale: m.normal_scale,
         flags: if m.two_sided_emission {

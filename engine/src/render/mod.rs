@@ -4,11 +4,12 @@
 pub mod camera;
 pub mod cpu;
 pub mod film;
+pub mod gpu;
 pub mod lights;
 pub mod materials;
 pub mod scene;
 pub mod tracer;
 
-pub use camera::{frame_uniforms, FrameSettings};
+pub use camera::{FrameSettings, frame_uniforms};
 pub use scene::RenderScene;
 pub use tracer::{RenderError, RenderStats, Tracer};

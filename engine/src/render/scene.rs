@@ -9,9 +9,9 @@
 use glam::{Mat4, Vec3};
 use rayon::prelude::*;
 
-use super::lights::{build_lights, LightTable};
+use super::lights::{LightTable, build_lights};
 use super::materials::{pack_textures, to_gpu_material};
-use crate::accel::{build_blas, build_tlas, Aabb};
+use crate::accel::{Aabb, build_blas, build_tlas};
 use crate::assets::{Model, SceneDesc};
 use crate::layout::{
     GpuBvh8Node, GpuInstance, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
@@ -176,9 +176,15 @@ impl RenderScene {
         let tlas_build_seconds = started.elapsed().as_secs_f64();
         let bounds = instance_bounds
             .iter()
-            .fold(Aabb::EMPTY, |acc, b| acc.union(b));
+            .fold(Aabb::EMPTY, |acc, b| acc.union(*b));
 
-        let lights = build_lights(&instances, &triangle_counts, &triangles, &vertices, &materials);
+        let lights = build_lights(
+            &instances,
+            &triangle_counts,
+            &triangles,
+            &vertices,
+            &materials,
+        );
         let stats = SceneStats {
             meshes: flat.len(),
             unique_triangles,

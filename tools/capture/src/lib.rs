@@ -9,9 +9,9 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::Context;
-use candela::assets::{load_level, AssetRoot};
-use candela::render::film::{write_exr, write_png, TonemapSettings};
-use candela::render::{frame_uniforms, FrameSettings, RenderError, RenderScene, Tracer};
+use candela::assets::{AssetRoot, load_level};
+use candela::render::film::{TonemapSettings, write_exr, write_png};
+use candela::render::{FrameSettings, RenderError, RenderScene, Tracer, frame_uniforms};
 use clap::{Parser, ValueEnum};
 
 /// Which tracer renders.
@@ -94,7 +94,10 @@ impl std::fmt::Display for CaptureReport {
 }
 
 /// Opens the requested tracer over `scene`.
-pub fn open_tracer(kind: TracerKind, scene: Arc<RenderScene>) -> Result<Box<dyn Tracer>, RenderError> {
+pub fn open_tracer(
+    kind: TracerKind,
+    scene: Arc<RenderScene>,
+) -> Result<Box<dyn Tracer>, RenderError> {
     Ok(match kind {
         TracerKind::Cpu => Box::new(candela::render::cpu::CpuTracer::new(scene)),
         TracerKind::Gpu => {
@@ -146,7 +149,8 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let mut done = 0;
     while done < args.spp {
         let batch = args.batch.max(1).min(args.spp - done);
-        let mut settings = FrameSettings::new(args.width, args.height, batch, args.seed, &desc.render);
+        let mut settings =
+            FrameSettings::new(args.width, args.height, batch, args.seed, &desc.render);
         settings.sample_base = done;
         let uniforms = frame_uniforms(
             &desc.camera,

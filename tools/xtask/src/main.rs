@@ -38,9 +38,7 @@ fn main() -> ExitCode {
         "render" => render(rest),
         "test" => test(rest),
         "packages" => packages::ensure(packages::ALL).map(|_| ()),
-        other => Err(format!(
-            "unknown command {other:?}: use `render` or `test`"
-        )),
+        other => Err(format!("unknown command {other:?}: use `render` or `test`")),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -118,7 +116,13 @@ fn test(extra: &[String]) -> Result<(), String> {
         .unwrap_or(false);
     let mut command = cargo();
     if nextest {
-        command.args(["nextest", "run", "--release", "--workspace", "--no-fail-fast"]);
+        command.args([
+            "nextest",
+            "run",
+            "--release",
+            "--workspace",
+            "--no-fail-fast",
+        ]);
     } else {
         eprintln!(
             "xtask: cargo-nextest not found (install: cargo install cargo-nextest --locked); using cargo test"

@@ -22,7 +22,10 @@ fn installed(package: &str) -> bool {
     Command::new("dpkg-query")
         .args(["-W", "-f=${Status}", package])
         .output()
-        .map(|o| o.status.success() && String::from_utf8_lossy(&o.stdout).contains("install ok installed"))
+        .map(|o| {
+            o.status.success()
+                && String::from_utf8_lossy(&o.stdout).contains("install ok installed")
+        })
         .unwrap_or(false)
 }
 
@@ -36,7 +39,11 @@ fn is_root() -> bool {
 
 /// Makes sure `packages` are installed; returns the ones that were missing.
 pub fn ensure(packages: &[&str]) -> Result<Vec<String>, String> {
-    if Command::new("dpkg-query").arg("--version").output().is_err() {
+    if Command::new("dpkg-query")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
         eprintln!(
             "xtask: no dpkg here; make sure these (Debian names) are installed: {}",
             packages.join(" ")

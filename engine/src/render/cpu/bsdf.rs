@@ -11,8 +11,8 @@
 use glam::{Vec2, Vec3};
 
 use super::microfacet::{
-    fresnel_dielectric, fresnel_schlick, ggx_d, ggx_g1, ggx_g2, ggx_sample_vndf, ggx_vndf_pdf,
-    reflect, refract,
+    fresnel_dielectric, fresnel_schlick, ggx_d, ggx_g2, ggx_sample_vndf, ggx_vndf_pdf, reflect,
+    refract,
 };
 use super::sampling::{PI, cosine_hemisphere, luminance};
 use crate::layout::{MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_DIFFUSE};
@@ -79,7 +79,11 @@ impl Bsdf {
                     return (Vec3::ZERO, 0.0);
                 }
                 let d = rough_dielectric_eval(self.ior, self.alpha, wo, wi);
-                let tint = if wo.z * wi.z < 0.0 { self.base_color } else { Vec3::ONE };
+                let tint = if wo.z * wi.z < 0.0 {
+                    self.base_color
+                } else {
+                    Vec3::ONE
+                };
                 (tint * d.value, d.pdf_reflect + d.pdf_transmit)
             }
             _ => self.metal_rough_eval(wo, wi),
@@ -285,7 +289,11 @@ fn rough_dielectric_eval(ior: f32, alpha: f32, wo: Vec3, wi: Vec3) -> Dielectric
     if wo.z == 0.0 || wi.z == 0.0 {
         return NO_DIELECTRIC;
     }
-    let (sign, eta) = if wo.z > 0.0 { (1.0, ior) } else { (-1.0, 1.0 / ior) };
+    let (sign, eta) = if wo.z > 0.0 {
+        (1.0, ior)
+    } else {
+        (-1.0, 1.0 / ior)
+    };
     let wo = Vec3::new(wo.x, wo.y, wo.z * sign);
     let wi = Vec3::new(wi.x, wi.y, wi.z * sign);
     if wi.z > 0.0 {
@@ -315,8 +323,8 @@ fn rough_dielectric_eval(ior: f32, alpha: f32, wo: Vec3, wi: Vec3) -> Dielectric
     let (f, _) = fresnel_dielectric(wo_m, eta);
     let denom = wo_m + eta * wi_m;
     let denom2 = denom * denom;
-    let value = (1.0 - f) * ggx_d(m, alpha) * ggx_g2(wo, wi, alpha) * wo_m * (-wi_m)
-        / (wo.z * denom2);
+    let value =
+        (1.0 - f) * ggx_d(m, alpha) * ggx_g2(wo, wi, alpha) * wo_m * (-wi_m) / (wo.z * denom2);
     let pdf_always = ggx_vndf_pdf(wo, m, alpha) * (-wi_m) * eta * eta / denom2;
     DielectricEval {
         value: Vec3::splat(value),

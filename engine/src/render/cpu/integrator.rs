@@ -11,7 +11,9 @@ use glam::{Vec2, Vec3};
 
 use super::bsdf::Bsdf;
 use super::rng::Rng;
-use super::sampling::{basis, concentric_disc, power_heuristic, to_local, to_world, uniform_cone, uniform_triangle};
+use super::sampling::{
+    basis, concentric_disc, power_heuristic, to_local, to_world, uniform_cone, uniform_triangle,
+};
 use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{GpuFrameUniforms, INVALID, SKY_GRADIENT};
 use crate::render::scene::RenderScene;
@@ -158,7 +160,18 @@ pub fn radiance(
 
         if !bsdf.is_delta() {
             result += throughput
-                * next_event(scene, tracer, u, &bsdf, &surface, ng, (t, b, ns), wo_local, &mut rng, counts);
+                * next_event(
+                    scene,
+                    tracer,
+                    u,
+                    &bsdf,
+                    &surface,
+                    ng,
+                    (t, b, ns),
+                    wo_local,
+                    &mut rng,
+                    counts,
+                );
         } else {
             // Keep the random sequence aligned with paths that do sample lights.
             for _ in 0..NEE_RANDOMS {
@@ -177,6 +190,9 @@ pub fn radiance(
             break;
         }
         throughput *= s.weight;
+        if throughput == Vec3::ZERO {
+            break;
+        }
         last_pdf = s.pdf;
         last_delta = s.delta;
         let side = if transmitted { -ng } else { ng };
@@ -248,9 +264,13 @@ fn next_event(
         let pick = ((xi[0] * n_lights as f32) as u32).min(n_lights - 1);
         let mut light = &scene.lights.lights[pick as usize];
         if xi[1] >= light.alias_threshold {
-            light = &scene.lights.lights[light.alias as usize];
+            light = &scene.lights.lights[light.alias_index as usize];
         }
-        let (p0, p1, p2) = (Vec3::from(light.p0), Vec3::from(light.p1), Vec3::from(light.p2));
+        let (p0, p1, p2) = (
+            Vec3::from(light.p0),
+            Vec3::from(light.p1),
+            Vec3::from(light.p2),
+        );
         let bary = uniform_triangle(Vec2::new(xi[2], xi[3]));
         let p = p0 + (p1 - p0) * bary.x + (p2 - p0) * bary.y;
         let cross = (p1 - p0).cross(p2 - p0);
@@ -286,7 +306,12 @@ fn next_event(
             }
         } else {
             let (st, sb) = basis(sun);
-            let wi = to_world(uniform_cone(Vec2::new(xi[4], xi[5]), u.sun_cos_radius), st, sb, sun);
+            let wi = to_world(
+                uniform_cone(Vec2::new(xi[4], xi[5]), u.sun_cos_radius),
+                st,
+                sb,
+                sun,
+            );
             let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
             if f != Vec3::ZERO && shadow(wi, f32::INFINITY, counts) {
                 let sun_pdf = 1.0 / u.sun_solid_angle;

@@ -90,7 +90,12 @@ mod tests {
         // Neighbouring pixels, samples and seeds give different streams.
         let first = |x, y, s, seed| Rng::new(x, y, s, seed).next_f32();
         let base = first(3, 7, 11, 1);
-        for other in [first(4, 7, 11, 1), first(3, 8, 11, 1), first(3, 7, 12, 1), first(3, 7, 11, 2)] {
+        for other in [
+            first(4, 7, 11, 1),
+            first(3, 8, 11, 1),
+            first(3, 7, 12, 1),
+            first(3, 7, 11, 2),
+        ] {
             assert_ne!(base, other);
         }
     }

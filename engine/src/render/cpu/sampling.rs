@@ -101,7 +101,12 @@ mod tests {
 
     #[test]
     fn basis_is_orthonormal() {
-        for n in [Vec3::X, -Vec3::Z, Vec3::new(0.3, -0.5, 0.8).normalize(), Vec3::new(1e-7, 0.0, -1.0).normalize()] {
+        for n in [
+            Vec3::X,
+            -Vec3::Z,
+            Vec3::new(0.3, -0.5, 0.8).normalize(),
+            Vec3::new(1e-7, 0.0, -1.0).normalize(),
+        ] {
             let (t, b) = basis(n);
             for (x, y) in [(t, b), (t, n), (b, n)] {
                 assert!(x.dot(y).abs() < 1e-5);

@@ -57,7 +57,11 @@ pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
     let vertex = |k: usize| scene.vertices[(inst.vertex_base + tri.indices[k]) as usize];
     let (a, b, c) = (vertex(0), vertex(1), vertex(2));
     let (w, u, v) = (1.0 - hit.u - hit.v, hit.u, hit.v);
-    let (pa, pb, pc) = (Vec3::from(a.position), Vec3::from(b.position), Vec3::from(c.position));
+    let (pa, pb, pc) = (
+        Vec3::from(a.position),
+        Vec3::from(b.position),
+        Vec3::from(c.position),
+    );
     let p_object = pa * w + pb * u + pc * v;
     let position = super::super::lights::world_point(inst, p_object.to_array());
     let mut geometric_normal = world_normal(inst, (pb - pa).cross(pc - pa)).normalize_or_zero();
@@ -74,7 +78,9 @@ pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
     let t_object = Vec3::from_slice(&a.tangent[..3]) * w
         + Vec3::from_slice(&b.tangent[..3]) * u
         + Vec3::from_slice(&c.tangent[..3]) * v;
-    let tangent = world_vector(inst, t_object).normalize_or_zero().extend(a.tangent[3]);
+    let tangent = world_vector(inst, t_object)
+        .normalize_or_zero()
+        .extend(a.tangent[3]);
     let uv = Vec2::new(a.u, a.v) * w + Vec2::new(b.u, b.v) * u + Vec2::new(c.u, c.v) * v;
     let material = if inst.material_override != INVALID {
         inst.material_override

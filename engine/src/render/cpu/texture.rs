@@ -11,7 +11,12 @@ use crate::layout::{GpuTexture, TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR};
 
 fn unpack(t: [u32; 2]) -> Vec4 {
     let h = |bits: u32| f16::from_bits(bits as u16).to_f32();
-    Vec4::new(h(t[0] & 0xffff), h(t[0] >> 16), h(t[1] & 0xffff), h(t[1] >> 16))
+    Vec4::new(
+        h(t[0] & 0xffff),
+        h(t[0] >> 16),
+        h(t[1] & 0xffff),
+        h(t[1] >> 16),
+    )
 }
 
 fn wrap(i: i32, size: i32, mode: u32) -> i32 {
@@ -68,8 +73,15 @@ mod tests {
         let px = |v: f32| pack_texel([f16::from_f32(v); 4]);
         // 2×1 texture: 0 and 1.
         let texels = vec![px(0.0), px(1.0)];
-        let mut t = GpuTexture { texel_offset: 0, width: 2, height: 1, flags: WRAP_REPEAT };
-        let s = |t: &GpuTexture, u: f32| sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5)).x;
+        let mut t = GpuTexture {
+            texel_offset: 0,
+            width: 2,
+            height: 1,
+            flags: WRAP_REPEAT,
+        };
+        let s = |t: &GpuTexture, u: f32| {
+            sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5)).x
+        };
         assert_eq!(s(&t, 0.25), 0.0); // texel centre
         assert_eq!(s(&t, 0.5), 0.5); // half way
         assert_eq!(s(&t, 0.0), 0.5); // repeat: blends texel 1 (wrapped) and texel 0

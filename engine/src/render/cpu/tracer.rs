@@ -11,7 +11,7 @@ use std::time::Instant;
 use glam::Vec3;
 use rayon::prelude::*;
 
-use super::integrator::{radiance, RayCounts};
+use super::integrator::{RayCounts, radiance};
 use crate::layout::GpuFrameUniforms;
 use crate::render::film::Film;
 use crate::render::scene::RenderScene;
@@ -71,7 +71,8 @@ impl Tracer for CpuTracer {
                     for x in x0..x1 {
                         let mut sum = Vec3::ZERO;
                         for s in 0..u.spp {
-                            sum += radiance(scene, &tracer, u, x, y, u.sample_base + s, &mut counts);
+                            sum +=
+                                radiance(scene, &tracer, u, x, y, u.sample_base + s, &mut counts);
                         }
                         sums.push(sum);
                     }

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
-use super::tonemap::{linear_to_srgb8, TonemapSettings};
+use super::tonemap::{TonemapSettings, linear_to_srgb8};
 
 /// Errors of image input and output, naming the file.
 #[derive(Debug, thiserror::Error)]
@@ -76,7 +76,12 @@ pub fn write_png(
 }
 
 /// Writes `pixels` (linear radiance, rows top to bottom) as a 32-bit float RGB OpenEXR.
-pub fn write_exr(path: &Path, width: u32, height: u32, pixels: &[Vec3]) -> Result<(), ImageIoError> {
+pub fn write_exr(
+    path: &Path,
+    width: u32,
+    height: u32,
+    pixels: &[Vec3],
+) -> Result<(), ImageIoError> {
     ensure_parent(path)?;
     let temp = temp_beside(path);
     let w = width as usize;
@@ -103,7 +108,9 @@ pub fn read_exr(path: &Path) -> Result<(u32, u32, Vec<Vec3>), ImageIoError> {
                 vec![Vec3::ZERO; resolution.width() * resolution.height()],
             )
         },
-        |(width, pixels): &mut (usize, Vec<Vec3>), position, (r, g, b, _a): (f32, f32, f32, f32)| {
+        |(width, pixels): &mut (usize, Vec<Vec3>),
+         position,
+         (r, g, b, _a): (f32, f32, f32, f32)| {
             pixels[position.y() * *width + position.x()] = Vec3::new(r, g, b);
         },
     )

@@ -5,5 +5,5 @@ mod image_io;
 mod tonemap;
 
 pub use accumulate::Film;
-pub use image_io::{read_exr, write_exr, write_png, ImageIoError};
-pub use tonemap::{linear_to_srgb8, TonemapSettings};
+pub use image_io::{ImageIoError, read_exr, write_exr, write_png};
+pub use tonemap::{TonemapSettings, linear_to_srgb8};

@@ -56,7 +56,10 @@ mod tests {
         // 18% grey is sRGB 118.
         assert_eq!(linear_to_srgb8(Vec3::splat(0.18), &s)[0], 118);
         assert_eq!(linear_to_srgb8(Vec3::splat(f32::NAN), &s), [0, 0, 0]);
-        let bright = TonemapSettings { exposure_ev: 1.0, filmic: false };
+        let bright = TonemapSettings {
+            exposure_ev: 1.0,
+            filmic: false,
+        };
         assert_eq!(linear_to_srgb8(Vec3::splat(0.5), &bright), [255, 255, 255]);
     }
 }

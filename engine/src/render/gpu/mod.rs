@@ -5,5 +5,5 @@ mod shaders;
 mod tracer;
 
 pub use context::GpuContext;
-pub use shaders::{compose, ShaderSource, SHARED};
+pub use shaders::{SHARED, ShaderSource, compose};
 pub use tracer::GpuTracer;

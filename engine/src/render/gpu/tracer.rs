@@ -12,7 +12,7 @@ use glam::Vec3;
 use wgpu::util::DeviceExt;
 
 use super::context::GpuContext;
-use super::shaders::{compose, TRACE};
+use super::shaders::{TRACE, compose};
 use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
 use crate::render::scene::RenderScene;
@@ -81,11 +81,13 @@ impl GpuTracer {
             mapped_at_creation: false,
         })];
         for (name, bytes) in &contents {
-            scene_buffers.push(device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some(name),
-                contents: bytes,
-                usage: wgpu::BufferUsages::STORAGE,
-            }));
+            scene_buffers.push(
+                device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                    label: Some(name),
+                    contents: bytes,
+                    usage: wgpu::BufferUsages::STORAGE,
+                }),
+            );
         }
         let storage = |binding: u32, read_only: bool| wgpu::BindGroupLayoutEntry {
             binding,
@@ -312,7 +314,10 @@ impl Tracer for GpuTracer {
 
     fn clear(&mut self) {
         if let Some(film) = &self.film {
-            let mut encoder = self.context.device.create_command_encoder(&Default::default());
+            let mut encoder = self
+                .context
+                .device
+                .create_command_encoder(&Default::default());
             encoder.clear_buffer(&film.film, 0, None);
             self.context.queue.submit([encoder.finish()]);
         }
