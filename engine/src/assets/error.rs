@@ -21,6 +21,22 @@ pub enum AssetError {
         requested: String,
         root: PathBuf,
     },
+    #[error("{path}: references {referenced}, which does not exist")]
+    MissingFile { path: PathBuf, referenced: PathBuf },
+    #[error("{path}: cannot read {referenced}: {source}")]
+    ReadFailed {
+        path: PathBuf,
+        referenced: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("{path}: {what} is too large: {size} > limit {limit}")]
+    TooLarge {
+        path: PathBuf,
+        what: String,
+        size: u64,
+        limit: u64,
+    },
     #[error("{path}: malformed glTF: {message}")]
     Gltf { path: PathBuf, message: String },
     #[error("{path}: malformed OBJ/MTL: {message}")]
@@ -41,6 +57,12 @@ pub enum AssetError {
     Unsupported { path: PathBuf, message: String },
     #[error("{path}: level: {message}")]
     Level { path: PathBuf, message: String },
+    /// A loader or a library it calls panicked on this input: a bug in Candela (a check is
+    /// missing). The panic was caught so that the engine keeps running.
+    #[error(
+        "{path}: the loader panicked ({message}); this is a bug, please report it with the file"
+    )]
+    LoaderPanic { path: PathBuf, message: String },
 }
 
 /// Result of asset functions.

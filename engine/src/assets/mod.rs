@@ -1,11 +1,28 @@
 //! Assets: files in, engine-side [`Model`]s and levels out. Every path goes through an
 //! [`AssetRoot`]; every failure is an [`AssetError`] naming the file and the problem.
+//!
+//! Model loading starts at [`load_model`] (`load.rs`): OBJ + MTL (`obj`, `obj_scan`, `mtl`,
+//! `mtl_material`), glTF 2.0 (`gltf/`), textures (`texture`, `bump`), then the checks and
+//! repairs every mesh goes through (`mesh_check`, `tangents`). Limits on sizes are in `limits`.
 
+mod bump;
+mod context;
 mod error;
+mod gltf;
+mod limits;
+mod load;
+mod mesh_check;
 mod model;
+mod mtl;
+mod mtl_material;
+mod obj;
+mod obj_scan;
 mod root;
+mod tangents;
+mod texture;
 
 pub use error::{AssetError, AssetResult};
+pub use load::{load_model, load_model_file};
 pub use model::{Material, MaterialKind, Mesh, Model, Placement, Texture, TextureRef, Wrap};
 pub use root::AssetRoot;
 

@@ -119,7 +119,7 @@ impl Default for Material {
 }
 
 /// How texture coordinates outside [0, 1] are treated.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Wrap {
     #[default]
     Repeat,
