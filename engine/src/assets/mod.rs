@@ -34,3 +34,6 @@ pub use level::{
 
 mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
+
+mod level_load;
+pub use level_load::{load_level, scene_from_level};
