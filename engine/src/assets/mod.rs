@@ -1,9 +1,10 @@
 //! Assets: files in, engine-side [`Model`]s and levels out. Every path goes through an
 //! [`AssetRoot`]; every failure is an [`AssetError`] naming the file and the problem.
 //!
-//! Model loading starts at [`load_model`] (`load.rs`): OBJ + MTL (`obj`, `obj_scan`, `mtl`,
-//! `mtl_material`), glTF 2.0 (`gltf/`), textures (`texture`, `bump`), then the checks and
-//! repairs every mesh goes through (`mesh_check`, `tangents`). Limits on sizes are in `limits`.
+//! Model loading starts at [`load_model`] (`load.rs`): OBJ + MTL (`obj`, `obj_scan`,
+//! `obj_mesh`, `mtl`, `mtl_material`), glTF 2.0 (`gltf/`), textures (`texture`, `bump`), then
+//! the checks and repairs every mesh goes through (`mesh_check`, `tangents`). Limits on sizes
+//! are in `limits`; `context` carries one load's file, root and notes.
 
 mod bump;
 mod context;
@@ -16,6 +17,7 @@ mod model;
 mod mtl;
 mod mtl_material;
 mod obj;
+mod obj_mesh;
 mod obj_scan;
 mod root;
 mod tangents;

@@ -29,11 +29,14 @@ pub struct Model {
 pub struct Mesh {
     pub name: String,
     pub positions: Vec<Vec3>,
-    /// Per-vertex unit normals; `None` means flat shading with geometric normals.
+    /// Per-vertex unit normals; `None` means flat shading with geometric normals. A zero
+    /// vector at a vertex means the same there (loaders write it for missing or broken
+    /// normals; see `mesh_check`).
     pub normals: Option<Vec<Vec3>>,
     /// Per-vertex texture coordinates (glTF convention: v down the image, origin top-left).
     pub uvs: Option<Vec<Vec2>>,
-    /// Per-vertex tangents, `w` = bitangent sign (MikkTSpace convention).
+    /// Per-vertex tangents, `w` = bitangent sign (MikkTSpace convention: bitangent =
+    /// `w · normal × tangent`). A zero `xyz` means no normal mapping at that vertex.
     pub tangents: Option<Vec<Vec4>>,
     /// Vertex indices, counter-clockwise seen from the front (geometric normal = (v1-v0)×(v2-v0)).
     pub triangles: Vec<[u32; 3]>,

@@ -17,7 +17,9 @@
 //!   width of the same lobe), perceptual roughness = √α, clamped to [0, 1].
 //! - `Ke` → emission (radiance, W·sr⁻¹·m⁻²), one-sided (along the geometric normal).
 //! - `d` < 1 or `Tr` > 0 → `transmission` = 1 − `d` (or `Tr`) on a non-dielectric material,
-//!   which then becomes MetalRough (the only kind with a transmission factor).
+//!   which then becomes MetalRough (the only kind with a transmission factor). `Tf` alone
+//!   does not make a material transmissive (many exporters write `Tf 1 1 1` on every
+//!   material); it is the tint of refractive (`illum` 4/6/7) materials.
 //! - `map_Kd`, `map_Ke`: sRGB colour textures multiplied by `Kd`/`Ke` (white when absent).
 //!   `norm`: a tangent-space normal map; `bump`/`map_bump`: a height map converted to a normal
 //!   map, or a normal map if the image has colour (see `texture`); `-bm` → `normal_scale`.

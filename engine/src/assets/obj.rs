@@ -23,7 +23,7 @@ use std::collections::HashMap;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use glam::{Mat4, Vec2, Vec3};
+use glam::Mat4;
 
 use super::context::LoadContext;
 use super::error::{AssetError, AssetResult};
@@ -31,6 +31,7 @@ use super::mesh_check::check_mesh;
 use super::model::{Material, Mesh, Model, Placement};
 use super::mtl::{MtlMaterial, parse_mtl};
 use super::mtl_material::to_material;
+use super::obj_mesh::MeshBuilder;
 use super::obj_scan::scan_obj;
 use super::tangents::ensure_tangents;
 use super::texture::TextureSet;
@@ -300,108 +301,5 @@ impl MaterialTable {
             ));
         }
         self.materials
-    }
-}
-
-/// Joins the `tobj` parts of one object or group into one mesh.
-struct MeshBuilder {
-    name: String,
-    mesh: Mesh,
-    normals: Vec<Vec3>,
-    uvs: Vec<Vec2>,
-    parts_with_normals: usize,
-    parts_with_uvs: usize,
-    parts: usize,
-}
-
-impl MeshBuilder {
-    fn new(name: &str) -> Self {
-        Self {
-            name: name.to_string(),
-            mesh: Mesh {
-                name: name.to_string(),
-                ..Mesh::default()
-            },
-            normals: Vec::new(),
-            uvs: Vec::new(),
-            parts_with_normals: 0,
-            parts_with_uvs: 0,
-            parts: 0,
-        }
-    }
-
-    /// Appends one `tobj` part (single-indexed, triangulated) using material `material`.
-    fn add(&mut self, context: &mut LoadContext, part: &tobj::Mesh, material: u32) {
-        let base = self.mesh.positions.len() as u32;
-        let count = part.positions.len() / 3;
-        self.parts += 1;
-        self.mesh.positions.extend(
-            part.positions
-                .chunks_exact(3)
-                .map(|p| Vec3::new(p[0], p[1], p[2])),
-        );
-        if part.normals.len() == count * 3 && count > 0 {
-            self.parts_with_normals += 1;
-            self.normals.extend(
-                part.normals
-                    .chunks_exact(3)
-                    .map(|n| Vec3::new(n[0], n[1], n[2])),
-            );
-        } else {
-            if !part.normals.is_empty() {
-                context.warn(format!(
-                    "object {:?}: only some face corners have a normal (vn): flat shading for this part",
-                    self.name
-                ));
-            }
-            self.normals.extend(std::iter::repeat_n(Vec3::ZERO, count));
-        }
-        if part.texcoords.len() == count * 2 && count > 0 {
-            self.parts_with_uvs += 1;
-            self.uvs.extend(
-                part.texcoords
-                    .chunks_exact(2)
-                    .map(|t| Vec2::new(t[0], 1.0 - t[1])),
-            );
-        } else {
-            if !part.texcoords.is_empty() {
-                context.warn(format!(
-                    "object {:?}: only some face corners have texture coordinates (vt): (0, 0) used",
-                    self.name
-                ));
-            }
-            self.uvs.extend(std::iter::repeat_n(Vec2::ZERO, count));
-        }
-        for triangle in part.indices.chunks_exact(3) {
-            self.mesh
-                .triangles
-                .push([triangle[0] + base, triangle[1] + base, triangle[2] + base]);
-            self.mesh.triangle_materials.push(material);
-        }
-    }
-
-    /// The joined mesh, or `None` when it has no triangles (only lines, points or nothing).
-    fn finish(mut self, context: &mut LoadContext) -> Option<Mesh> {
-        if self.mesh.triangles.is_empty() {
-            return None;
-        }
-        if self.parts_with_normals == 0 {
-            context.note(format!(
-                "mesh {:?} has no normals (vn): flat shading",
-                self.name
-            ));
-        } else {
-            if self.parts_with_normals < self.parts {
-                context.warn(format!(
-                    "mesh {:?}: parts without normals (vn) get zero normals (flat there)",
-                    self.name
-                ));
-            }
-            self.mesh.normals = Some(self.normals);
-        }
-        if self.parts_with_uvs > 0 {
-            self.mesh.uvs = Some(self.uvs);
-        }
-        Some(self.mesh)
     }
 }

@@ -47,7 +47,14 @@ impl Reader<'_> {
             .file
             .buffers
             .get(view_json.buffer.value())
-            .ok_or_else(|| error("its buffer does not exist".into()))?;
+            .ok_or_else(|| error("its buffer does not exist".into()))?
+            .as_ref()
+            .ok_or_else(|| {
+                error(format!(
+                    "buffer {} has no data (no uri, and not the GLB's BIN chunk)",
+                    view_json.buffer.value()
+                ))
+            })?;
         let start = view_json.byte_offset.map_or(0, |o| o.0);
         let end = start.checked_add(view_json.byte_length.0);
         match end {

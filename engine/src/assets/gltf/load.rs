@@ -1,22 +1,24 @@
-//! Loads one glTF file into a [`Model`]: opens it, converts its materials, expands its scene
-//! and converts the meshes the scene places (meshes no node of the scene uses are not loaded).
+//! Loads one glTF file into a [`Model`]: opens it, converts its materials and meshes, and
+//! expands its scene into placements.
 //!
 //! Model layout: `materials` are the file's materials in glTF order, then the glTF default
-//! material if some primitive has none; `meshes` are the placed glTF meshes in order of first
-//! placement; `placements` follow the scene's depth-first node order. Every mesh goes through
+//! material if some primitive has none; `meshes` are the file's meshes in glTF order, leaving
+//! out those without triangles (so every mesh is checked, placed or not: a mesh library without
+//! nodes still loads); `placements` follow the scene's depth-first node order, a node with
+//! `EXT_mesh_gpu_instancing` giving one placement per instance. Every mesh goes through
 //! `mesh_check` and, when it is normal-mapped without tangents, `tangents`.
 //! Must not: parse JSON or read accessors itself.
 
-use std::collections::HashMap;
-
 use super::super::context::LoadContext;
 use super::super::error::AssetResult;
+use super::super::limits::MAX_PLACEMENTS;
 use super::super::mesh_check::check_mesh;
 use super::super::model::{Model, Placement};
 use super::super::tangents::ensure_tangents;
 use super::super::texture::TextureSet;
 use super::accessor::Reader;
 use super::document::open;
+use super::instancing::instance_transforms;
 use super::material::{convert_materials, default_material};
 use super::mesh::{Budget, convert_mesh};
 use super::nodes::place_meshes;
@@ -38,43 +40,59 @@ pub(crate) fn load(context: &mut LoadContext) -> AssetResult<Model> {
     };
     let mut notes = Vec::new();
     let mut budget = Budget::default();
-    let mut model_mesh_of: HashMap<usize, Option<usize>> = HashMap::new();
     let mut meshes = Vec::new();
-    let mut placements = Vec::new();
+    let mut model_mesh_of: Vec<Option<usize>> = Vec::new();
+    let mut placements: Vec<Placement> = Vec::new();
     {
         let reader = Reader {
             context,
             file: &file,
         };
-        for (gltf_index, model_from_mesh) in node_placements {
-            let mesh = match model_mesh_of.get(&gltf_index) {
-                Some(&known) => known,
-                None => {
-                    let converted = match file.document.meshes().nth(gltf_index) {
-                        Some(gltf_mesh) => convert_mesh(
-                            &reader,
-                            &mut notes,
-                            &mut budget,
-                            &gltf_mesh,
-                            &mut material_for,
-                        )?,
-                        None => None,
-                    };
-                    let index = converted.map(|mesh| {
-                        meshes.push(mesh);
-                        meshes.len() - 1
-                    });
-                    model_mesh_of.insert(gltf_index, index);
-                    index
-                }
+        for gltf_mesh in file.document.meshes() {
+            let converted = convert_mesh(
+                &reader,
+                &mut notes,
+                &mut budget,
+                &gltf_mesh,
+                &mut material_for,
+            )?;
+            model_mesh_of.push(converted.map(|mesh| {
+                meshes.push(mesh);
+                meshes.len() - 1
+            }));
+        }
+        for (gltf_index, model_from_mesh, node) in node_placements {
+            let Some(mesh) = model_mesh_of.get(gltf_index).copied().flatten() else {
+                continue;
             };
-            if let Some(mesh) = mesh {
-                placements.push(Placement {
+            match instance_transforms(&reader, node)? {
+                Some(instances) => placements.extend(instances.iter().map(|instance| Placement {
+                    mesh,
+                    model_from_mesh: model_from_mesh * *instance,
+                })),
+                None => placements.push(Placement {
                     mesh,
                     model_from_mesh,
-                });
+                }),
+            }
+            if placements.len() > MAX_PLACEMENTS {
+                return Err(context.too_large(
+                    "scene (placed meshes)",
+                    placements.len() as u64,
+                    MAX_PLACEMENTS as u64,
+                ));
             }
         }
+    }
+    let mut placed = vec![false; meshes.len()];
+    for placement in &placements {
+        placed[placement.mesh] = true;
+    }
+    let unplaced = placed.iter().filter(|&&p| !p).count();
+    if unplaced > 0 {
+        notes.push(format!(
+            "{unplaced} mesh(es) not placed by the scene (loaded, without placement)"
+        ));
     }
     for note in notes {
         context.note(note);

@@ -128,14 +128,8 @@ fn convert(
             info.texture_transform().is_some(),
         );
         let what = format!("material {name:?} base colour texture");
-        material.base_color_texture = Some(load_texture(
-            context,
-            file,
-            textures,
-            &slot,
-            Usage::Color,
-            &what,
-        )?);
+        material.base_color_texture =
+            load_texture(context, file, textures, &slot, Usage::Color, &what)?;
     }
     if let Some(info) = pbr.metallic_roughness_texture() {
         let slot = texture_use(
@@ -144,26 +138,13 @@ fn convert(
             info.texture_transform().is_some(),
         );
         let what = format!("material {name:?} metallic-roughness texture");
-        material.metal_rough_texture = Some(load_texture(
-            context,
-            file,
-            textures,
-            &slot,
-            Usage::Data,
-            &what,
-        )?);
+        material.metal_rough_texture =
+            load_texture(context, file, textures, &slot, Usage::Data, &what)?;
     }
     if let Some(normal) = gltf_material.normal_texture() {
         let slot = texture_use(normal.texture(), normal.tex_coord(), false);
         let what = format!("material {name:?} normal texture");
-        material.normal_texture = Some(load_texture(
-            context,
-            file,
-            textures,
-            &slot,
-            Usage::Data,
-            &what,
-        )?);
+        material.normal_texture = load_texture(context, file, textures, &slot, Usage::Data, &what)?;
         material.normal_scale = if normal.scale().is_finite() {
             normal.scale()
         } else {
@@ -177,14 +158,8 @@ fn convert(
             info.texture_transform().is_some(),
         );
         let what = format!("material {name:?} emissive texture");
-        material.emission_texture = Some(load_texture(
-            context,
-            file,
-            textures,
-            &slot,
-            Usage::Color,
-            &what,
-        )?);
+        material.emission_texture =
+            load_texture(context, file, textures, &slot, Usage::Color, &what)?;
     }
 
     if gltf_material.alpha_mode() != gltf::material::AlphaMode::Opaque {

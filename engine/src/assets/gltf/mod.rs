@@ -4,11 +4,13 @@
 //!
 //! Flow (`load`): `document` opens and validates the file (`glb` splits binaries, `uri`
 //! decodes URIs) → `material` converts materials (`texture` loads their images) → `nodes`
-//! expands the scene → `mesh` converts the placed meshes (`accessor` reads their data).
+//! expands the scene → `mesh` converts the meshes (`accessor` reads their data) →
+//! `instancing` expands `EXT_mesh_gpu_instancing` nodes.
 
 mod accessor;
 mod document;
 mod glb;
+mod instancing;
 mod load;
 mod material;
 mod mesh;

@@ -17,8 +17,8 @@ use super::super::context::LoadContext;
 use super::super::error::AssetResult;
 use super::super::limits::{MAX_NODE_VISITS, MAX_PLACEMENTS};
 
-/// A glTF mesh placed by a node: (glTF mesh index, model-from-mesh transform).
-pub(crate) type NodePlacement = (usize, Mat4);
+/// A glTF mesh placed by a node: (glTF mesh index, model-from-mesh transform, node index).
+pub(crate) type NodePlacement = (usize, Mat4, usize);
 
 /// Expands the chosen scene into placed meshes, in depth-first node order.
 pub(crate) fn place_meshes(
@@ -82,7 +82,7 @@ pub(crate) fn place_meshes(
         };
         let global = parent * transforms[node];
         if let Some(mesh) = json.mesh {
-            placements.push((mesh.value(), global));
+            placements.push((mesh.value(), global, node));
             if placements.len() > MAX_PLACEMENTS {
                 return Err(context.too_large(
                     "scene (placed meshes)",

@@ -27,6 +27,7 @@ pub(crate) struct TextureUse<'a> {
 }
 
 /// Loads the texture of `texture_use` for `usage`; `what` names the material slot for notes.
+/// A texture without an image source (glTF leaves that case to extensions) gives `None`.
 pub(crate) fn load_texture(
     context: &mut LoadContext,
     file: &GltfFile,
@@ -34,7 +35,7 @@ pub(crate) fn load_texture(
     texture_use: &TextureUse,
     usage: Usage,
     what: &str,
-) -> AssetResult<TextureRef> {
+) -> AssetResult<Option<TextureRef>> {
     if texture_use.tex_coord != 0 {
         context.warn(format!(
             "{what} uses TEXCOORD_{}, which is not supported: TEXCOORD_0 used",
@@ -59,20 +60,16 @@ pub(crate) fn load_texture(
         nearest: sampler.mag_filter() == Some(MagFilter::Nearest),
     };
     let json = file.document.as_json();
-    let image_index = json
-        .textures
-        .get(texture.index())
-        .map(|t| t.source.value())
-        .ok_or_else(|| {
-            context.gltf_error(format!(
-                "{what}: texture {} does not exist",
-                texture.index()
-            ))
-        })?;
-    let image = json
-        .images
-        .get(image_index)
-        .ok_or_else(|| context.gltf_error(format!("{what}: image {image_index} does not exist")))?;
+    let image_index = json.textures.get(texture.index()).map(|t| t.source.value());
+    let Some((image_index, image)) =
+        image_index.and_then(|i| json.images.get(i).map(|image| (i, image)))
+    else {
+        context.warn(format!(
+            "{what}: texture {} has no image source Candela can read: texture not used",
+            texture.index()
+        ));
+        return Ok(None);
+    };
     let name = image
         .uri
         .as_deref()
@@ -84,9 +81,11 @@ pub(crate) fn load_texture(
             |n| format!("image #{image_index} ({n})"),
         );
     let source = format!("image #{image_index}");
-    textures.get_or_load(context, &source, &name, usage, sampling, |context| {
-        image_bytes(context, file, image_index)
-    })
+    textures
+        .get_or_load(context, &source, &name, usage, sampling, |context| {
+            image_bytes(context, file, image_index)
+        })
+        .map(Some)
 }
 
 /// The encoded bytes of image `index`.
