@@ -24,7 +24,11 @@ pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<SceneDesc>
 }
 
 /// Loads the models of an already parsed `level` (read from `level_path`).
-pub fn scene_from_level(level_path: &Path, level: &Level, root: &AssetRoot) -> AssetResult<SceneDesc> {
+pub fn scene_from_level(
+    level_path: &Path,
+    level: &Level,
+    root: &AssetRoot,
+) -> AssetResult<SceneDesc> {
     let level_error = |message: String| AssetError::Level {
         path: level_path.to_path_buf(),
         message,
@@ -32,13 +36,19 @@ pub fn scene_from_level(level_path: &Path, level: &Level, root: &AssetRoot) -> A
     let mut model_index = HashMap::new();
     for (i, entry) in level.models.iter().enumerate() {
         if model_index.insert(entry.name.as_str(), i).is_some() {
-            return Err(level_error(format!("model name {:?} is used twice", entry.name)));
+            return Err(level_error(format!(
+                "model name {:?} is used twice",
+                entry.name
+            )));
         }
     }
     let mut material_index = HashMap::new();
     for (i, m) in level.materials.iter().enumerate() {
         if material_index.insert(m.name.as_str(), i).is_some() {
-            return Err(level_error(format!("material name {:?} is used twice", m.name)));
+            return Err(level_error(format!(
+                "material name {:?} is used twice",
+                m.name
+            )));
         }
     }
     let mut instances = Vec::with_capacity(level.instances.len());

@@ -7,7 +7,7 @@
 use glam::Vec3;
 use half::f16;
 
-use crate::assets::{Material, MaterialKind, Model, Wrap};
+use crate::assets::{Material, MaterialKind, Model, Texture, Wrap};
 use crate::layout::{
     GpuMaterial, GpuTexture, INVALID, MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_DIFFUSE,
     MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH, TEXTURE_FLAG_NEAREST, WRAP_CLAMP,
@@ -29,6 +29,72 @@ pub fn pack_texel(t: [f16; 4]) -> [u32; 2] {
     [bits[0] | (bits[1] << 16), bits[2] | (bits[3] << 16)]
 }
 
+/// Most texels all textures together may hold: 16 Mi texels of 8 bytes = 128 MiB, the largest
+/// storage binding WebGPU guarantees and what lavapipe offers. Scenes over budget have their
+/// largest textures halved (box filter) until they fit, with a warning.
+pub const TEXEL_BUDGET: usize = 16 << 20;
+
+/// `t` halved in each dimension (2×2 box filter; odd edges repeat the last texel).
+fn halve(t: &Texture) -> Texture {
+    let (w, h) = (t.width.div_ceil(2).max(1), t.height.div_ceil(2).max(1));
+    let at =
+        |x: u32, y: u32| t.texels[(y.min(t.height - 1) * t.width + x.min(t.width - 1)) as usize];
+    let mut texels = Vec::with_capacity((w * h) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = [0.0f32; 4];
+            for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                let p = at(2 * x + dx, 2 * y + dy);
+                for c in 0..4 {
+                    sum[c] += p[c].to_f32() * 0.25;
+                }
+            }
+            texels.push(sum.map(f16::from_f32));
+        }
+    }
+    Texture {
+        width: w,
+        height: h,
+        texels,
+        ..t.clone()
+    }
+}
+
+/// Every model's textures, halving the largest until the total fits [`TEXEL_BUDGET`].
+fn textures_within_budget(models: &[Model]) -> Vec<Vec<std::borrow::Cow<'_, Texture>>> {
+    let mut all: Vec<Vec<std::borrow::Cow<'_, Texture>>> = models
+        .iter()
+        .map(|m| m.textures.iter().map(std::borrow::Cow::Borrowed).collect())
+        .collect();
+    let total = |all: &Vec<Vec<std::borrow::Cow<'_, Texture>>>| -> usize {
+        all.iter().flatten().map(|t| t.texels.len()).sum()
+    };
+    while total(&all) > TEXEL_BUDGET {
+        let Some((m, i)) = all
+            .iter()
+            .enumerate()
+            .flat_map(|(m, ts)| {
+                ts.iter()
+                    .enumerate()
+                    .map(move |(i, t)| ((m, i), t.texels.len()))
+            })
+            .max_by_key(|&(_, n)| n)
+            .map(|(at, _)| at)
+        else {
+            break;
+        };
+        let halved = halve(&all[m][i]);
+        log::warn!(
+            "textures exceed the budget of {TEXEL_BUDGET} texels: {} halved to {}×{}",
+            halved.name,
+            halved.width,
+            halved.height
+        );
+        all[m][i] = std::borrow::Cow::Owned(halved);
+    }
+    all
+}
+
 /// Texture table, texels, the first global texture index of each model, and the mean RGB
 /// luminance of every (global) texture.
 pub fn pack_textures(models: &[Model]) -> (Vec<GpuTexture>, Vec<[u32; 2]>, Vec<u32>, Vec<f32>) {
@@ -36,9 +102,9 @@ pub fn pack_textures(models: &[Model]) -> (Vec<GpuTexture>, Vec<[u32; 2]>, Vec<u
     let mut texels = Vec::new();
     let mut bases = Vec::with_capacity(models.len());
     let mut means = Vec::new();
-    for model in models {
+    for model_textures in textures_within_budget(models) {
         bases.push(table.len() as u32);
-        for texture in &model.textures {
+        for texture in &model_textures {
             let mut flags = wrap_bits(texture.wrap_u) | (wrap_bits(texture.wrap_v) << 2);
             if texture.nearest {
                 flags |= TEXTURE_FLAG_NEAREST;
