@@ -57,6 +57,14 @@ pub enum AssetError {
     Unsupported { path: PathBuf, message: String },
     #[error("{path}: level: {message}")]
     Level { path: PathBuf, message: String },
+    /// A model a level names failed to load: the level, the model's name in it, and why.
+    #[error("{level}: model {model:?}: {source}")]
+    InLevel {
+        level: PathBuf,
+        model: String,
+        #[source]
+        source: Box<AssetError>,
+    },
     /// A loader or a library it calls panicked on this input: a bug in Candela (a check is
     /// missing). The panic was caught so that the engine keeps running.
     #[error(

@@ -93,7 +93,13 @@ pub fn scene_from_level(
     let models = level
         .models
         .par_iter()
-        .map(|entry| super::load_model(root, level_path, &entry.path))
+        .map(|entry| {
+            super::load_model(root, level_path, &entry.path).map_err(|e| AssetError::InLevel {
+                level: level_path.to_path_buf(),
+                model: entry.name.clone(),
+                source: Box::new(e),
+            })
+        })
         .collect::<AssetResult<Vec<_>>>()?;
     for (model, entry) in models.iter().zip(&level.models) {
         for note in &model.notes {

@@ -7,25 +7,10 @@
 //! exact command to run. Uses only `std` so that it builds in seconds on a fresh machine.
 //! Must not: contain engine logic; it only prepares the machine and runs cargo.
 
-mod packages;
+use xtask::{packages, RENDER_ARGS};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
-
-/// Arguments `cargo xtask render` passes to the capture tool (the README's render command).
-pub const RENDER_ARGS: &[&str] = &[
-    "assets/test_scenes/cornell_box.ron",
-    "--tracer",
-    "gpu",
-    "--spp",
-    "64",
-    "--width",
-    "256",
-    "--height",
-    "256",
-    "--out",
-    "out/cornell_box.png",
-];
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
