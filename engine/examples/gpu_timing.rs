@@ -1,68 +1,38 @@
-//! Times GPU pipeline creation and one dispatch on a tiny scene (development aid).
-use candela::assets::*;
-use candela::render::*;
-use glam::*;
+//! Development aid: times GPU pipeline creation and dispatches on a level.
+//! `cargo run --release -p candela --example gpu_timing -- <level.ron> [asset-root] [size] [spp]`
 use std::sync::Arc;
 use std::time::Instant;
+
+use candela::assets::{load_level, AssetRoot};
+use candela::render::*;
+
 fn main() -> anyhow::Result<()> {
-    let mesh = Mesh {
-        name: "tri".into(),
-        positions: vec![
-            Vec3::new(-1.0, -1.0, 0.0),
-            Vec3::new(1.0, -1.0, 0.0),
-            Vec3::new(0.0, 1.0, 0.0),
-        ],
-        normals: None,
-        uvs: None,
-        tangents: None,
-        triangles: vec![[0, 1, 2]],
-        triangle_materials: vec![0],
+    let args: Vec<String> = std::env::args().collect();
+    let level = std::path::PathBuf::from(args.get(1).map(String::as_str).unwrap_or("assets/test_scenes/cornell_box.ron"));
+    let root = match args.get(2) {
+        Some(r) if r != "-" => AssetRoot::new(r)?,
+        _ => AssetRoot::new(level.parent().unwrap_or(std::path::Path::new(".")))?,
     };
-    let model = Model {
-        name: "m".into(),
-        meshes: vec![mesh],
-        materials: vec![Material {
-            emission: Vec3::ONE,
-            ..Default::default()
-        }],
-        textures: vec![],
-        placements: vec![Placement {
-            mesh: 0,
-            model_from_mesh: Mat4::IDENTITY,
-        }],
-        notes: vec![],
-    };
-    let desc = SceneDesc::single(
-        model,
-        CameraDesc {
-            position: [0.0, 0.0, 3.0],
-            look_at: [0.0; 3],
-            up: [0.0, 1.0, 0.0],
-            vertical_fov_deg: 40.0,
-            aperture_radius: 0.0,
-            focus_distance: None,
-        },
-    );
+    let size: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(128);
+    let spp: u32 = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(4);
+    let desc = load_level(&level, &root)?;
     let scene = Arc::new(RenderScene::build(&desc));
     let t = Instant::now();
     let ctx = gpu::GpuContext::headless()?;
-    println!("context {:?}", t.elapsed());
-    let t = Instant::now();
     let mut tracer = gpu::GpuTracer::new(ctx, &scene)?;
-    println!("pipeline {:?}", t.elapsed());
-    for spp in [1, 1, 8] {
-        let u = frame_uniforms(
-            &desc.camera,
-            None,
-            &desc.sky,
-            &FrameSettings::new(64, 64, spp, 0, &desc.render),
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
-        );
-        let t = Instant::now();
+    println!("context + pipeline {:?}", t.elapsed());
+    for round in 0..3 {
+        let mut settings = FrameSettings::new(size, size, if round == 0 { 1 } else { spp }, 0, &desc.render);
+        settings.sample_base = round * 100;
+        let u = frame_uniforms(&desc.camera, desc.sun.as_ref(), &desc.sky, &settings, scene.lights.count, scene.lights.weight_total, scene.tlas_root);
         let s = tracer.render(&u)?;
-        println!("render {spp} spp {:?} rays {}", t.elapsed(), s.rays());
+        println!(
+            "{} spp: {:.3} s, {:.3} M rays/s ({} rays)",
+            settings.spp,
+            s.seconds,
+            s.rays() as f64 / s.seconds / 1e6,
+            s.rays()
+        );
     }
     Ok(())
 }
