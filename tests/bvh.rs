@@ -9,11 +9,11 @@
 
 use std::path::Path;
 
-use candela::assets::{load_model_file, Model, SceneDesc};
-use candela::render::cpu::rng::Rng;
+use candela::assets::{Model, SceneDesc, load_model_file};
 use candela::render::RenderScene;
-use candela::trace::brute::{closest_brute, occluded_brute, BruteInstance, BruteMesh};
+use candela::render::cpu::rng::Rng;
 use candela::trace::Ray;
+use candela::trace::brute::{BruteInstance, BruteMesh, closest_brute, occluded_brute};
 use candela_tests::{camera, external};
 use glam::Vec3;
 
@@ -67,22 +67,50 @@ fn check_model(path: &Path) {
             (None, None) => {}
             (Some(a), Some(b)) => {
                 hits += 1;
-                assert_eq!(a.t.to_bits(), b.t.to_bits(), "{}: ray {i}: t {} vs brute {}", path.display(), a.t, b.t);
+                assert_eq!(
+                    a.t.to_bits(),
+                    b.t.to_bits(),
+                    "{}: ray {i}: t {} vs brute {}",
+                    path.display(),
+                    a.t,
+                    b.t
+                );
                 if (a.instance, a.triangle) != (b.instance, b.triangle) {
                     // A tie in t: both triangles must really be hit at that distance.
                     let mut tie = ray;
                     tie.t_max = a.t.next_up();
-                    assert!(closest_brute(&meshes, &instances, &tie).is_some(), "{}: ray {i}", path.display());
+                    assert!(
+                        closest_brute(&meshes, &instances, &tie).is_some(),
+                        "{}: ray {i}",
+                        path.display()
+                    );
                 } else {
-                    assert_eq!((a.u.to_bits(), a.v.to_bits()), (b.u.to_bits(), b.v.to_bits()), "{}: ray {i}", path.display());
+                    assert_eq!(
+                        (a.u.to_bits(), a.v.to_bits()),
+                        (b.u.to_bits(), b.v.to_bits()),
+                        "{}: ray {i}",
+                        path.display()
+                    );
                 }
             }
-            (a, b) => panic!("{}: ray {i}: BVH {a:?} vs brute force {b:?}", path.display()),
+            (a, b) => panic!(
+                "{}: ray {i}: BVH {a:?} vs brute force {b:?}",
+                path.display()
+            ),
         }
-        assert_eq!(tracer.occluded(&ray), occluded_brute(&meshes, &instances, &ray), "{}: ray {i} occlusion", path.display());
+        assert_eq!(
+            tracer.occluded(&ray),
+            occluded_brute(&meshes, &instances, &ray),
+            "{}: ray {i} occlusion",
+            path.display()
+        );
     }
     eprintln!("{}: {hits} of 10000 rays hit, all agree", path.display());
-    assert!(hits > 1000, "{}: too few rays hit ({hits}) for the check to mean much", path.display());
+    assert!(
+        hits > 1000,
+        "{}: too few rays hit ({hits}) for the check to mean much",
+        path.display()
+    );
 }
 
 #[test]

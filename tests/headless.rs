@@ -28,8 +28,12 @@ fn readme_render_command_writes_a_cornell_box_png_headless() {
         std::env::remove_var("DISPLAY");
         std::env::remove_var("WAYLAND_DISPLAY");
     }
-    let readme = std::fs::read_to_string(candela_tests::repo().join("README.md")).expect("README.md");
-    assert!(readme.contains("cargo xtask render"), "the README's render command is `cargo xtask render`");
+    let readme =
+        std::fs::read_to_string(candela_tests::repo().join("README.md")).expect("README.md");
+    assert!(
+        readme.contains("cargo xtask render"),
+        "the README's render command is `cargo xtask render`"
+    );
     let out = std::env::temp_dir().join(format!("candela_headless_{}", std::process::id()));
     let png = out.join("cornell_box.png");
     let mut args: Vec<String> = vec!["capture".into()];
@@ -46,9 +50,13 @@ fn readme_render_command_writes_a_cornell_box_png_headless() {
         }
     }
     args.push("--quiet".into());
-    let report = capture::run(&capture::CaptureArgs::parse_from(&args)).expect("capture runs headless");
+    let report =
+        capture::run(&capture::CaptureArgs::parse_from(&args)).expect("capture runs headless");
     eprintln!("{report}");
-    assert_eq!(report.tracer, "gpu", "the README renders with the GPU tracer (lavapipe without a GPU)");
+    assert_eq!(
+        report.tracer, "gpu",
+        "the README renders with the GPU tracer (lavapipe without a GPU)"
+    );
     let img = image::open(&png).expect("PNG written").to_rgb8();
     assert_eq!(img.dimensions(), (256, 256));
     let left = mean_rgb(&img, 10, 100, 30, 160);
@@ -56,8 +64,17 @@ fn readme_render_command_writes_a_cornell_box_png_headless() {
     let light = mean_rgb(&img, 110, 32, 146, 40);
     let floor = mean_rgb(&img, 100, 220, 156, 250);
     assert!(left[0] > 2.0 * left[1], "left wall is red: {left:?}");
-    assert!(right[1] > 1.3 * right[0] && right[1] > 2.0 * right[2], "right wall is green: {right:?}");
-    assert!(light.iter().all(|&c| c > 250.0), "the light is saturated: {light:?}");
-    assert!(floor.iter().all(|&c| c > 40.0 && c < 250.0), "the floor is lit: {floor:?}");
+    assert!(
+        right[1] > 1.3 * right[0] && right[1] > 2.0 * right[2],
+        "right wall is green: {right:?}"
+    );
+    assert!(
+        light.iter().all(|&c| c > 250.0),
+        "the light is saturated: {light:?}"
+    );
+    assert!(
+        floor.iter().all(|&c| c > 40.0 && c < 250.0),
+        "the floor is lit: {floor:?}"
+    );
     let _ = std::fs::remove_dir_all(&out);
 }

@@ -3,12 +3,16 @@
 use std::sync::Arc;
 use std::time::Instant;
 
-use candela::assets::{load_level, AssetRoot};
+use candela::assets::{AssetRoot, load_level};
 use candela::render::*;
 
 fn main() -> anyhow::Result<()> {
     let args: Vec<String> = std::env::args().collect();
-    let level = std::path::PathBuf::from(args.get(1).map(String::as_str).unwrap_or("assets/test_scenes/cornell_box.ron"));
+    let level = std::path::PathBuf::from(
+        args.get(1)
+            .map(String::as_str)
+            .unwrap_or("assets/test_scenes/cornell_box.ron"),
+    );
     let root = match args.get(2) {
         Some(r) if r != "-" => AssetRoot::new(r)?,
         _ => AssetRoot::new(level.parent().unwrap_or(std::path::Path::new(".")))?,
@@ -22,9 +26,23 @@ fn main() -> anyhow::Result<()> {
     let mut tracer = gpu::GpuTracer::new(ctx, &scene)?;
     println!("context + pipeline {:?}", t.elapsed());
     for round in 0..3 {
-        let mut settings = FrameSettings::new(size, size, if round == 0 { 1 } else { spp }, 0, &desc.render);
+        let mut settings = FrameSettings::new(
+            size,
+            size,
+            if round == 0 { 1 } else { spp },
+            0,
+            &desc.render,
+        );
         settings.sample_base = round * 100;
-        let u = frame_uniforms(&desc.camera, desc.sun.as_ref(), &desc.sky, &settings, scene.lights.count, scene.lights.weight_total, scene.tlas_root);
+        let u = frame_uniforms(
+            &desc.camera,
+            desc.sun.as_ref(),
+            &desc.sky,
+            &settings,
+            scene.lights.count,
+            scene.lights.weight_total,
+            scene.tlas_root,
+        );
         let s = tracer.render(&u)?;
         println!(
             "{} spp: {:.3} s, {:.3} M rays/s ({} rays)",

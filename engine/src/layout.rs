@@ -305,3 +305,36 @@ pub struct GpuFrameUniforms {
     pub tlas_root: u32,
 }
 const _: () = assert!(size_of::<GpuFrameUniforms>() == 192);
+
+impl GpuFrameUniforms {
+    /// All zeros: for passes that read nothing but `tlas_root` (batch ray tracing).
+    pub fn zeroed_for_batch() -> Self {
+        Self::zeroed()
+    }
+}
+
+/// A ray for batch tracing on the GPU (benchmarks, batched queries): origin and direction in
+/// world space, hits counted for `t_min < t < t_max` in units of `direction`. 32 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuRay {
+    pub origin: [f32; 3],
+    pub t_min: f32,
+    pub direction: [f32; 3],
+    pub t_max: f32,
+}
+const _: () = assert!(size_of::<GpuRay>() == 32);
+
+/// What a batch-traced ray hit: `t` (or `t_max` on a miss), barycentrics, instance and
+/// mesh-local triangle (`INVALID` on a miss). 32 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuHit {
+    pub t: f32,
+    pub u: f32,
+    pub v: f32,
+    pub instance: u32,
+    pub triangle: u32,
+    pub _padding: [u32; 3],
+}
+const _: () = assert!(size_of::<GpuHit>() == 32);

@@ -186,6 +186,7 @@ fn variant(error: &AssetError) -> &'static str {
         AssetError::Unsupported { .. } => "Unsupported",
         AssetError::Level { .. } => "Level",
         AssetError::LoaderPanic { .. } => "LoaderPanic",
+        AssetError::InLevel { .. } => "InLevel",
     }
 }
 

@@ -3,13 +3,14 @@
 
 use std::path::{Path, PathBuf};
 
-use candela::assets::{load_level, AssetError, AssetRoot};
+use candela::assets::{AssetError, AssetRoot, load_level};
 
 struct Dir(PathBuf);
 
 impl Dir {
     fn new(name: &str) -> Self {
-        let path = std::env::temp_dir().join(format!("candela_level_{name}_{}", std::process::id()));
+        let path =
+            std::env::temp_dir().join(format!("candela_level_{name}_{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&path);
         std::fs::create_dir_all(path.join("root/models")).expect("temp dir");
         Dir(path)
@@ -44,8 +45,14 @@ fn error_of(level_path: &Path, root: &AssetRoot) -> AssetError {
         Ok(_) => panic!("{} should be refused", level_path.display()),
         Err(e) => {
             let text = e.to_string();
-            let name = level_path.file_name().and_then(|n| n.to_str()).unwrap_or_default();
-            assert!(text.contains(name), "message does not name the level: {text}");
+            let name = level_path
+                .file_name()
+                .and_then(|n| n.to_str())
+                .unwrap_or_default();
+            assert!(
+                text.contains(name),
+                "message does not name the level: {text}"
+            );
             e
         }
     }
@@ -55,7 +62,14 @@ fn error_of(level_path: &Path, root: &AssetRoot) -> AssetError {
 fn model_path_that_leaves_the_asset_root() {
     let d = Dir::new("outside");
     d.write("outside.obj", TRIANGLE_OBJ);
-    let path = d.write("root/escape.ron", &level(r#"(name: "m", path: "../outside.obj")"#, r#"(model: "m")"#, ""));
+    let path = d.write(
+        "root/escape.ron",
+        &level(
+            r#"(name: "m", path: "../outside.obj")"#,
+            r#"(model: "m")"#,
+            "",
+        ),
+    );
     match error_of(&path, &d.root()) {
         AssetError::InLevel { source, .. } => match *source {
             AssetError::OutsideRoot { requested, .. } => assert_eq!(requested, "../outside.obj"),
@@ -68,7 +82,10 @@ fn model_path_that_leaves_the_asset_root() {
 #[test]
 fn unknown_ron_field() {
     let d = Dir::new("unknown_field");
-    let path = d.write("root/typo.ron", &level("", "", "sky: Constant((0, 0, 0)), bounces: 3"));
+    let path = d.write(
+        "root/typo.ron",
+        &level("", "", "sky: Constant((0, 0, 0)), bounces: 3"),
+    );
     match error_of(&path, &d.root()) {
         AssetError::Level { message, .. } => assert!(message.contains("bounces"), "{message}"),
         other => panic!("expected a level error, got {other}"),
@@ -79,20 +96,33 @@ fn unknown_ron_field() {
 fn malformed_ron() {
     let d = Dir::new("malformed");
     let path = d.write("root/broken.ron", "Level(models: [(name: \"m\", path: ");
-    assert!(matches!(error_of(&path, &d.root()), AssetError::Level { .. }));
+    assert!(matches!(
+        error_of(&path, &d.root()),
+        AssetError::Level { .. }
+    ));
 }
 
 #[test]
 fn missing_level_file() {
     let d = Dir::new("missing");
     let path = d.0.join("root/nothing.ron");
-    assert!(matches!(error_of(&path, &d.root()), AssetError::NotFound { .. }));
+    assert!(matches!(
+        error_of(&path, &d.root()),
+        AssetError::NotFound { .. }
+    ));
 }
 
 #[test]
 fn missing_model_file_names_the_model() {
     let d = Dir::new("missing_model");
-    let path = d.write("root/level.ron", &level(r#"(name: "m", path: "models/gone.obj")"#, r#"(model: "m")"#, ""));
+    let path = d.write(
+        "root/level.ron",
+        &level(
+            r#"(name: "m", path: "models/gone.obj")"#,
+            r#"(model: "m")"#,
+            "",
+        ),
+    );
     let text = error_of(&path, &d.root()).to_string();
     assert!(text.contains("gone.obj"), "{text}");
 }
@@ -101,7 +131,14 @@ fn missing_model_file_names_the_model() {
 fn instance_of_an_undefined_model() {
     let d = Dir::new("undefined_model");
     d.write("root/models/t.obj", TRIANGLE_OBJ);
-    let path = d.write("root/level.ron", &level(r#"(name: "t", path: "models/t.obj")"#, r#"(model: "teapot")"#, ""));
+    let path = d.write(
+        "root/level.ron",
+        &level(
+            r#"(name: "t", path: "models/t.obj")"#,
+            r#"(model: "teapot")"#,
+            "",
+        ),
+    );
     let text = error_of(&path, &d.root()).to_string();
     assert!(text.contains("teapot"), "{text}");
 }
@@ -110,7 +147,14 @@ fn instance_of_an_undefined_model() {
 fn instance_with_an_undefined_material() {
     let d = Dir::new("undefined_material");
     d.write("root/models/t.obj", TRIANGLE_OBJ);
-    let path = d.write("root/level.ron", &level(r#"(name: "t", path: "models/t.obj")"#, r#"(model: "t", material: Some("gold"))"#, ""));
+    let path = d.write(
+        "root/level.ron",
+        &level(
+            r#"(name: "t", path: "models/t.obj")"#,
+            r#"(model: "t", material: Some("gold"))"#,
+            "",
+        ),
+    );
     let text = error_of(&path, &d.root()).to_string();
     assert!(text.contains("gold"), "{text}");
 }
@@ -119,20 +163,38 @@ fn instance_with_an_undefined_material() {
 fn degenerate_transform_and_camera() {
     let d = Dir::new("degenerate");
     d.write("root/models/t.obj", TRIANGLE_OBJ);
-    let flat = d.write("root/flat.ron", &level(r#"(name: "t", path: "models/t.obj")"#, r#"(model: "t", transform: (scale: (1, 0, 1)))"#, ""));
+    let flat = d.write(
+        "root/flat.ron",
+        &level(
+            r#"(name: "t", path: "models/t.obj")"#,
+            r#"(model: "t", transform: (scale: (1, 0, 1)))"#,
+            "",
+        ),
+    );
     assert!(error_of(&flat, &d.root()).to_string().contains("transform"));
     let fov = d.write(
         "root/fov.ron",
         "Level(camera: (position: (0, 0, 3), look_at: (0, 0, 0), vertical_fov_deg: 0))",
     );
-    assert!(error_of(&fov, &d.root()).to_string().contains("vertical_fov_deg"));
+    assert!(
+        error_of(&fov, &d.root())
+            .to_string()
+            .contains("vertical_fov_deg")
+    );
 }
 
 #[test]
 fn a_valid_level_loads() {
     let d = Dir::new("valid");
     d.write("root/models/t.obj", TRIANGLE_OBJ);
-    let path = d.write("root/ok.ron", &level(r#"(name: "t", path: "models/t.obj")"#, r#"(model: "t"), (model: "t", transform: (translation: (2, 0, 0)))"#, ""));
+    let path = d.write(
+        "root/ok.ron",
+        &level(
+            r#"(name: "t", path: "models/t.obj")"#,
+            r#"(model: "t"), (model: "t", transform: (translation: (2, 0, 0)))"#,
+            "",
+        ),
+    );
     let desc = load_level(&path, &d.root()).expect("loads");
     assert_eq!(desc.instances.len(), 2);
     assert_eq!(desc.models[0].meshes[0].triangles.len(), 1);

@@ -136,3 +136,19 @@ struct GpuFrameUniforms {
     sky_kind: u32,
     tlas_root: u32,
 }
+
+struct GpuRay {
+    origin: vec3<f32>,
+    t_min: f32,
+    direction: vec3<f32>,
+    t_max: f32,
+}
+
+struct GpuHit {
+    t: f32,
+    u: f32,
+    v: f32,
+    instance: u32,
+    triangle: u32,
+    _padding: array<u32, 3>,
+}

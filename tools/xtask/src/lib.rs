@@ -17,4 +17,3 @@ pub const RENDER_ARGS: &[&str] = &[
     "--out",
     "out/cornell_box.png",
 ];
-

@@ -7,7 +7,7 @@
 //! exact command to run. Uses only `std` so that it builds in seconds on a fresh machine.
 //! Must not: contain engine logic; it only prepares the machine and runs cargo.
 
-use xtask::{packages, RENDER_ARGS};
+use xtask::{RENDER_ARGS, packages};
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};

@@ -1,6 +1,7 @@
 //! The GPU tracer: wgpu device set-up, the shader registry, scene upload and the tracing pass.
 
 mod context;
+mod ray_batch;
 mod shaders;
 mod tracer;
 

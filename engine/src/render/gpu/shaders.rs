@@ -36,6 +36,9 @@ pub const SHARED: &[ShaderSource] = &[
 /// The path tracing pass (entry point `trace_main`).
 pub const TRACE: ShaderSource = shader!("trace.wgsl");
 
+/// Batch ray tracing (entry point `ray_batch_main`).
+pub const RAY_BATCH: ShaderSource = shader!("ray_batch.wgsl");
+
 /// The shared pieces followed by `pass`, as one WGSL module.
 pub fn compose(pass: ShaderSource) -> String {
     let mut text = String::new();
@@ -55,7 +58,16 @@ mod tests {
     /// WGSL error fails `cargo test` before any GPU is involved.
     #[test]
     fn trace_pass_validates() {
-        let source = compose(TRACE);
+        validates(TRACE);
+    }
+
+    #[test]
+    fn ray_batch_pass_validates() {
+        validates(RAY_BATCH);
+    }
+
+    fn validates(pass: ShaderSource) {
+        let source = compose(pass);
         let module = match naga::front::wgsl::parse_str(&source) {
             Ok(m) => m,
             Err(e) => panic!("{}", e.emit_to_string(&source)),

@@ -23,21 +23,23 @@ const WORKGROUP: u32 = 8;
 
 /// The GPU path tracer.
 pub struct GpuTracer {
-    context: Arc<GpuContext>,
+    pub(super) context: Arc<GpuContext>,
     pipeline: wgpu::ComputePipeline,
-    layout: wgpu::BindGroupLayout,
+    pub(super) layout: wgpu::BindGroupLayout,
     /// Uniforms, then the nine scene buffers, in binding order 0..=9.
-    scene_buffers: Vec<wgpu::Buffer>,
+    pub(super) scene_buffers: Vec<wgpu::Buffer>,
     film: Option<FilmBuffers>,
     samples: u32,
+    /// Created on first use by `trace_rays` (see `ray_batch.rs`).
+    pub(super) ray_batch: Option<super::ray_batch::RayBatchPipeline>,
 }
 
-struct FilmBuffers {
+pub(super) struct FilmBuffers {
     width: u32,
     height: u32,
     film: wgpu::Buffer,
     counters: wgpu::Buffer,
-    bind_group: wgpu::BindGroup,
+    pub(super) bind_group: wgpu::BindGroup,
 }
 
 /// Bytes of `data`, or one zeroed element when it is empty (bindings may not be empty).
@@ -144,10 +146,15 @@ impl GpuTracer {
             scene_buffers,
             film: None,
             samples: 0,
+            ray_batch: None,
         })
     }
 
-    fn film_buffers(&mut self, width: u32, height: u32) -> Result<&FilmBuffers, RenderError> {
+    pub(super) fn film_buffers(
+        &mut self,
+        width: u32,
+        height: u32,
+    ) -> Result<&FilmBuffers, RenderError> {
         let matches = matches!(&self.film, Some(f) if f.width == width && f.height == height);
         if !matches {
             let device = &self.context.device;
@@ -211,8 +218,12 @@ impl GpuTracer {
             .ok_or_else(|| RenderError::Device("film buffers missing".into()))
     }
 
+    pub(super) fn film_buffers_ref(&self) -> Option<&FilmBuffers> {
+        self.film.as_ref()
+    }
+
     /// Copies `buffer` into a mappable buffer and returns its bytes.
-    fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, RenderError> {
+    pub(super) fn read_buffer(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, RenderError> {
         let device = &self.context.device;
         let staging = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),

@@ -1,0 +1,44 @@
+//! `bench`: the measurements behind `docs/PERFORMANCE.md`, each printed as a Markdown table
+//! with the machine it ran on. Speed figures are medians of repeated runs; compare ratios taken
+//! in one run, since this VM drifts between runs.
+//!
+//! * `bench build` — BLAS build time per million triangles, TLAS build time for 10,000 instances.
+//! * `bench rays <level> [--asset-root DIR]` — rays per second of the CPU traversal (1 thread and
+//!   all threads) and of the GPU traversal (lavapipe without a GPU) for camera, shadow and
+//!   diffuse-bounce rays made from the level's camera and lights.
+//! * `bench error` — time for each tracer to reach a fixed relative error against the Cornell
+//!   reference, beside Mitsuba 3's time to the same error from its own reference statistics.
+
+mod build;
+mod error;
+mod machine;
+mod rays;
+
+use clap::{Parser, Subcommand};
+
+#[derive(Parser, Debug)]
+#[command(name = "bench", about = "Candela speed measurements")]
+struct Args {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// BLAS per million triangles and TLAS for 10,000 instances.
+    Build(build::BuildArgs),
+    /// Rays per second per tracer and ray kind on a level.
+    Rays(rays::RaysArgs),
+    /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
+    Error(error::ErrorArgs),
+}
+
+fn main() -> anyhow::Result<()> {
+    env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
+    println!("{}", machine::describe());
+    match Args::parse().command {
+        Command::Build(a) => build::run(&a),
+        Command::Rays(a) => rays::run(&a),
+        Command::Error(a) => error::run(&a),
+    }
+}
