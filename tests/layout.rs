@@ -121,6 +121,8 @@ fn rust_layouts() -> Vec<RustLayout> {
             sky_kind,
             tlas_root
         }),
+        rust_layout!(GpuRay { origin, t_min, direction, t_max }),
+        rust_layout!(GpuHit { t, u, v, instance, triangle, _padding }),
     ]
 }
 
