@@ -18,7 +18,7 @@
 
 use super::STACK_SIZE;
 use super::ray::{ROBUST_FAR, Ray, SlabRay};
-use super::triangle::intersect_lane;
+use super::triangle::{TriRay, intersect_lane};
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 
 /// Closest hit inside one BLAS, in that BLAS's space: `(t, u, v, triangle)`.
@@ -99,12 +99,11 @@ pub(crate) fn closest_blas(
     t_max: &mut f32,
 ) -> Option<BlasHit> {
     let mut best = None;
+    let tri_ray = TriRay::new(ray.origin, ray.direction);
     walk(nodes, ray, t_max, |payload, t_max| {
         if let Some(block) = blocks.get(payload as usize) {
             for lane in 0..4 {
-                if let Some((t, u, v)) =
-                    intersect_lane(block, lane, ray.origin, ray.direction, ray.t_min, *t_max)
-                {
+                if let Some((t, u, v)) = intersect_lane(block, lane, &tri_ray, ray.t_min, *t_max) {
                     *t_max = t;
                     best = Some((t, u, v, block.prim[lane]));
                 }
@@ -118,11 +117,10 @@ pub(crate) fn closest_blas(
 /// Any hit in one BLAS.
 pub(crate) fn occluded_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
     let mut t_max = ray.t_max;
+    let tri_ray = TriRay::new(ray.origin, ray.direction);
     walk(nodes, ray, &mut t_max, |payload, t_max| {
         blocks.get(payload as usize).is_some_and(|block| {
-            (0..4).any(|lane| {
-                intersect_lane(block, lane, ray.origin, ray.direction, ray.t_min, *t_max).is_some()
-            })
+            (0..4).any(|lane| intersect_lane(block, lane, &tri_ray, ray.t_min, *t_max).is_some())
         })
     })
 }

@@ -166,7 +166,11 @@ pub fn rays(rng: &mut Rng, bounds: Aabb, count: usize, zero_components: bool) ->
         let mut direction = (target - origin) * rng.range(0.1, 3.0);
         if zero_components && i % 2 == 0 {
             let axis = (rng.next_u32() % 3) as usize;
-            direction[axis] = if rng.next_u32().is_multiple_of(2) { 0.0 } else { -0.0 };
+            direction[axis] = if rng.next_u32().is_multiple_of(2) {
+                0.0
+            } else {
+                -0.0
+            };
             if i % 6 == 0 {
                 let other = (axis + 1) % 3;
                 direction[other] = 0.0;
