@@ -12,6 +12,17 @@ use glam::{Mat4, Vec3};
 
 const RAYS: usize = 10_000;
 
+#[test]
+fn every_kernel_of_this_cpu_is_tested() {
+    // The CI machines and this one have AVX-512; make sure the SIMD kernels take part.
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx512vl") {
+        use candela::trace::Kernel;
+        assert_eq!(Kernel::available(), [Kernel::Scalar, Kernel::Avx2, Kernel::Avx512]);
+        assert_eq!(Kernel::best(), Kernel::Avx512);
+    }
+}
+
 fn check_mesh(name: &str, mesh: &Mesh, seed: u64, zero_components: bool) -> usize {
     let blas = build_blas(&mesh.positions, &mesh.triangles);
     let mut rng = Rng::new(seed);

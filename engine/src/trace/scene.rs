@@ -137,14 +137,23 @@ impl TraceScene<'_> {
     /// [`Self::closest`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
     pub fn closest_with(&self, kernel: Kernel, ray: &Ray) -> Option<Hit> {
         match kernel.checked() {
-            Kernel::Scalar => closest_scene(ScalarWalker, self, ray),
+            // SAFETY (all SIMD arms): `checked` returned the kernel, so the CPU supports it.
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx512 => unsafe { super::x86::avx512::closest_scene(self, ray) },
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx2 => unsafe { super::x86::avx2::closest_scene(self, ray) },
+            _ => closest_scene(ScalarWalker, self, ray),
         }
     }
 
     /// [`Self::occluded`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
     pub fn occluded_with(&self, kernel: Kernel, ray: &Ray) -> bool {
         match kernel.checked() {
-            Kernel::Scalar => occluded_scene(ScalarWalker, self, ray),
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx512 => unsafe { super::x86::avx512::occluded_scene(self, ray) },
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx2 => unsafe { super::x86::avx2::occluded_scene(self, ray) },
+            _ => occluded_scene(ScalarWalker, self, ray),
         }
     }
 }
@@ -169,7 +178,14 @@ pub fn closest_blas_with(
 ) -> Option<Hit> {
     let mut t_max = ray.t_max;
     let hit = match kernel.checked() {
-        Kernel::Scalar => scalar::closest_blas(nodes, blocks, ray, &mut t_max),
+        // SAFETY (all SIMD arms): `checked` returned the kernel, so the CPU supports it.
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx512 => unsafe {
+            super::x86::avx512::closest_blas(nodes, blocks, ray, &mut t_max)
+        },
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx2 => unsafe { super::x86::avx2::closest_blas(nodes, blocks, ray, &mut t_max) },
+        _ => scalar::closest_blas(nodes, blocks, ray, &mut t_max),
     };
     hit.map(|(t, u, v, triangle)| Hit {
         t,
@@ -188,6 +204,10 @@ pub fn occluded_blas_with(
     ray: &Ray,
 ) -> bool {
     match kernel.checked() {
-        Kernel::Scalar => scalar::occluded_blas(nodes, blocks, ray),
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx512 => unsafe { super::x86::avx512::occluded_blas(nodes, blocks, ray) },
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx2 => unsafe { super::x86::avx2::occluded_blas(nodes, blocks, ray) },
+        _ => scalar::occluded_blas(nodes, blocks, ray),
     }
 }
