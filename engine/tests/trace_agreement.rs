@@ -18,7 +18,10 @@ fn every_kernel_of_this_cpu_is_tested() {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("avx512vl") {
         use candela::trace::Kernel;
-        assert_eq!(Kernel::available(), [Kernel::Scalar, Kernel::Avx2, Kernel::Avx512]);
+        assert_eq!(
+            Kernel::available(),
+            [Kernel::Scalar, Kernel::Avx2, Kernel::Avx512]
+        );
         assert_eq!(Kernel::best(), Kernel::Avx512);
     }
 }

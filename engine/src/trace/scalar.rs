@@ -24,14 +24,20 @@ use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 /// Closest hit inside one BLAS, in that BLAS's space: `(t, u, v, triangle)`.
 pub(crate) type BlasHit = (f32, f32, f32, u32);
 
-/// Walks one tree. `leaf(payload, t_max)` handles a leaf entry, may lower `t_max` (closest hit)
-/// and returns true to stop the walk (any hit). Returns true when a leaf asked to stop.
+/// What a walk does at a leaf entry (a trait rather than a closure so that every kernel can
+/// force it inline into its `#[target_feature]` function).
+pub(crate) trait Leaf {
+    /// Handles leaf `payload`; may lower `t_max` (closest hit); returns true to stop the walk.
+    fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool;
+}
+
+/// Walks one tree; returns true when a leaf asked to stop.
 #[inline(always)]
 pub(crate) fn walk(
     nodes: &[GpuBvh8Node],
     ray: &Ray,
     t_max: &mut f32,
-    mut leaf: impl FnMut(u32, &mut f32) -> bool,
+    leaf: &mut impl Leaf,
 ) -> bool {
     let SlabRay {
         rcp,
@@ -47,7 +53,7 @@ pub(crate) fn walk(
     let mut entry = 0u32; // the root: always an inner node
     loop {
         if entry & LEAF_BIT != 0 {
-            if leaf(entry & !LEAF_BIT, t_max) {
+            if leaf.visit(entry & !LEAF_BIT, t_max) {
                 return true;
             }
         } else if let Some(node) = nodes.get(entry as usize) {
@@ -91,6 +97,46 @@ fn pick(min: f32, max: f32, negative: bool) -> (f32, f32) {
     if negative { (max, min) } else { (min, max) }
 }
 
+/// Leaf visitor: closest hit in a triangle block.
+struct ClosestBlock<'a> {
+    blocks: &'a [GpuTri4],
+    ray: TriRay,
+    t_min: f32,
+    best: Option<BlasHit>,
+}
+
+impl Leaf for ClosestBlock<'_> {
+    #[inline(always)]
+    fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
+        if let Some(block) = self.blocks.get(payload as usize) {
+            for lane in 0..4 {
+                if let Some((t, u, v)) = intersect_lane(block, lane, &self.ray, self.t_min, *t_max)
+                {
+                    *t_max = t;
+                    self.best = Some((t, u, v, block.prim[lane]));
+                }
+            }
+        }
+        false
+    }
+}
+
+/// Leaf visitor: any hit in a triangle block.
+struct AnyBlock<'a> {
+    blocks: &'a [GpuTri4],
+    ray: TriRay,
+    t_min: f32,
+}
+
+impl Leaf for AnyBlock<'_> {
+    #[inline(always)]
+    fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
+        self.blocks.get(payload as usize).is_some_and(|block| {
+            (0..4).any(|lane| intersect_lane(block, lane, &self.ray, self.t_min, *t_max).is_some())
+        })
+    }
+}
+
 /// Closest hit in one BLAS (`nodes`/`blocks` start at the BLAS's first node and block).
 pub(crate) fn closest_blas(
     nodes: &[GpuBvh8Node],
@@ -98,29 +144,22 @@ pub(crate) fn closest_blas(
     ray: &Ray,
     t_max: &mut f32,
 ) -> Option<BlasHit> {
-    let mut best = None;
-    let tri_ray = TriRay::new(ray.origin, ray.direction);
-    walk(nodes, ray, t_max, |payload, t_max| {
-        if let Some(block) = blocks.get(payload as usize) {
-            for lane in 0..4 {
-                if let Some((t, u, v)) = intersect_lane(block, lane, &tri_ray, ray.t_min, *t_max) {
-                    *t_max = t;
-                    best = Some((t, u, v, block.prim[lane]));
-                }
-            }
-        }
-        false
-    });
-    best
+    let mut leaf = ClosestBlock {
+        blocks,
+        ray: TriRay::new(ray.origin, ray.direction),
+        t_min: ray.t_min,
+        best: None,
+    };
+    walk(nodes, ray, t_max, &mut leaf);
+    leaf.best
 }
 
 /// Any hit in one BLAS.
 pub(crate) fn occluded_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
-    let mut t_max = ray.t_max;
-    let tri_ray = TriRay::new(ray.origin, ray.direction);
-    walk(nodes, ray, &mut t_max, |payload, t_max| {
-        blocks.get(payload as usize).is_some_and(|block| {
-            (0..4).any(|lane| intersect_lane(block, lane, &tri_ray, ray.t_min, *t_max).is_some())
-        })
-    })
+    let mut leaf = AnyBlock {
+        blocks,
+        ray: TriRay::new(ray.origin, ray.direction),
+        t_min: ray.t_min,
+    };
+    walk(nodes, ray, &mut { ray.t_max }, &mut leaf)
 }

@@ -20,7 +20,7 @@ use core::mem::{MaybeUninit, offset_of};
 
 use super::STACK_SIZE;
 use super::ray::{ROBUST_FAR, Ray, SlabRay};
-use super::scalar::BlasHit;
+use super::scalar::{BlasHit, Leaf};
 use super::triangle::{DEGENERATE_RATIO, TriRay};
 use crate::layout::{GpuBvh8Node, GpuTri4, LEAF_BIT};
 
@@ -98,7 +98,11 @@ static COMPRESS: [[u32; 8]; 256] = {
     table
 };
 
-/// Walks one tree (see `scalar::walk` for the contract); `ANY` drops the distance check on pop.
+/// Walks one tree (see `scalar::walk` for the contract). Same visiting rule as the scalar walk
+/// except for when far entries are dropped: popping does not compare distances; instead, each
+/// time a leaf lowers `t_max` the stack is compacted once, dropping every entry whose entry
+/// distance lies beyond it (tinybvh does the same). That takes a compare and a branch out of
+/// every pop.
 ///
 /// # Safety
 /// Module contract: AVX2 (and AVX-512 F/VL/BW/DQ when `W512`) must be enabled and supported.
@@ -107,23 +111,25 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
     nodes: &[GpuBvh8Node],
     r: &NodeRay,
     t_max: &mut f32,
-    mut leaf: impl FnMut(u32, &mut f32) -> bool,
+    leaf: &mut impl Leaf,
 ) -> bool {
-    let mut stack_entry = MaybeUninit::<[u32; STACK_SIZE]>::uninit();
-    let mut stack_t = MaybeUninit::<[f32; STACK_SIZE]>::uninit();
+    // STACK_SIZE entries plus room for one 8-lane store past the last one (see `compact`).
+    let mut stack_entry = MaybeUninit::<[u32; STACK_SIZE + 8]>::uninit();
+    let mut stack_t = MaybeUninit::<[f32; STACK_SIZE + 8]>::uninit();
     let stack_entry = stack_entry.as_mut_ptr() as *mut u32;
     let stack_t = stack_t.as_mut_ptr() as *mut f32;
-    let mut sp = 0usize; // entries below sp are initialised
+    let mut sp = 0usize; // entries below sp are initialised; only those are ever read
     let mut entry = 0u32; // the root: always an inner node
     unsafe {
         let robust = _mm256_set1_ps(ROBUST_FAR);
         let reverse = _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0);
+        let mut t_far_limit = _mm256_set1_ps(*t_max);
         loop {
-            if entry & LEAF_BIT != 0 {
-                if leaf(entry & !LEAF_BIT, t_max) {
-                    return true;
-                }
-            } else if let Some(node) = nodes.get(entry as usize) {
+            // Inner nodes until a leaf comes up (or nothing is left).
+            while entry & LEAF_BIT == 0 {
+                let Some(node) = nodes.get(entry as usize) else {
+                    break; // corrupt index: treated as a miss
+                };
                 let base = (node as *const GpuBvh8Node).cast::<u8>();
                 let plane = |offset: usize| _mm256_load_ps(base.add(offset).cast::<f32>());
                 let dist = |offset: usize, origin: __m256, rcp: __m256| {
@@ -136,24 +142,34 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                 let fy = dist(r.far[1], r.far_origin[1], r.rcp[1]);
                 let fz = dist(r.far[2], r.far_origin[2], r.rcp[2]);
                 let t_near = _mm256_max_ps(_mm256_max_ps(nx, ny), _mm256_max_ps(nz, r.t_min));
-                let t_far = _mm256_min_ps(
-                    _mm256_min_ps(fx, fy),
-                    _mm256_min_ps(fz, _mm256_set1_ps(*t_max)),
-                );
+                let t_far = _mm256_min_ps(_mm256_min_ps(fx, fy), _mm256_min_ps(fz, t_far_limit));
                 let t_far = _mm256_mul_ps(t_far, robust);
-                // Rank order, farthest first: lane i holds the slot of rank 7 - i.
+                let hits = if W512 {
+                    u32::from(_mm256_cmp_ps_mask::<_CMP_LE_OQ>(t_near, t_far))
+                } else {
+                    _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(t_near, t_far)) as u32
+                };
+                if hits & hits.wrapping_sub(1) == 0 {
+                    if hits == 0 {
+                        break; // nothing hit: pop
+                    }
+                    // One child hit (the common case low in the tree): descend at once.
+                    entry = node.child[(hits.trailing_zeros() & 7) as usize];
+                    continue;
+                }
+                // Several: rank order, farthest first (lane i holds the slot of rank 7 - i),
+                // compress the hit ones, push all but the nearest, descend into the nearest.
                 let perm = _mm256_load_si256(base.add(offset_of!(GpuBvh8Node, perm)).cast());
                 let order = _mm256_srl_epi32(_mm256_permutevar8x32_epi32(perm, reverse), r.shift);
                 let near_ordered = _mm256_permutevar8x32_ps(t_near, order);
                 let far_ordered = _mm256_permutevar8x32_ps(t_far, order);
                 let child = _mm256_load_si256(base.add(offset_of!(GpuBvh8Node, child)).cast());
                 let child_ordered = _mm256_permutevar8x32_epi32(child, order);
-                let (children, dists, count) = if W512 {
+                let (children, dists) = if W512 {
                     let mask = _mm256_cmp_ps_mask::<_CMP_LE_OQ>(near_ordered, far_ordered);
                     (
                         _mm256_maskz_compress_epi32(mask, child_ordered),
                         _mm256_maskz_compress_ps(mask, near_ordered),
-                        mask.count_ones() as usize,
                     )
                 } else {
                     let hit = _mm256_cmp_ps::<_CMP_LE_OQ>(near_ordered, far_ordered);
@@ -162,7 +178,6 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                     (
                         _mm256_permutevar8x32_epi32(child_ordered, lanes),
                         _mm256_permutevar8x32_ps(near_ordered, lanes),
-                        mask.count_ones() as usize,
                     )
                 };
                 if sp + 8 > STACK_SIZE {
@@ -170,19 +185,92 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                 }
                 _mm256_storeu_si256(stack_entry.add(sp).cast(), children);
                 _mm256_storeu_ps(stack_t.add(sp), dists);
-                sp += count;
+                sp += hits.count_ones() as usize - 1;
+                entry = *stack_entry.add(sp);
             }
-            loop {
-                if sp == 0 {
-                    return false;
+            if entry & LEAF_BIT != 0 {
+                let before = *t_max;
+                if leaf.visit(entry & !LEAF_BIT, t_max) {
+                    return true;
                 }
-                sp -= 1;
-                if ANY || *stack_t.add(sp) <= *t_max * ROBUST_FAR {
-                    entry = *stack_entry.add(sp);
-                    break;
+                if !ANY && *t_max < before {
+                    t_far_limit = _mm256_set1_ps(*t_max);
+                    sp = compact::<W512>(stack_entry, stack_t, sp, *t_max * ROBUST_FAR);
                 }
             }
+            if sp == 0 {
+                return false;
+            }
+            sp -= 1;
+            entry = *stack_entry.add(sp);
         }
+    }
+}
+
+/// Drops the stack entries whose entry distance exceeds `limit`, keeping the order; returns
+/// the new stack height. Reads only the `sp` initialised entries (masked loads for the last,
+/// partial chunk); writes 8-lane vectors at `out <= i`, so never past `sp + 7`.
+///
+/// # Safety
+/// Module contract; `entries` and `dists` hold `sp` initialised values and have room for
+/// `sp + 7` values.
+#[inline(always)]
+unsafe fn compact<const W512: bool>(
+    entries: *mut u32,
+    dists: *mut f32,
+    sp: usize,
+    limit: f32,
+) -> usize {
+    unsafe {
+        let limit8 = _mm256_set1_ps(limit);
+        let mut out = 0usize;
+        let mut i = 0usize;
+        while i < sp {
+            let valid = (1u32 << (sp - i).min(8)) - 1;
+            let (d, e) = if valid == 0xff {
+                (
+                    _mm256_loadu_ps(dists.add(i)),
+                    _mm256_loadu_si256(entries.add(i).cast()),
+                )
+            } else if W512 {
+                (
+                    _mm256_maskz_loadu_ps(valid as u8, dists.add(i)),
+                    _mm256_maskz_loadu_epi32(valid as u8, entries.add(i).cast()),
+                )
+            } else {
+                let lanes = _mm256_cmpgt_epi32(
+                    _mm256_set1_epi32((sp - i) as i32),
+                    _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7),
+                );
+                (
+                    _mm256_maskload_ps(dists.add(i), lanes),
+                    _mm256_maskload_epi32(entries.add(i).cast(), lanes),
+                )
+            };
+            let keep = if W512 {
+                u32::from(_mm256_cmp_ps_mask::<_CMP_LE_OQ>(d, limit8)) & valid
+            } else {
+                _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(d, limit8)) as u32 & valid
+            };
+            let (e, d) = if W512 {
+                (
+                    _mm256_maskz_compress_epi32(keep as u8, e),
+                    _mm256_maskz_compress_ps(keep as u8, d),
+                )
+            } else {
+                let lanes = _mm256_loadu_si256(COMPRESS[keep as usize].as_ptr().cast());
+                (
+                    _mm256_permutevar8x32_epi32(e, lanes),
+                    _mm256_permutevar8x32_ps(d, lanes),
+                )
+            };
+            // out <= i, so these stores never overrun what was read (reads stay ahead).
+            _mm256_storeu_si256(entries.add(out).cast(), e);
+            _mm256_storeu_ps(dists.add(out), d);
+            out += keep.count_ones() as usize;
+            i += 8;
+        }
+        out
     }
 }
 
@@ -256,6 +344,52 @@ unsafe fn block_test(b: &GpuTri4, r: &BlockRay, t_max: f32) -> (u32, __m128, __m
     }
 }
 
+/// Leaf visitor: closest hit in a triangle block.
+struct ClosestBlock<'a> {
+    blocks: &'a [GpuTri4],
+    ray: BlockRay,
+    best: Option<BlasHit>,
+}
+
+impl Leaf for ClosestBlock<'_> {
+    #[inline(always)]
+    fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
+        if let Some(block) = self.blocks.get(payload as usize) {
+            // SAFETY: module contract.
+            let (mask, t, u, v) = unsafe { block_test(block, &self.ray, *t_max) };
+            if mask != 0 {
+                let (t, u, v) = (lanes(t), lanes(u), lanes(v));
+                // The lowest lane among the smallest t, as the scalar loop picks it.
+                let mut lane = mask.trailing_zeros() as usize;
+                for l in lane + 1..4 {
+                    if mask & (1 << l) != 0 && t[l] < t[lane] {
+                        lane = l;
+                    }
+                }
+                *t_max = t[lane];
+                self.best = Some((t[lane], u[lane], v[lane], block.prim[lane]));
+            }
+        }
+        false
+    }
+}
+
+/// Leaf visitor: any hit in a triangle block.
+struct AnyBlock<'a> {
+    blocks: &'a [GpuTri4],
+    ray: BlockRay,
+}
+
+impl Leaf for AnyBlock<'_> {
+    #[inline(always)]
+    fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
+        self.blocks
+            .get(payload as usize)
+            // SAFETY: module contract.
+            .is_some_and(|block| unsafe { block_test(block, &self.ray, *t_max).0 != 0 })
+    }
+}
+
 /// Closest hit in one BLAS.
 ///
 /// # Safety
@@ -268,28 +402,13 @@ pub(super) unsafe fn closest_blas<const W512: bool>(
     t_max: &mut f32,
 ) -> Option<BlasHit> {
     let node_ray = NodeRay::new(ray);
-    let block_ray = BlockRay::new(ray);
-    let mut best = None;
-    let leaf = |payload: u32, t_max: &mut f32| {
-        if let Some(block) = blocks.get(payload as usize) {
-            let (mask, t, u, v) = unsafe { block_test(block, &block_ray, *t_max) };
-            if mask != 0 {
-                let (t, u, v) = (lanes(t), lanes(u), lanes(v));
-                // The lowest lane among the smallest t, as the scalar loop picks it.
-                let mut lane = mask.trailing_zeros() as usize;
-                for l in lane + 1..4 {
-                    if mask & (1 << l) != 0 && t[l] < t[lane] {
-                        lane = l;
-                    }
-                }
-                *t_max = t[lane];
-                best = Some((t[lane], u[lane], v[lane], block.prim[lane]));
-            }
-        }
-        false
+    let mut leaf = ClosestBlock {
+        blocks,
+        ray: BlockRay::new(ray),
+        best: None,
     };
-    unsafe { walk::<W512, false>(nodes, &node_ray, t_max, leaf) };
-    best
+    unsafe { walk::<W512, false>(nodes, &node_ray, t_max, &mut leaf) };
+    leaf.best
 }
 
 /// Any hit in one BLAS.
@@ -303,14 +422,11 @@ pub(super) unsafe fn occluded_blas<const W512: bool>(
     ray: &Ray,
 ) -> bool {
     let node_ray = NodeRay::new(ray);
-    let block_ray = BlockRay::new(ray);
-    let mut t_max = ray.t_max;
-    let leaf = |payload: u32, t_max: &mut f32| {
-        blocks
-            .get(payload as usize)
-            .is_some_and(|block| unsafe { block_test(block, &block_ray, *t_max).0 != 0 })
+    let mut leaf = AnyBlock {
+        blocks,
+        ray: BlockRay::new(ray),
     };
-    unsafe { walk::<W512, true>(nodes, &node_ray, &mut t_max, leaf) }
+    unsafe { walk::<W512, true>(nodes, &node_ray, &mut { ray.t_max }, &mut leaf) }
 }
 
 #[inline(always)]

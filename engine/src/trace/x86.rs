@@ -6,7 +6,7 @@
 //! Must not: be called without that check.
 
 use super::ray::{Hit, Ray};
-use super::scalar::BlasHit;
+use super::scalar::{BlasHit, Leaf};
 use super::scene::{TraceScene, Walker, closest_scene as closest_two_level, occluded_scene};
 use super::simd::{self, NodeRay};
 use crate::layout::{GpuBvh8Node, GpuTri4};
@@ -39,7 +39,7 @@ impl<const W512: bool> Walker for SimdWalker<W512> {
         nodes: &[GpuBvh8Node],
         ray: &Ray,
         t_max: &mut f32,
-        leaf: impl FnMut(u32, &mut f32) -> bool,
+        leaf: &mut impl Leaf,
     ) -> bool {
         let node_ray = NodeRay::new(ray);
         // SAFETY: as above. TLAS walks keep the distance check (closest) or stop at the first

@@ -55,6 +55,37 @@ struct Args {
     /// Only these kinds (comma separated: primary,shadow,bounce).
     #[arg(long, default_value = "primary,shadow,bounce")]
     kinds: String,
+    /// Time with the CPU time of this process's threads (/proc/self/task/*/schedstat)
+    /// instead of wall time: a development aid for comparing variants on a busy machine. The
+    /// peer table always uses wall time.
+    #[arg(long)]
+    cpu_time: bool,
+}
+
+/// Seconds on the CPU summed over this process's threads (Linux schedstat, ns resolution).
+fn process_cpu_seconds() -> f64 {
+    let Ok(tasks) = std::fs::read_dir("/proc/self/task") else {
+        return 0.0;
+    };
+    tasks
+        .filter_map(|t| std::fs::read_to_string(t.ok()?.path().join("schedstat")).ok())
+        .filter_map(|s| s.split_whitespace().next()?.parse::<f64>().ok())
+        .sum::<f64>()
+        * 1e-9
+}
+
+/// A stopwatch over wall time or process CPU time.
+struct Clock(bool);
+
+impl Clock {
+    fn now(&self) -> f64 {
+        if self.0 {
+            process_cpu_seconds()
+        } else {
+            static START: std::sync::OnceLock<Instant> = std::sync::OnceLock::new();
+            START.get_or_init(Instant::now).elapsed().as_secs_f64()
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -180,22 +211,23 @@ fn main() -> Result<()> {
     );
 
     let out = std::io::stdout();
+    let clock = Clock(args.cpu_time);
     for (kind, rays, occlusion) in &sets {
         let run = || pool.install(|| trace(kernel, &blas.nodes, &blas.blocks, rays, *occlusion));
         let check = run();
-        let t0 = Instant::now();
+        let t0 = clock.now();
         run();
-        let calibration = t0.elapsed().as_secs_f64();
+        let calibration = clock.now() - t0;
         let passes = ((args.min_ms * 1e-3 / calibration.max(1e-9)).ceil() as usize).max(1);
         let mut per_pass = Vec::new();
         for _ in 0..args.reps {
-            let t0 = Instant::now();
+            let t0 = clock.now();
             for _ in 0..passes {
                 if run().0 != check.0 {
                     eprintln!("# WARNING: hit count changed between passes");
                 }
             }
-            per_pass.push(t0.elapsed().as_secs_f64() / passes as f64);
+            per_pass.push((clock.now() - t0) / passes as f64);
         }
         let (tmin, tmax) = (
             per_pass.iter().copied().fold(f64::INFINITY, f64::min),
