@@ -34,10 +34,10 @@ const _: () = assert!(7 * (crate::accel::MAX_DEPTH as usize - 1) + 8 + 8 <= STAC
 pub enum Kernel {
     /// One child at a time; every CPU.
     Scalar,
-    /// 8-lane node test with AVX2 (x86-64 with AVX2, POPCNT, BMI1).
+    /// 8-lane node test with AVX2 (x86-64 with AVX2, FMA, POPCNT, BMI1).
     Avx2,
     /// 8-lane node test with AVX-512 mask compares and compress (x86-64 with AVX-512
-    /// F/VL/BW/DQ, AVX2, POPCNT, BMI1).
+    /// F/VL/BW/DQ, AVX2, FMA, POPCNT, BMI1).
     Avx512,
 }
 
@@ -68,6 +68,7 @@ impl Kernel {
             #[cfg(target_arch = "x86_64")]
             Self::Avx2 => {
                 std::arch::is_x86_feature_detected!("avx2")
+                    && std::arch::is_x86_feature_detected!("fma")
                     && std::arch::is_x86_feature_detected!("popcnt")
                     && std::arch::is_x86_feature_detected!("bmi1")
             }

@@ -58,20 +58,33 @@ pub const RCP_MIN_ABS: f32 = 1e-30;
 
 /// What every slab test needs from a ray, computed once per ray (and per instance).
 ///
-/// Per axis, `t = (plane - origin) · rcp`, near planes with `near_origin`, far planes with
-/// `far_origin`. For ordinary components both origins are the ray origin and `rcp = 1 / d`.
-/// A zero component (`|d| < RCP_MIN_ABS`, either sign) would give `0 · inf = NaN` for a ray
-/// lying in a box face, so instead `rcp = ±1/RCP_MIN_ABS` (sign of `d`, `-0.0` negative) and the
-/// two origins are nudged by `δ = |o|·2⁻²⁰ + 1e-20` in opposite directions, so that a box face
-/// exactly at the origin's coordinate counts as inside (distances `≥ δ·1e30 ≥ 1e10` instead of
-/// 0). The slab is then `(-big, +big)` when `min <= o <= max` (a box within δ of the ray
-/// counts as touched, which only costs a visit) and empty otherwise. No NaN, no special case
-/// in the loop.
+/// Per axis and plane, `t = fma(plane, rcp, -origin·rcp)` (one fused multiply-add per plane;
+/// `near_orcp` for near planes, `far_orcp` for far planes). A slot is hit when
+/// `max(t_near_xyz, t_min) <= far_limit(min(t_far_xyz, t_max))` with
+/// `far_limit(t) = fma(t, ROBUST_FAR, margin)`.
+///
+/// Robustness: the fused form rounds `origin·rcp` (an absolute error of at most
+/// `u·|origin·rcp|`, u = 2⁻²⁴) and the result (relative u); `rcp` itself is rounded (relative u).
+/// `margin = 2⁻²⁰ · max |origin·rcp|` over the non-zero axes and `ROBUST_FAR = 1 + 2⁻²¹` cover
+/// both with room to spare, so a box that the exact ray touches within `[t_min, t_max]` is
+/// never rejected (after Ize 2013, "Robust BVH Ray Traversal", extended for the absolute term).
+///
+/// Zero direction components (`|d| < RCP_MIN_ABS`, either sign) would give `0 · inf = NaN` for a
+/// ray lying in a box face. Instead `rcp = ±1/RCP_MIN_ABS` (sign of `d`, `-0.0` negative) and the
+/// origin is nudged by `δ = |o|·2⁻²⁰ + 1e-20` towards the far side for near planes and towards
+/// the near side for far planes, so a face exactly at the origin's coordinate counts as inside
+/// (`|t| >= δ·1e30`, far above the rounding of `o·1e30`). The slab is then `(-big, +big)` when
+/// `min <= o <= max` (a box within δ of the ray counts as touched, which only costs a visit) and
+/// empty otherwise. No NaN, no special case in the loop.
 #[derive(Clone, Copy, Debug)]
 pub struct SlabRay {
     pub rcp: Vec3,
-    pub near_origin: Vec3,
-    pub far_origin: Vec3,
+    /// `near_origin · rcp` (rounded), subtracted from `near_plane · rcp` in the fused form.
+    pub near_orcp: Vec3,
+    /// `far_origin · rcp` (rounded).
+    pub far_orcp: Vec3,
+    /// Absolute widening of the far side (see above), ≥ 0.
+    pub margin: f32,
     /// Bit 0/1/2 set when the x/y/z direction has its sign bit set (`-0.0` included).
     pub octant: u32,
 }
@@ -81,23 +94,38 @@ impl SlabRay {
     pub fn new(origin: Vec3, direction: Vec3) -> Self {
         let mut s = Self {
             rcp: Vec3::ZERO,
-            near_origin: origin,
-            far_origin: origin,
+            near_orcp: Vec3::ZERO,
+            far_orcp: Vec3::ZERO,
+            margin: 0.0,
             octant: octant(direction),
         };
+        let mut largest = 0.0f32;
         for axis in 0..3 {
             let (o, d) = (origin[axis], direction[axis]);
             if d.abs() < RCP_MIN_ABS {
                 let sign = 1.0f32.copysign(d);
                 let delta = o.abs() * (1.0 / 1_048_576.0) + 1e-20;
-                s.rcp[axis] = sign * (1.0 / RCP_MIN_ABS);
-                s.near_origin[axis] = o + sign * delta;
-                s.far_origin[axis] = o - sign * delta;
+                let rcp = sign * (1.0 / RCP_MIN_ABS);
+                s.rcp[axis] = rcp;
+                s.near_orcp[axis] = (o + sign * delta) * rcp;
+                s.far_orcp[axis] = (o - sign * delta) * rcp;
             } else {
-                s.rcp[axis] = 1.0 / d;
+                let rcp = 1.0 / d;
+                s.rcp[axis] = rcp;
+                s.near_orcp[axis] = o * rcp;
+                s.far_orcp[axis] = o * rcp;
+                largest = largest.max((o * rcp).abs());
             }
         }
+        s.margin = largest * (1.0 / 1_048_576.0);
         s
+    }
+
+    /// The widened far bound `fma(t, ROBUST_FAR, margin)` that slab tests and stack culling
+    /// compare entry distances against.
+    #[inline(always)]
+    pub fn far_limit(&self, t: f32) -> f32 {
+        t.mul_add(ROBUST_FAR, self.margin)
     }
 }
 
@@ -110,9 +138,7 @@ pub fn octant(d: Vec3) -> u32 {
         | u32::from(d.z.is_sign_negative()) << 2
 }
 
-/// Slab intervals are widened by this factor on the far side (`t_far · ROBUST_FAR`), so rounding
-/// in `(plane - origin) · rcp` never rejects a box that the exact ray touches (Ize 2013, "Robust
-/// BVH Ray Traversal": 1 + 2γ₃ with γₙ = n·2⁻²⁴/(1 - n·2⁻²⁴); this is a little larger).
+/// Relative widening of the far side of slab intervals (see [`SlabRay`]): 1 + 2⁻²¹.
 pub const ROBUST_FAR: f32 = 1.0 + 4.0 * f32::EPSILON;
 
 /// The ray in an instance's object space: `object_from_world` applied to the origin (as a point)
@@ -144,16 +170,21 @@ mod tests {
         let s = SlabRay::new(Vec3::new(2.0, 0.0, -3.0), Vec3::new(0.0, -0.0, 4.0));
         assert_eq!(s.octant, 0b010);
         assert!(s.rcp.x > 1e29 && s.rcp.y < -1e29 && s.rcp.z == 0.25);
-        assert!(s.near_origin.x > 2.0 && s.far_origin.x < 2.0);
-        assert!(s.near_origin.y < 0.0 && s.far_origin.y > 0.0);
-        assert_eq!((s.near_origin.z, s.far_origin.z), (-3.0, -3.0));
-        // A box face exactly at the origin's x: inside, with finite distances, never NaN.
-        for plane in [f32::INFINITY, f32::NEG_INFINITY, 2.0, 5.0] {
-            let near = (plane - s.near_origin.x) * s.rcp.x;
-            let far = (plane - s.far_origin.x) * s.rcp.x;
-            assert!(!near.is_nan() && !far.is_nan());
+        assert_eq!((s.near_orcp.z, s.far_orcp.z), (-0.75, -0.75));
+        assert_eq!(s.margin, 0.75 / 1_048_576.0);
+        // A box face exactly at the origin's x or y: inside, finite distances, never NaN.
+        for plane in [f32::INFINITY, f32::NEG_INFINITY, 2.0, 5.0, 0.0] {
+            for axis in 0..2 {
+                let near = plane.mul_add(s.rcp[axis], -s.near_orcp[axis]);
+                let far = plane.mul_add(s.rcp[axis], -s.far_orcp[axis]);
+                assert!(!near.is_nan() && !far.is_nan());
+            }
         }
-        assert!((2.0 - s.far_origin.x) * s.rcp.x >= 1e10);
-        assert!((2.0 - s.near_origin.x) * s.rcp.x <= -1e10);
+        // x: positive zero, face at x = 2 as min (near) and as max (far) plane.
+        assert!(2.0f32.mul_add(s.rcp.x, -s.near_orcp.x) <= -1e10);
+        assert!(2.0f32.mul_add(s.rcp.x, -s.far_orcp.x) >= 1e10);
+        // y: negative zero, near planes are max planes: face at y = 0.
+        assert!(0.0f32.mul_add(s.rcp.y, -s.near_orcp.y) <= -1e10);
+        assert!(0.0f32.mul_add(s.rcp.y, -s.far_orcp.y) >= 1e10);
     }
 }

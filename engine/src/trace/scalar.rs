@@ -5,19 +5,19 @@
 //! Output: closest hit or any hit. Any thread; reads only. Must not: allocate.
 //!
 //! Algorithm per 8-wide node, for a ray of octant `o` (sign bits of the direction):
-//! 1. for each slot, slab distances `(plane - origin) · rcp` ([`SlabRay`]: safe reciprocal,
-//!    no NaN) with the near plane read from `min` where the direction component is positive
-//!    and from `max` where it is negative (empty slots, `min = +inf, max = -inf`, then never
-//!    pass);
+//! 1. for each slot, slab distances `fma(plane, rcp, -origin·rcp)` ([`SlabRay`]: safe
+//!    reciprocal, no NaN) with the near plane read from `min` where the direction component is
+//!    positive and from `max` where it is negative (empty slots, `min = +inf, max = -inf`, then
+//!    never pass);
 //! 2. `t_near = max(near_x, near_y, near_z, t_min)`, `t_far = min(far_x, far_y, far_z, t_max)`,
-//!    hit when `t_near <= t_far · ROBUST_FAR`;
+//!    hit when `t_near <= fma(t_far, ROBUST_FAR, margin)` (conservative, see [`SlabRay`]);
 //! 3. visit slots in the order `perm[rank] >> 3o & 7` for rank 7 down to 0 and push the hit
 //!    children with their `t_near`, so the front-most child is on top of the stack;
 //! 4. pop; skip entries whose `t_near` lies beyond the current closest hit; a leaf entry
 //!    (`LEAF_BIT`) is a triangle block (BLAS) or an instance (TLAS).
 
 use super::STACK_SIZE;
-use super::ray::{ROBUST_FAR, Ray, SlabRay};
+use super::ray::{Ray, SlabRay};
 use super::triangle::{TriRay, intersect_lane};
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 
@@ -39,12 +39,14 @@ pub(crate) fn walk(
     t_max: &mut f32,
     leaf: &mut impl Leaf,
 ) -> bool {
+    let slab = SlabRay::new(ray.origin, ray.direction);
     let SlabRay {
         rcp,
-        near_origin: on,
-        far_origin: of,
+        near_orcp: on,
+        far_orcp: of,
         octant,
-    } = SlabRay::new(ray.origin, ray.direction);
+        ..
+    } = slab;
     let shift = 3 * octant;
     let negative = [octant & 1 != 0, octant & 2 != 0, octant & 4 != 0];
     let mut stack_entry = [0u32; STACK_SIZE];
@@ -62,16 +64,18 @@ pub(crate) fn walk(
                 let (near_x, far_x) = pick(node.min_x[slot], node.max_x[slot], negative[0]);
                 let (near_y, far_y) = pick(node.min_y[slot], node.max_y[slot], negative[1]);
                 let (near_z, far_z) = pick(node.min_z[slot], node.max_z[slot], negative[2]);
-                let t_near = ((near_x - on.x) * rcp.x)
-                    .max((near_y - on.y) * rcp.y)
-                    .max((near_z - on.z) * rcp.z)
+                let t_near = near_x
+                    .mul_add(rcp.x, -on.x)
+                    .max(near_y.mul_add(rcp.y, -on.y))
+                    .max(near_z.mul_add(rcp.z, -on.z))
                     .max(ray.t_min);
-                let t_far = ((far_x - of.x) * rcp.x)
-                    .min((far_y - of.y) * rcp.y)
-                    .min((far_z - of.z) * rcp.z)
+                let t_far = far_x
+                    .mul_add(rcp.x, -of.x)
+                    .min(far_y.mul_add(rcp.y, -of.y))
+                    .min(far_z.mul_add(rcp.z, -of.z))
                     .min(*t_max);
                 let child = node.child[slot];
-                if t_near <= t_far * ROBUST_FAR && child != INVALID && sp < STACK_SIZE {
+                if t_near <= slab.far_limit(t_far) && child != INVALID && sp < STACK_SIZE {
                     stack_entry[sp] = child;
                     stack_t[sp] = t_near;
                     sp += 1;
@@ -83,7 +87,7 @@ pub(crate) fn walk(
                 return false;
             }
             sp -= 1;
-            if stack_t[sp] <= *t_max * ROBUST_FAR {
+            if stack_t[sp] <= slab.far_limit(*t_max) {
                 entry = stack_entry[sp];
                 break;
             }

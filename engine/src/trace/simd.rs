@@ -29,10 +29,13 @@ pub(super) struct NodeRay {
     /// Byte offsets of the near-plane / far-plane arrays per axis within a node.
     near: [usize; 3],
     far: [usize; 3],
-    near_origin: [__m256; 3],
-    far_origin: [__m256; 3],
+    near_orcp: [__m256; 3],
+    far_orcp: [__m256; 3],
     rcp: [__m256; 3],
     t_min: __m256,
+    margin: __m256,
+    /// The scalar form, for stack culling.
+    slab: SlabRay,
     /// `3 · octant`, the right shift that brings the octant's 3-bit field of `perm` down.
     shift: __m128i,
 }
@@ -70,10 +73,12 @@ impl NodeRay {
             Self {
                 near,
                 far,
-                near_origin: s.near_origin.to_array().map(|v| _mm256_set1_ps(v)),
-                far_origin: s.far_origin.to_array().map(|v| _mm256_set1_ps(v)),
+                near_orcp: s.near_orcp.to_array().map(|v| _mm256_set1_ps(v)),
+                far_orcp: s.far_orcp.to_array().map(|v| _mm256_set1_ps(v)),
                 rcp: s.rcp.to_array().map(|v| _mm256_set1_ps(v)),
                 t_min: _mm256_set1_ps(ray.t_min),
+                margin: _mm256_set1_ps(s.margin),
+                slab: s,
                 shift: _mm_cvtsi32_si128(3 * s.octant as i32),
             }
         }
@@ -132,18 +137,18 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                 };
                 let base = (node as *const GpuBvh8Node).cast::<u8>();
                 let plane = |offset: usize| _mm256_load_ps(base.add(offset).cast::<f32>());
-                let dist = |offset: usize, origin: __m256, rcp: __m256| {
-                    _mm256_mul_ps(_mm256_sub_ps(plane(offset), origin), rcp)
+                let dist = |offset: usize, orcp: __m256, rcp: __m256| {
+                    _mm256_fmsub_ps(plane(offset), rcp, orcp)
                 };
-                let nx = dist(r.near[0], r.near_origin[0], r.rcp[0]);
-                let ny = dist(r.near[1], r.near_origin[1], r.rcp[1]);
-                let nz = dist(r.near[2], r.near_origin[2], r.rcp[2]);
-                let fx = dist(r.far[0], r.far_origin[0], r.rcp[0]);
-                let fy = dist(r.far[1], r.far_origin[1], r.rcp[1]);
-                let fz = dist(r.far[2], r.far_origin[2], r.rcp[2]);
+                let nx = dist(r.near[0], r.near_orcp[0], r.rcp[0]);
+                let ny = dist(r.near[1], r.near_orcp[1], r.rcp[1]);
+                let nz = dist(r.near[2], r.near_orcp[2], r.rcp[2]);
+                let fx = dist(r.far[0], r.far_orcp[0], r.rcp[0]);
+                let fy = dist(r.far[1], r.far_orcp[1], r.rcp[1]);
+                let fz = dist(r.far[2], r.far_orcp[2], r.rcp[2]);
                 let t_near = _mm256_max_ps(_mm256_max_ps(nx, ny), _mm256_max_ps(nz, r.t_min));
                 let t_far = _mm256_min_ps(_mm256_min_ps(fx, fy), _mm256_min_ps(fz, t_far_limit));
-                let t_far = _mm256_mul_ps(t_far, robust);
+                let t_far = _mm256_fmadd_ps(t_far, robust, r.margin);
                 let hits = if W512 {
                     u32::from(_mm256_cmp_ps_mask::<_CMP_LE_OQ>(t_near, t_far))
                 } else {
@@ -195,7 +200,7 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                 }
                 if !ANY && *t_max < before {
                     t_far_limit = _mm256_set1_ps(*t_max);
-                    sp = compact::<W512>(stack_entry, stack_t, sp, *t_max * ROBUST_FAR);
+                    sp = compact::<W512>(stack_entry, stack_t, sp, r.slab.far_limit(*t_max));
                 }
             }
             if sp == 0 {

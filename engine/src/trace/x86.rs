@@ -93,7 +93,7 @@ macro_rules! kernel {
     };
 }
 
-kernel!(avx2, "avx2,popcnt,bmi1", false);
+kernel!(avx2, "avx2,fma,popcnt,bmi1", false);
 kernel!(
     avx512,
     "avx512f,avx512vl,avx512bw,avx512dq,avx2,popcnt,bmi1",
