@@ -15,7 +15,7 @@ use obvhs::{aabb::Aabb as ObAabb, triangle::Triangle};
 
 use super::MAX_DEPTH;
 use super::bounds::Aabb;
-use super::bvh2::{BuildQuality, build_balanced, build_ploc};
+use super::bvh2::{BuildQuality, build_balanced, build_bvh2};
 use super::collapse::{Costs, Wide, collapse};
 use crate::layout::{GpuBvh8Node, GpuTri4};
 
@@ -118,7 +118,7 @@ pub(crate) fn collapse_bounded(
     quality: BuildQuality,
     costs: Costs,
 ) -> Wide {
-    let wide = collapse(&build_ploc(boxes, triangles, quality), costs);
+    let wide = collapse(&build_bvh2(boxes, triangles, quality), costs);
     if wide.depth <= MAX_DEPTH {
         return wide;
     }

@@ -96,6 +96,7 @@ enum Quality {
     Medium,
     Slow,
     VerySlow,
+    BinnedSah,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -157,6 +158,7 @@ fn main() -> Result<()> {
         Quality::Medium => BuildQuality::Medium,
         Quality::Slow => BuildQuality::Slow,
         Quality::VerySlow => BuildQuality::VerySlow,
+        Quality::BinnedSah => BuildQuality::BinnedSah,
     };
     let kernel = match args.kernel {
         None => Kernel::best(),
