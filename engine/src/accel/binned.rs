@@ -92,7 +92,11 @@ fn best_split(
         for b in (1..BINS).rev() {
             acc = acc.union(&bin_box[b]);
             count += bin_count[b];
-            right_cost[b] = if count > 0 { acc.half_area() * count as f32 } else { 0.0 };
+            right_cost[b] = if count > 0 {
+                acc.half_area() * count as f32
+            } else {
+                0.0
+            };
         }
         let (mut acc, mut count) = (ObAabb::empty(), 0u32);
         for b in 1..BINS {
@@ -140,7 +144,10 @@ mod tests {
                 ObAabb::new(p, p + Vec3A::splat(0.1))
             })
             .collect();
-        boxes.extend(std::iter::repeat_n(ObAabb::new(Vec3A::ZERO, Vec3A::ONE), 300));
+        boxes.extend(std::iter::repeat_n(
+            ObAabb::new(Vec3A::ZERO, Vec3A::ONE),
+            300,
+        ));
         let bvh = build_binned(&boxes);
         let mut seen = vec![0u32; boxes.len()];
         let mut stack = vec![0usize];

@@ -136,6 +136,9 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                     break; // corrupt index: treated as a miss
                 };
                 let base = (node as *const GpuBvh8Node).cast::<u8>();
+                // The child indices sit in the node's last cache line, which the slab test does
+                // not read: request it now so it has arrived when the next index is known.
+                _mm_prefetch::<_MM_HINT_T0>(base.add(offset_of!(GpuBvh8Node, child)).cast());
                 let plane = |offset: usize| _mm256_load_ps(base.add(offset).cast::<f32>());
                 let dist = |offset: usize, orcp: __m256, rcp: __m256| {
                     _mm256_fmsub_ps(plane(offset), rcp, orcp)
