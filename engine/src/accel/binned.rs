@@ -74,7 +74,7 @@ fn best_split(
     let extent = centroid_bounds.diagonal();
     let mut best = (f32::INFINITY, 0usize, 0usize); // cost, axis, boundary
     for axis in 0..3 {
-        if !(extent[axis] > 0.0) {
+        if extent[axis].partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             continue;
         }
         let scale = BINS as f32 / extent[axis];
