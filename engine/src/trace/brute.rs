@@ -30,6 +30,11 @@ pub struct BruteInstance {
 /// Closest hit over all triangles of one mesh in its own space (`instance` = `INVALID`).
 /// Triangles with an out-of-range index or a non-finite vertex are skipped, as the builder does.
 pub fn closest_brute_mesh(mesh: &BruteMesh, ray: &Ray) -> Option<Hit> {
+    super::scalar::with_fma(|| brute_mesh(mesh, ray))
+}
+
+#[inline(always)]
+fn brute_mesh(mesh: &BruteMesh, ray: &Ray) -> Option<Hit> {
     let mut best: Option<Hit> = None;
     let tri_ray = TriRay::new(ray.origin, ray.direction);
     for (index, t) in mesh.triangles.iter().enumerate() {

@@ -21,6 +21,25 @@ use super::ray::{Ray, SlabRay};
 use super::triangle::{TriRay, intersect_lane};
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 
+/// Runs `f` inside a function compiled with FMA when this x86-64 CPU has it, so that the
+/// `f32::mul_add` calls of the reference code become single instructions instead of libm calls.
+/// Fused multiply-adds are exactly rounded either way: the results are identical.
+#[inline(always)]
+pub(crate) fn with_fma<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("fma") {
+        // SAFETY: the CPU supports FMA.
+        return unsafe { call_with_fma(f) };
+    }
+    f()
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "fma")]
+unsafe fn call_with_fma<R>(f: impl FnOnce() -> R) -> R {
+    f()
+}
+
 /// Closest hit inside one BLAS, in that BLAS's space: `(t, u, v, triangle)`.
 pub(crate) type BlasHit = (f32, f32, f32, u32);
 
@@ -142,6 +161,7 @@ impl Leaf for AnyBlock<'_> {
 }
 
 /// Closest hit in one BLAS (`nodes`/`blocks` start at the BLAS's first node and block).
+#[inline(always)]
 pub(crate) fn closest_blas(
     nodes: &[GpuBvh8Node],
     blocks: &[GpuTri4],
@@ -159,6 +179,7 @@ pub(crate) fn closest_blas(
 }
 
 /// Any hit in one BLAS.
+#[inline(always)]
 pub(crate) fn occluded_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
     let mut leaf = AnyBlock {
         blocks,

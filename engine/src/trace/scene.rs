@@ -172,7 +172,7 @@ impl TraceScene<'_> {
             Kernel::Avx512 => unsafe { super::x86::avx512::closest_scene(self, ray) },
             #[cfg(target_arch = "x86_64")]
             Kernel::Avx2 => unsafe { super::x86::avx2::closest_scene(self, ray) },
-            _ => closest_scene(ScalarWalker, self, ray),
+            _ => scalar::with_fma(|| closest_scene(ScalarWalker, self, ray)),
         }
     }
 
@@ -183,7 +183,7 @@ impl TraceScene<'_> {
             Kernel::Avx512 => unsafe { super::x86::avx512::occluded_scene(self, ray) },
             #[cfg(target_arch = "x86_64")]
             Kernel::Avx2 => unsafe { super::x86::avx2::occluded_scene(self, ray) },
-            _ => occluded_scene(ScalarWalker, self, ray),
+            _ => scalar::with_fma(|| occluded_scene(ScalarWalker, self, ray)),
         }
     }
 }
@@ -215,7 +215,7 @@ pub fn closest_blas_with(
         },
         #[cfg(target_arch = "x86_64")]
         Kernel::Avx2 => unsafe { super::x86::avx2::closest_blas(nodes, blocks, ray, &mut t_max) },
-        _ => scalar::closest_blas(nodes, blocks, ray, &mut t_max),
+        _ => scalar::with_fma(|| scalar::closest_blas(nodes, blocks, ray, &mut t_max)),
     };
     hit.map(|(t, u, v, triangle)| Hit {
         t,
@@ -238,6 +238,6 @@ pub fn occluded_blas_with(
         Kernel::Avx512 => unsafe { super::x86::avx512::occluded_blas(nodes, blocks, ray) },
         #[cfg(target_arch = "x86_64")]
         Kernel::Avx2 => unsafe { super::x86::avx2::occluded_blas(nodes, blocks, ray) },
-        _ => scalar::occluded_blas(nodes, blocks, ray),
+        _ => scalar::with_fma(|| scalar::occluded_blas(nodes, blocks, ray)),
     }
 }

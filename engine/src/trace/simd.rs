@@ -21,7 +21,7 @@ use core::mem::{MaybeUninit, offset_of};
 use super::STACK_SIZE;
 use super::ray::{ROBUST_FAR, Ray, SlabRay};
 use super::scalar::{BlasHit, Leaf};
-use super::triangle::{DEGENERATE_RATIO, TriRay};
+use super::triangle::{DEGENERATE_RATIO, EDGE_SLACK, TriRay};
 use crate::layout::{GpuBvh8Node, GpuTri4, LEAF_BIT};
 
 /// Per-ray constants of the 8-lane slab test.
@@ -318,34 +318,37 @@ unsafe fn block_test(b: &GpuTri4, r: &BlockRay, t_max: f32) -> (u32, __m128, __m
         let row = |offset: usize| _mm_load_ps(base.add(offset).cast::<f32>());
         let (sx, sy, sz) = (r.shear[0], r.shear[1], r.shear[2]);
         let (sub, mul) = (|a, b| _mm_sub_ps(a, b), |a, b| _mm_mul_ps(a, b));
+        let fnm = |a, b, c| _mm_fnmadd_ps(a, b, c);
         let a0 = sub(row(r.row[0]), r.origin[0]);
         let a1 = sub(row(r.row[1]), r.origin[1]);
         let a2 = sub(row(r.row[2]), r.origin[2]);
         let e1z = row(48 + r.row[2]);
         let e2z = row(96 + r.row[2]);
-        let ax = sub(a0, mul(sx, a2));
-        let ay = sub(a1, mul(sy, a2));
-        let e1x = sub(row(48 + r.row[0]), mul(sx, e1z));
-        let e1y = sub(row(48 + r.row[1]), mul(sy, e1z));
-        let e2x = sub(row(96 + r.row[0]), mul(sx, e2z));
-        let e2y = sub(row(96 + r.row[1]), mul(sy, e2z));
-        let w1 = sub(mul(ax, e2y), mul(ay, e2x));
-        let w2 = sub(mul(e1x, ay), mul(e1y, ax));
-        let p1 = mul(e2x, e1y);
+        let ax = fnm(sx, a2, a0);
+        let ay = fnm(sy, a2, a1);
+        let e1x = fnm(sx, e1z, row(48 + r.row[0]));
+        let e1y = fnm(sy, e1z, row(48 + r.row[1]));
+        let e2x = fnm(sx, e2z, row(96 + r.row[0]));
+        let e2y = fnm(sy, e2z, row(96 + r.row[1]));
+        let w1 = _mm_fmsub_ps(ax, e2y, mul(ay, e2x));
+        let w2 = _mm_fmsub_ps(e1x, ay, mul(e1y, ax));
         let p2 = mul(e2y, e1x);
-        let det = sub(p1, p2);
+        let det = _mm_fmsub_ps(e2x, e1y, p2);
         let sign = _mm_set1_ps(-0.0);
         let abs = |v| _mm_andnot_ps(sign, v);
-        let bound = mul(_mm_add_ps(abs(p1), abs(p2)), _mm_set1_ps(DEGENERATE_RATIO));
+        let bound = mul(abs(p2), _mm_set1_ps(DEGENERATE_RATIO));
         let inv_det = _mm_div_ps(_mm_set1_ps(1.0), det);
         let u = mul(w1, inv_det);
         let v = mul(w2, inv_det);
-        let t = mul(_mm_add_ps(_mm_add_ps(a2, mul(u, e1z)), mul(v, e2z)), sz);
-        let zero = _mm_setzero_ps();
+        let t = mul(_mm_fmadd_ps(v, e2z, _mm_fmadd_ps(u, e1z, a2)), sz);
         let mut ok = _mm_cmpgt_ps(abs(det), bound);
-        ok = _mm_and_ps(ok, _mm_cmpge_ps(u, zero));
-        ok = _mm_and_ps(ok, _mm_cmpge_ps(v, zero));
-        ok = _mm_and_ps(ok, _mm_cmple_ps(_mm_add_ps(u, v), _mm_set1_ps(1.0)));
+        let slack = _mm_set1_ps(-EDGE_SLACK);
+        ok = _mm_and_ps(ok, _mm_cmpge_ps(u, slack));
+        ok = _mm_and_ps(ok, _mm_cmpge_ps(v, slack));
+        ok = _mm_and_ps(
+            ok,
+            _mm_cmple_ps(_mm_add_ps(u, v), _mm_set1_ps(1.0 + EDGE_SLACK)),
+        );
         ok = _mm_and_ps(ok, _mm_cmpgt_ps(t, r.t_min));
         ok = _mm_and_ps(ok, _mm_cmplt_ps(t, _mm_set1_ps(t_max)));
         (_mm_movemask_ps(ok) as u32, t, u, v)
