@@ -5,12 +5,12 @@
 //! Output: closest hit or any hit. Any thread; reads only. Must not: allocate.
 //!
 //! Algorithm per 8-wide node, for a ray of octant `o` (sign bits of the direction):
-//! 1. for each slot, slab distances `fma(plane, rcp, -origin·rcp)` ([`SlabRay`]: safe
-//!    reciprocal, no NaN) with the near plane read from `min` where the direction component is
-//!    positive and from `max` where it is negative (empty slots, `min = +inf, max = -inf`, then
-//!    never pass);
-//! 2. `t_near = max(near_x, near_y, near_z, t_min)`, `t_far = min(far_x, far_y, far_z, t_max)`,
-//!    hit when `t_near <= fma(t_far, ROBUST_FAR, margin)` (conservative, see [`SlabRay`]);
+//! 1. for each slot, slab distances by one fused multiply-add per plane ([`SlabRay`]: safe
+//!    reciprocal, no NaN, far side widened) with the near plane read from `min` where the
+//!    direction component is positive and from `max` where it is negative (empty slots,
+//!    `min = +inf, max = -inf`, then never pass);
+//! 2. `t_near = max(near_x, near_y, near_z, t_min)`, `t_far = min(far_x, far_y, far_z,
+//!    far_limit(t_max))`, hit when `t_near <= t_far` (conservative, see [`SlabRay`]);
 //! 3. visit slots in the order `perm[rank] >> 3o & 7` for rank 7 down to 0 and push the hit
 //!    children with their `t_near`, so the front-most child is on top of the stack;
 //! 4. pop; skip entries whose `t_near` lies beyond the current closest hit; a leaf entry
@@ -62,7 +62,8 @@ pub(crate) fn walk(
     let SlabRay {
         rcp,
         near_orcp: on,
-        far_orcp: of,
+        far_rcp: rf,
+        far_sub: of,
         octant,
         ..
     } = slab;
@@ -89,12 +90,12 @@ pub(crate) fn walk(
                     .max(near_z.mul_add(rcp.z, -on.z))
                     .max(ray.t_min);
                 let t_far = far_x
-                    .mul_add(rcp.x, -of.x)
-                    .min(far_y.mul_add(rcp.y, -of.y))
-                    .min(far_z.mul_add(rcp.z, -of.z))
-                    .min(*t_max);
+                    .mul_add(rf.x, -of.x)
+                    .min(far_y.mul_add(rf.y, -of.y))
+                    .min(far_z.mul_add(rf.z, -of.z))
+                    .min(slab.far_limit(*t_max));
                 let child = node.child[slot];
-                if t_near <= slab.far_limit(t_far) && child != INVALID && sp < STACK_SIZE {
+                if t_near <= t_far && child != INVALID && sp < STACK_SIZE {
                     stack_entry[sp] = child;
                     stack_t[sp] = t_near;
                     sp += 1;

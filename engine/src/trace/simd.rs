@@ -19,7 +19,7 @@ use core::arch::x86_64::*;
 use core::mem::{MaybeUninit, offset_of};
 
 use super::STACK_SIZE;
-use super::ray::{ROBUST_FAR, Ray, SlabRay};
+use super::ray::{Ray, SlabRay};
 use super::scalar::{BlasHit, Leaf};
 use super::triangle::{DEGENERATE_RATIO, EDGE_SLACK, TriRay};
 use crate::layout::{GpuBvh8Node, GpuTri4, LEAF_BIT};
@@ -30,10 +30,10 @@ pub(super) struct NodeRay {
     near: [usize; 3],
     far: [usize; 3],
     near_orcp: [__m256; 3],
-    far_orcp: [__m256; 3],
+    far_sub: [__m256; 3],
     rcp: [__m256; 3],
+    far_rcp: [__m256; 3],
     t_min: __m256,
-    margin: __m256,
     /// The scalar form, for stack culling.
     slab: SlabRay,
     /// `3 · octant`, the right shift that brings the octant's 3-bit field of `perm` down.
@@ -74,10 +74,10 @@ impl NodeRay {
                 near,
                 far,
                 near_orcp: s.near_orcp.to_array().map(|v| _mm256_set1_ps(v)),
-                far_orcp: s.far_orcp.to_array().map(|v| _mm256_set1_ps(v)),
+                far_sub: s.far_sub.to_array().map(|v| _mm256_set1_ps(v)),
                 rcp: s.rcp.to_array().map(|v| _mm256_set1_ps(v)),
+                far_rcp: s.far_rcp.to_array().map(|v| _mm256_set1_ps(v)),
                 t_min: _mm256_set1_ps(ray.t_min),
-                margin: _mm256_set1_ps(s.margin),
                 slab: s,
                 shift: _mm_cvtsi32_si128(3 * s.octant as i32),
             }
@@ -126,9 +126,8 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
     let mut sp = 0usize; // entries below sp are initialised; only those are ever read
     let mut entry = 0u32; // the root: always an inner node
     unsafe {
-        let robust = _mm256_set1_ps(ROBUST_FAR);
         let reverse = _mm256_setr_epi32(7, 6, 5, 4, 3, 2, 1, 0);
-        let mut t_far_limit = _mm256_set1_ps(*t_max);
+        let mut t_far_limit = _mm256_set1_ps(r.slab.far_limit(*t_max));
         loop {
             // Inner nodes until a leaf comes up (or nothing is left).
             while entry & LEAF_BIT == 0 {
@@ -146,12 +145,11 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                 let nx = dist(r.near[0], r.near_orcp[0], r.rcp[0]);
                 let ny = dist(r.near[1], r.near_orcp[1], r.rcp[1]);
                 let nz = dist(r.near[2], r.near_orcp[2], r.rcp[2]);
-                let fx = dist(r.far[0], r.far_orcp[0], r.rcp[0]);
-                let fy = dist(r.far[1], r.far_orcp[1], r.rcp[1]);
-                let fz = dist(r.far[2], r.far_orcp[2], r.rcp[2]);
+                let fx = dist(r.far[0], r.far_sub[0], r.far_rcp[0]);
+                let fy = dist(r.far[1], r.far_sub[1], r.far_rcp[1]);
+                let fz = dist(r.far[2], r.far_sub[2], r.far_rcp[2]);
                 let t_near = _mm256_max_ps(_mm256_max_ps(nx, ny), _mm256_max_ps(nz, r.t_min));
                 let t_far = _mm256_min_ps(_mm256_min_ps(fx, fy), _mm256_min_ps(fz, t_far_limit));
-                let t_far = _mm256_fmadd_ps(t_far, robust, r.margin);
                 let hits = if W512 {
                     u32::from(_mm256_cmp_ps_mask::<_CMP_LE_OQ>(t_near, t_far))
                 } else {
@@ -202,8 +200,9 @@ pub(super) unsafe fn walk<const W512: bool, const ANY: bool>(
                     return true;
                 }
                 if !ANY && *t_max < before {
-                    t_far_limit = _mm256_set1_ps(*t_max);
-                    sp = compact::<W512>(stack_entry, stack_t, sp, r.slab.far_limit(*t_max));
+                    let limit = r.slab.far_limit(*t_max);
+                    t_far_limit = _mm256_set1_ps(limit);
+                    sp = compact::<W512>(stack_entry, stack_t, sp, limit);
                 }
             }
             if sp == 0 {
