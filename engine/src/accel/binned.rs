@@ -8,8 +8,9 @@
 //!
 //! Per node: centroid bounds; on each axis `BINS` bins of boxes and counts; a sweep gives the
 //! SAH cost `A(left)·n(left) + A(right)·n(right)` of every bin boundary; the cheapest split over
-//! all axes wins. Where all centroids coincide (or a split would leave one side empty) the node
-//! is split at the median of its primitives instead, so depth stays bounded.
+//! all axes wins. Where all centroids coincide (or a split would leave one side empty), and for
+//! ranges of four or fewer primitives, the node is split at the median of its primitives
+//! instead, so depth stays bounded.
 
 use glam::Vec3A;
 use obvhs::aabb::Aabb as ObAabb;
@@ -18,43 +19,87 @@ use obvhs::bvh2::{Bvh2, node::Bvh2Node};
 /// Bins per axis.
 const BINS: usize = 16;
 
+/// Ranges of at most this many primitives are split at the median instead of by SAH.
+const SMALL: usize = 4;
+
+/// A range of primitives waiting to become binary node `index`, with its box and the box of its
+/// primitives' centroids (both known from the parent's partition pass).
+struct Range {
+    index: usize,
+    start: usize,
+    end: usize,
+    bounds: ObAabb,
+    centroids: ObAabb,
+}
+
 /// Builds the tree (see the module docs). `boxes` must be non-empty and finite.
 pub(crate) fn build_binned(boxes: &[ObAabb]) -> Bvh2 {
     let n = boxes.len();
-    let mut order: Vec<u32> = (0..n as u32).collect();
     if n == 0 {
         return Bvh2::default();
     }
-    let centers: Vec<Vec3A> = boxes.iter().map(|b| b.center()).collect();
+    // Primitive boxes and their original indices, permuted together so every pass over a
+    // range reads memory in order.
+    let mut prims = boxes.to_vec();
+    let mut order: Vec<u32> = (0..n as u32).collect();
+    let (mut bounds, mut centroids) = (ObAabb::empty(), ObAabb::empty());
+    for b in boxes {
+        bounds = bounds.union(b);
+        centroids.extend(b.center());
+    }
     let mut nodes = Vec::with_capacity(2 * n - 1);
     nodes.push(Bvh2Node::default());
-    let mut work = vec![(0usize, 0usize, n)];
-    while let Some((index, start, end)) = work.pop() {
-        let mut bounds = ObAabb::empty();
-        let mut centroid_bounds = ObAabb::empty();
-        for &p in &order[start..end] {
-            bounds = bounds.union(&boxes[p as usize]);
-            centroid_bounds.extend(centers[p as usize]);
-        }
-        if end - start == 1 {
-            nodes[index] = Bvh2Node::new(bounds, 1, start as u32);
+    let mut work = vec![Range {
+        index: 0,
+        start: 0,
+        end: n,
+        bounds,
+        centroids,
+    }];
+    while let Some(r) = work.pop() {
+        if r.end - r.start == 1 {
+            nodes[r.index] = Bvh2Node::new(r.bounds, 1, r.start as u32);
             continue;
         }
-        let mid = best_split(boxes, &centers, &mut order[start..end], &centroid_bounds)
-            .map_or(start + (end - start) / 2, |m| start + m);
-        if mid == start + (end - start) / 2 && end - start > 1 {
-            // A median split (either chosen by the sweep or forced): make it exact.
-            let axis = centroid_bounds.largest_axis();
-            order[start..end].select_nth_unstable_by(mid - start, |&a, &b| {
-                centers[a as usize][axis].total_cmp(&centers[b as usize][axis])
-            });
+        let range = r.start..r.end;
+        // Four or fewer primitives usually end up in one leaf anyway: skip the binning.
+        let binned = if r.end - r.start > SMALL {
+            best_split(&prims[range.clone()], &r.centroids)
+        } else {
+            None
+        };
+        let (mid, halves) = match binned {
+            Some((axis, boundary)) => partition(
+                &mut prims[range.clone()],
+                &mut order[range.clone()],
+                &r.centroids,
+                axis,
+                boundary,
+            ),
+            None => None,
         }
+        .unwrap_or_else(|| {
+            median_split(&mut prims[range.clone()], &mut order[range], &r.centroids)
+        });
         let left = nodes.len();
         nodes.push(Bvh2Node::default());
         nodes.push(Bvh2Node::default());
-        nodes[index] = Bvh2Node::new(bounds, 0, left as u32);
-        work.push((left, start, mid));
-        work.push((left + 1, mid, end));
+        nodes[r.index] = Bvh2Node::new(r.bounds, 0, left as u32);
+        let [(lb, lc), (rb, rc)] = halves;
+        work.push(Range {
+            index: left,
+            start: r.start,
+            end: r.start + mid,
+            bounds: lb,
+            centroids: lc,
+        });
+        work.push(Range {
+            index: left + 1,
+            start: r.start + mid,
+            end: r.end,
+            bounds: rb,
+            centroids: rc,
+        });
     }
     Bvh2 {
         nodes,
@@ -63,35 +108,44 @@ pub(crate) fn build_binned(boxes: &[ObAabb]) -> Bvh2 {
     }
 }
 
-/// Partitions `order` by the cheapest binned SAH split and returns the size of the left part,
-/// or `None` when no bin boundary separates the centroids (the caller splits at the median).
-fn best_split(
-    boxes: &[ObAabb],
-    centers: &[Vec3A],
-    order: &mut [u32],
-    centroid_bounds: &ObAabb,
-) -> Option<usize> {
-    let extent = centroid_bounds.diagonal();
+/// Bin of a centroid per axis.
+#[inline(always)]
+fn bins_of(center: Vec3A, centroids: &ObAabb, scale: Vec3A) -> [usize; 3] {
+    let f = ((center - centroids.min) * scale).to_array();
+    f.map(|x| (x as usize).min(BINS - 1))
+}
+
+/// The cheapest binned SAH split `(axis, first bin of the right side)` over all three axes,
+/// binned in one pass; `None` when no bin boundary separates the centroids.
+fn best_split(prims: &[ObAabb], centroids: &ObAabb) -> Option<(usize, usize)> {
+    let extent = centroids.diagonal();
+    let scale = Vec3A::from_array(
+        extent
+            .to_array()
+            .map(|e| if e > 0.0 { BINS as f32 / e } else { 0.0 }),
+    );
+    let mut bin_box = [[ObAabb::empty(); BINS]; 3];
+    let mut bin_count = [[0u32; BINS]; 3];
+    for p in prims {
+        let bins = bins_of(p.center(), centroids, scale);
+        for axis in 0..3 {
+            let b = bins[axis];
+            bin_box[axis][b] = bin_box[axis][b].union(p);
+            bin_count[axis][b] += 1;
+        }
+    }
+    let total = prims.len() as u32;
     let mut best = (f32::INFINITY, 0usize, 0usize); // cost, axis, boundary
     for axis in 0..3 {
         if extent[axis].partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
             continue;
         }
-        let scale = BINS as f32 / extent[axis];
-        let bin_of = |c: f32| (((c - centroid_bounds.min[axis]) * scale) as usize).min(BINS - 1);
-        let mut bin_box = [ObAabb::empty(); BINS];
-        let mut bin_count = [0u32; BINS];
-        for &p in order.iter() {
-            let b = bin_of(centers[p as usize][axis]);
-            bin_box[b] = bin_box[b].union(&boxes[p as usize]);
-            bin_count[b] += 1;
-        }
-        // Sweep from the right: area and count of bins b..BINS.
+        // Sweep from the right: area times count of bins b..BINS.
         let mut right_cost = [0.0f32; BINS];
         let (mut acc, mut count) = (ObAabb::empty(), 0u32);
         for b in (1..BINS).rev() {
-            acc = acc.union(&bin_box[b]);
-            count += bin_count[b];
+            acc = acc.union(&bin_box[axis][b]);
+            count += bin_count[axis][b];
             right_cost[b] = if count > 0 {
                 acc.half_area() * count as f32
             } else {
@@ -100,10 +154,9 @@ fn best_split(
         }
         let (mut acc, mut count) = (ObAabb::empty(), 0u32);
         for b in 1..BINS {
-            acc = acc.union(&bin_box[b - 1]);
-            count += bin_count[b - 1];
-            let right = order.len() as u32 - count;
-            if count == 0 || right == 0 {
+            acc = acc.union(&bin_box[axis][b - 1]);
+            count += bin_count[axis][b - 1];
+            if count == 0 || count == total {
                 continue;
             }
             let cost = acc.half_area() * count as f32 + right_cost[b];
@@ -112,24 +165,58 @@ fn best_split(
             }
         }
     }
-    if !best.0.is_finite() {
-        return None;
-    }
-    let (_, axis, boundary) = best;
-    let scale = BINS as f32 / extent[axis];
-    let goes_left = |p: &u32| {
-        let c = centers[*p as usize][axis];
-        ((((c - centroid_bounds.min[axis]) * scale) as usize).min(BINS - 1)) < boundary
-    };
-    // In-place partition.
+    best.0.is_finite().then_some((best.1, best.2))
+}
+
+/// Box and centroid box of each side.
+type Halves = [(ObAabb, ObAabb); 2];
+
+/// Moves the primitives whose centroid bin on `axis` is below `boundary` to the front; returns
+/// their count and both sides' boxes, or `None` if a side came out empty.
+fn partition(
+    prims: &mut [ObAabb],
+    order: &mut [u32],
+    centroids: &ObAabb,
+    axis: usize,
+    boundary: usize,
+) -> Option<(usize, Halves)> {
+    let extent = centroids.diagonal()[axis];
+    let scale = BINS as f32 / extent;
+    let min = centroids.min[axis];
+    let mut halves = [(ObAabb::empty(), ObAabb::empty()); 2];
     let mut left = 0;
-    for i in 0..order.len() {
-        if goes_left(&order[i]) {
+    for i in 0..prims.len() {
+        let c = prims[i].center();
+        let side = usize::from((((c[axis] - min) * scale) as usize).min(BINS - 1) >= boundary);
+        halves[side].0 = halves[side].0.union(&prims[i]);
+        halves[side].1.extend(c);
+        if side == 0 {
+            prims.swap(left, i);
             order.swap(left, i);
             left += 1;
         }
     }
-    (left > 0 && left < order.len()).then_some(left)
+    (left > 0 && left < prims.len()).then_some((left, halves))
+}
+
+/// Splits at the median centroid along the longest centroid axis (all centroids may coincide);
+/// always leaves both sides non-empty for two or more primitives.
+fn median_split(prims: &mut [ObAabb], order: &mut [u32], centroids: &ObAabb) -> (usize, Halves) {
+    let axis = centroids.largest_axis();
+    let mid = prims.len() / 2;
+    let mut pairs: Vec<(ObAabb, u32)> = prims.iter().copied().zip(order.iter().copied()).collect();
+    pairs.select_nth_unstable_by(mid, |a, b| {
+        a.0.center()[axis].total_cmp(&b.0.center()[axis])
+    });
+    let mut halves = [(ObAabb::empty(), ObAabb::empty()); 2];
+    for (i, (b, o)) in pairs.into_iter().enumerate() {
+        let side = usize::from(i >= mid);
+        halves[side].0 = halves[side].0.union(&b);
+        halves[side].1.extend(b.center());
+        prims[i] = b;
+        order[i] = o;
+    }
+    (mid, halves)
 }
 
 #[cfg(test)]

@@ -50,7 +50,7 @@ pub struct Blas {
     pub sah_cost: f32,
 }
 
-/// Builds a BLAS with the default quality ([`BuildQuality::Medium`]).
+/// Builds a BLAS with the default quality ([`BuildQuality::BinnedSah`]).
 ///
 /// Never panics. Triangles with a vertex index outside `positions` or a non-finite vertex are
 /// left out (they can never be hit; callers are expected to reject such meshes earlier).

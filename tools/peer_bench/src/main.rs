@@ -47,7 +47,7 @@ struct Args {
     #[arg(long, default_value = "candela")]
     peer: String,
     /// Binary-build preset.
-    #[arg(long, value_enum, default_value_t = Quality::Medium)]
+    #[arg(long, value_enum, default_value_t = Quality::BinnedSah)]
     quality: Quality,
     /// Traversal kernel (default: the fastest this CPU supports).
     #[arg(long, value_enum)]
