@@ -7,7 +7,8 @@
 //! Must not: touch other meshes' data or the scene; the caller places nodes and blocks in the
 //! shared buffers and records `node_base` / `block_base` in each `GpuInstance`.
 //!
-//! Phases: binary PLOC build by obvhs (`bvh2.rs`), SAH-optimal collapse to 8 wide with leaves of
+//! Phases: binary build (our binned SAH by default, or an obvhs PLOC preset: `bvh2.rs`,
+//! `binned.rs`), SAH-optimal collapse to 8 wide with leaves of
 //! at most four triangles (`collapse.rs`), packing of each leaf into one block (here).
 
 use glam::{Vec3, Vec3A};

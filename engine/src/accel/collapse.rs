@@ -294,7 +294,8 @@ pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
             if octant & 4 != 0 { -1.0 } else { 1.0 },
         );
         // Insertion sort of the slots: occupied ones by key (ties by slot), then empty ones.
-        let key = |s: usize| (!used[s], centers[s].dot(sign));
+        // Empty slots sort after occupied ones (an occupied slot has `empty = 0`).
+        let key = |s: usize| (u8::from(!used[s]), centers[s].dot(sign));
         let mut order = [0usize, 1, 2, 3, 4, 5, 6, 7];
         for i in 1..8 {
             let mut j = i;
