@@ -7,7 +7,8 @@
 //!
 //! Timing: one warm-up pass, one calibration pass fixing `passes = ceil(min_ms / pass_time)`,
 //! then `--reps` measurements of `passes` full passes; reported Mrays/s = rays / median per-pass
-//! time. Threads: a rayon pool of `--threads`, rays handed out in chunks of 64.
+//! time. Threads: a rayon pool of `--threads`; every thread takes chunks of 64 consecutive
+//! rays from a shared atomic counter (dynamic scheduling, like the C peers' OpenMP loops).
 //!
 //! stdout: `scene,<peer>,<kind>,<threads>,<mrays_per_s>,<build_ms>`; stderr: `# …` diagnostics,
 //! one `# check` line per kind (rays, hits, mean hit distance, per-pass ms).
@@ -22,7 +23,7 @@ use candela::accel::{BuildQuality, build_blas_with};
 use candela::layout::{GpuBvh8Node, GpuTri4};
 use candela::trace::{Kernel, Ray, closest_blas_with, occluded_blas_with};
 use clap::{Parser, ValueEnum};
-use rayon::prelude::*;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use load::{RayRecord, load_rays, load_triangles};
 
@@ -121,18 +122,27 @@ fn make_ray(r: &RayRecord) -> Ray {
     Ray::with_range(r.origin.into(), r.direction.into(), r.t_near, r.t_far)
 }
 
-/// One pass over all rays: (hits, sum of hit t).
+/// One pass over all rays: (hits, sum of hit t). Every pool thread takes chunks of `CHUNK`
+/// consecutive rays from a shared counter until none are left (dynamic scheduling with chunk
+/// size 64, as the C peers' OpenMP loops do), so there is no task splitting per pass.
 fn trace(
+    pool: &rayon::ThreadPool,
     kernel: Kernel,
     nodes: &[GpuBvh8Node],
     blocks: &[GpuTri4],
     rays: &[RayRecord],
     occlusion: bool,
 ) -> (u64, f64) {
-    rays.par_chunks(CHUNK)
-        .map(|chunk| {
-            let (mut hits, mut sum_t) = (0u64, 0f64);
-            for r in chunk {
+    let next = AtomicUsize::new(0);
+    let chunks = rays.len().div_ceil(CHUNK);
+    let partial = pool.broadcast(|_| {
+        let (mut hits, mut sum_t) = (0u64, 0f64);
+        loop {
+            let c = next.fetch_add(1, Ordering::Relaxed);
+            if c >= chunks {
+                break;
+            }
+            for r in &rays[c * CHUNK..((c + 1) * CHUNK).min(rays.len())] {
                 let ray = make_ray(r);
                 if occlusion {
                     hits += u64::from(occluded_blas_with(kernel, nodes, blocks, &ray));
@@ -141,9 +151,12 @@ fn trace(
                     sum_t += f64::from(hit.t);
                 }
             }
-            (hits, sum_t)
-        })
-        .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
+        }
+        (hits, sum_t)
+    });
+    partial
+        .into_iter()
+        .fold((0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
 fn main() -> Result<()> {
@@ -215,7 +228,7 @@ fn main() -> Result<()> {
     let out = std::io::stdout();
     let clock = Clock(args.cpu_time);
     for (kind, rays, occlusion) in &sets {
-        let run = || pool.install(|| trace(kernel, &blas.nodes, &blas.blocks, rays, *occlusion));
+        let run = || trace(&pool, kernel, &blas.nodes, &blas.blocks, rays, *occlusion);
         let check = run();
         let t0 = clock.now();
         run();
