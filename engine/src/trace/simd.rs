@@ -354,10 +354,12 @@ unsafe fn block_test(b: &GpuTri4, r: &BlockRay, t_max: f32) -> (u32, __m128, __m
     }
 }
 
-/// Leaf visitor: closest hit in a triangle block.
+/// Leaf visitor: closest hit in a triangle block. The per-ray constants of the triangle test
+/// are made at the first leaf: most primary rays never reach one.
 struct ClosestBlock<'a> {
     blocks: &'a [GpuTri4],
-    ray: BlockRay,
+    source: &'a Ray,
+    ray: Option<BlockRay>,
     best: Option<BlasHit>,
 }
 
@@ -365,8 +367,10 @@ impl Leaf for ClosestBlock<'_> {
     #[inline(always)]
     fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
         if let Some(block) = self.blocks.get(payload as usize) {
+            let source = self.source;
+            let ray = self.ray.get_or_insert_with(|| BlockRay::new(source));
             // SAFETY: module contract.
-            let (mask, t, u, v) = unsafe { block_test(block, &self.ray, *t_max) };
+            let (mask, t, u, v) = unsafe { block_test(block, ray, *t_max) };
             if mask != 0 {
                 let (t, u, v) = (lanes(t), lanes(u), lanes(v));
                 // The lowest lane among the smallest t, as the scalar loop picks it.
@@ -384,19 +388,23 @@ impl Leaf for ClosestBlock<'_> {
     }
 }
 
-/// Leaf visitor: any hit in a triangle block.
+/// Leaf visitor: any hit in a triangle block (triangle constants made at the first leaf).
 struct AnyBlock<'a> {
     blocks: &'a [GpuTri4],
-    ray: BlockRay,
+    source: &'a Ray,
+    ray: Option<BlockRay>,
 }
 
 impl Leaf for AnyBlock<'_> {
     #[inline(always)]
     fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
-        self.blocks
-            .get(payload as usize)
-            // SAFETY: module contract.
-            .is_some_and(|block| unsafe { block_test(block, &self.ray, *t_max).0 != 0 })
+        let Some(block) = self.blocks.get(payload as usize) else {
+            return false;
+        };
+        let source = self.source;
+        let ray = self.ray.get_or_insert_with(|| BlockRay::new(source));
+        // SAFETY: module contract.
+        unsafe { block_test(block, ray, *t_max).0 != 0 }
     }
 }
 
@@ -414,7 +422,8 @@ pub(super) unsafe fn closest_blas<const W512: bool>(
     let node_ray = NodeRay::new(ray);
     let mut leaf = ClosestBlock {
         blocks,
-        ray: BlockRay::new(ray),
+        source: ray,
+        ray: None,
         best: None,
     };
     unsafe { walk::<W512, false>(nodes, &node_ray, t_max, &mut leaf) };
@@ -434,7 +443,8 @@ pub(super) unsafe fn occluded_blas<const W512: bool>(
     let node_ray = NodeRay::new(ray);
     let mut leaf = AnyBlock {
         blocks,
-        ray: BlockRay::new(ray),
+        source: ray,
+        ray: None,
     };
     unsafe { walk::<W512, true>(nodes, &node_ray, &mut { ray.t_max }, &mut leaf) }
 }
