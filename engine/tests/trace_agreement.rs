@@ -12,6 +12,20 @@ use glam::{Mat4, Vec3};
 
 const RAYS: usize = 10_000;
 
+#[test]
+fn every_kernel_of_this_cpu_is_tested() {
+    // The CI machines and this one have AVX-512; make sure the SIMD kernels take part.
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx512vl") {
+        use candela::trace::Kernel;
+        assert_eq!(
+            Kernel::available(),
+            [Kernel::Scalar, Kernel::Avx2, Kernel::Avx512]
+        );
+        assert_eq!(Kernel::best(), Kernel::Avx512);
+    }
+}
+
 fn check_mesh(name: &str, mesh: &Mesh, seed: u64, zero_components: bool) -> usize {
     let blas = build_blas(&mesh.positions, &mesh.triangles);
     let mut rng = Rng::new(seed);
@@ -202,4 +216,36 @@ fn instance_transform_keeps_world_t() {
         assert_eq!(hit.t, 2.5);
         assert_eq!(hit.instance, 0);
     }
+}
+
+/// Rays exactly through the shared diagonal of a quad must hit one of its two triangles (the
+/// cracks that `EDGE_SLACK` closes). Tilted quads at a distance, so the rounding is not trivial.
+#[test]
+fn shared_edges_have_no_cracks() {
+    let mut rng = Rng::new(77);
+    let mut misses = 0;
+    for _ in 0..20 {
+        let m = messy_transform(&mut rng);
+        let corners = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+            .map(|[x, y]| m.transform_point3(Vec3::new(x, y, 0.0)));
+        let mut quad = Mesh::default();
+        quad.push_tri(corners[0], corners[1], corners[2]);
+        quad.push_tri(corners[0], corners[2], corners[3]);
+        let blas = build_blas(&quad.positions, &quad.triangles);
+        let normal = (corners[1] - corners[0])
+            .cross(corners[3] - corners[0])
+            .normalize();
+        for _ in 0..500 {
+            let s = rng.f32();
+            let on_edge = corners[0] + (corners[2] - corners[0]) * s;
+            let origin = on_edge + normal * rng.range(0.5, 30.0) + rng.unit() * 2.0;
+            let ray = Ray::new(origin, on_edge - origin);
+            for kernel in candela::trace::Kernel::available() {
+                let hit =
+                    candela::trace::closest_blas_with(kernel, &blas.nodes, &blas.blocks, &ray);
+                misses += usize::from(hit.is_none());
+            }
+        }
+    }
+    assert_eq!(misses, 0, "rays through a shared edge slipped through");
 }

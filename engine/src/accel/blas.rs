@@ -7,7 +7,8 @@
 //! Must not: touch other meshes' data or the scene; the caller places nodes and blocks in the
 //! shared buffers and records `node_base` / `block_base` in each `GpuInstance`.
 //!
-//! Phases: binary PLOC build by obvhs (`bvh2.rs`), SAH-optimal collapse to 8 wide with leaves of
+//! Phases: binary build (our binned SAH by default, or an obvhs PLOC preset: `bvh2.rs`,
+//! `binned.rs`), SAH-optimal collapse to 8 wide with leaves of
 //! at most four triangles (`collapse.rs`), packing of each leaf into one block (here).
 
 use glam::{Vec3, Vec3A};
@@ -15,7 +16,7 @@ use obvhs::{aabb::Aabb as ObAabb, triangle::Triangle};
 
 use super::MAX_DEPTH;
 use super::bounds::Aabb;
-use super::bvh2::{BuildQuality, build_balanced, build_ploc};
+use super::bvh2::{BuildQuality, build_balanced, build_bvh2};
 use super::collapse::{Costs, Wide, collapse};
 use crate::layout::{GpuBvh8Node, GpuTri4};
 
@@ -50,7 +51,7 @@ pub struct Blas {
     pub sah_cost: f32,
 }
 
-/// Builds a BLAS with the default quality ([`BuildQuality::Medium`]).
+/// Builds a BLAS with the default quality ([`BuildQuality::BinnedSah`]).
 ///
 /// Never panics. Triangles with a vertex index outside `positions` or a non-finite vertex are
 /// left out (they can never be hit; callers are expected to reject such meshes earlier).
@@ -118,7 +119,7 @@ pub(crate) fn collapse_bounded(
     quality: BuildQuality,
     costs: Costs,
 ) -> Wide {
-    let wide = collapse(&build_ploc(boxes, triangles, quality), costs);
+    let wide = collapse(&build_bvh2(boxes, triangles, quality), costs);
     if wide.depth <= MAX_DEPTH {
         return wide;
     }

@@ -279,24 +279,34 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
 /// nearest first, then the empty slots; rank `i`'s slot goes to bits `3o..3o+3` of `perm[i]`.
 pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
     let mut perm = [0u32; 8];
-    let used: Vec<usize> = (0..8).filter(|&s| node.child[s] != INVALID).collect();
+    let centers: [Vec3; 8] = std::array::from_fn(|s| {
+        Vec3::new(
+            node.min_x[s] + node.max_x[s],
+            node.min_y[s] + node.max_y[s],
+            node.min_z[s] + node.max_z[s],
+        )
+    });
+    let used = node.child.map(|c| c != INVALID);
     for octant in 0..8u32 {
         let sign = Vec3::new(
             if octant & 1 != 0 { -1.0 } else { 1.0 },
             if octant & 2 != 0 { -1.0 } else { 1.0 },
             if octant & 4 != 0 { -1.0 } else { 1.0 },
         );
-        let key = |s: usize| {
-            let c = Vec3::new(
-                node.min_x[s] + node.max_x[s],
-                node.min_y[s] + node.max_y[s],
-                node.min_z[s] + node.max_z[s],
-            );
-            c.dot(sign)
-        };
-        let mut order = used.clone();
-        order.sort_by(|&a, &b| key(a).total_cmp(&key(b)).then(a.cmp(&b)));
-        order.extend((0..8).filter(|&s| node.child[s] == INVALID));
+        // Insertion sort of the slots: occupied ones by key (ties by slot), then empty ones.
+        // Empty slots sort after occupied ones (an occupied slot has `empty = 0`).
+        let key = |s: usize| (u8::from(!used[s]), centers[s].dot(sign));
+        let mut order = [0usize, 1, 2, 3, 4, 5, 6, 7];
+        for i in 1..8 {
+            let mut j = i;
+            while j > 0 && {
+                let (a, b) = (key(order[j - 1]), key(order[j]));
+                a.0 > b.0 || (a.0 == b.0 && a.1.total_cmp(&b.1).is_gt())
+            } {
+                order.swap(j - 1, j);
+                j -= 1;
+            }
+        }
         for (rank, &slot) in order.iter().enumerate() {
             perm[rank] |= (slot as u32) << (3 * octant);
         }

@@ -10,6 +10,7 @@
 //! `collapse` (SAH-optimal 8-wide collapse and the per-octant child orders), [`blas`] (triangle
 //! blocks), [`tlas`] (instances).
 
+mod binned;
 pub mod blas;
 pub mod bounds;
 mod bvh2;

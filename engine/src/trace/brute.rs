@@ -9,7 +9,7 @@
 use glam::Vec3;
 
 use super::ray::{Hit, Ray, to_object_space};
-use super::triangle::intersect_triangle;
+use super::triangle::{TriRay, intersect_triangle};
 use crate::accel::blas::tri_lane;
 use crate::layout::{GpuInstance, INVALID};
 
@@ -30,7 +30,13 @@ pub struct BruteInstance {
 /// Closest hit over all triangles of one mesh in its own space (`instance` = `INVALID`).
 /// Triangles with an out-of-range index or a non-finite vertex are skipped, as the builder does.
 pub fn closest_brute_mesh(mesh: &BruteMesh, ray: &Ray) -> Option<Hit> {
+    super::scalar::with_fma(|| brute_mesh(mesh, ray))
+}
+
+#[inline(always)]
+fn brute_mesh(mesh: &BruteMesh, ray: &Ray) -> Option<Hit> {
     let mut best: Option<Hit> = None;
+    let tri_ray = TriRay::new(ray.origin, ray.direction);
     for (index, t) in mesh.triangles.iter().enumerate() {
         let vertex = |i: u32| {
             mesh.positions
@@ -43,9 +49,7 @@ pub fn closest_brute_mesh(mesh: &BruteMesh, ray: &Ray) -> Option<Hit> {
         };
         let [v0, e1, e2] = tri_lane(a, b, c);
         let t_max = best.map_or(ray.t_max, |h| h.t);
-        if let Some((t, u, v)) =
-            intersect_triangle(v0, e1, e2, ray.origin, ray.direction, ray.t_min, t_max)
-        {
+        if let Some((t, u, v)) = intersect_triangle(v0, e1, e2, &tri_ray, ray.t_min, t_max) {
             best = Some(Hit {
                 t,
                 u,

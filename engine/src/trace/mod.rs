@@ -7,13 +7,18 @@
 //!
 //! Files: [`ray`] (ray, hit, safe reciprocal, instance transform), `triangle` (the one
 //! triangle test), `scalar` (reference traversal, the algorithm the WGSL twin follows), `scene`
-//! (two-level queries and kernel choice), [`brute`] (brute-force reference for tests).
+//! (two-level queries and kernel choice), `simd` + `x86` (AVX2 / AVX-512 kernels, x86-64
+//! only), [`brute`] (brute-force reference for tests).
 
 pub mod brute;
 pub mod ray;
 mod scalar;
 mod scene;
+#[cfg(target_arch = "x86_64")]
+mod simd;
 pub mod triangle;
+#[cfg(target_arch = "x86_64")]
+mod x86;
 
 pub use ray::{Hit, Ray};
 pub use scene::{TraceScene, closest_blas, closest_blas_with, occluded_blas, occluded_blas_with};
@@ -29,21 +34,64 @@ const _: () = assert!(7 * (crate::accel::MAX_DEPTH as usize - 1) + 8 + 8 <= STAC
 pub enum Kernel {
     /// One child at a time; every CPU.
     Scalar,
+    /// 8-lane node test with AVX2 (x86-64 with AVX2, FMA, POPCNT, BMI1).
+    Avx2,
+    /// 8-lane node test with AVX-512 mask compares and compress (x86-64 with AVX-512
+    /// F/VL/BW/DQ, AVX2, FMA, POPCNT, BMI1).
+    Avx512,
 }
 
 impl Kernel {
-    /// The fastest kernel this CPU supports.
+    /// The fastest kernel this CPU supports (detected once).
     pub fn best() -> Self {
-        Self::Scalar
+        static BEST: std::sync::OnceLock<Kernel> = std::sync::OnceLock::new();
+        *BEST.get_or_init(|| {
+            [Self::Avx512, Self::Avx2]
+                .into_iter()
+                .find(|k| k.supported())
+                .unwrap_or(Self::Scalar)
+        })
     }
 
     /// Every kernel this CPU supports, reference first.
     pub fn available() -> Vec<Self> {
-        vec![Self::Scalar]
+        [Self::Scalar, Self::Avx2, Self::Avx512]
+            .into_iter()
+            .filter(|k| k.supported())
+            .collect()
     }
 
-    /// This kernel if this CPU supports it, else [`Kernel::Scalar`].
+    /// Whether this CPU can run the kernel (feature detection is cached by `std`).
+    pub fn supported(self) -> bool {
+        match self {
+            Self::Scalar => true,
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx2 => {
+                std::arch::is_x86_feature_detected!("avx2")
+                    && std::arch::is_x86_feature_detected!("fma")
+                    && std::arch::is_x86_feature_detected!("popcnt")
+                    && std::arch::is_x86_feature_detected!("bmi1")
+            }
+            #[cfg(target_arch = "x86_64")]
+            Self::Avx512 => {
+                Self::Avx2.supported()
+                    && std::arch::is_x86_feature_detected!("avx512f")
+                    && std::arch::is_x86_feature_detected!("avx512vl")
+                    && std::arch::is_x86_feature_detected!("avx512bw")
+                    && std::arch::is_x86_feature_detected!("avx512dq")
+            }
+            #[cfg(not(target_arch = "x86_64"))]
+            Self::Avx2 | Self::Avx512 => false,
+        }
+    }
+
+    /// This kernel if this CPU supports it, else [`Kernel::Scalar`]. The SIMD entry points
+    /// may only be called with a kernel returned from here.
     fn checked(self) -> Self {
-        self
+        if self == Self::Scalar || self == Self::best() || self.supported() {
+            self
+        } else {
+            Self::Scalar
+        }
     }
 }

@@ -7,7 +7,7 @@
 
 use super::Kernel;
 use super::ray::{Hit, Ray, to_object_space};
-use super::scalar;
+use super::scalar::{self, Leaf};
 use crate::layout::{GpuBvh8Node, GpuInstance, GpuTri4, INVALID};
 
 /// The flattened scene as both tracers read it. The TLAS lives in `nodes` from `tlas_root` on
@@ -39,7 +39,7 @@ pub(crate) trait Walker: Copy {
         nodes: &[GpuBvh8Node],
         ray: &Ray,
         t_max: &mut f32,
-        leaf: impl FnMut(u32, &mut f32) -> bool,
+        leaf: &mut impl Leaf,
     ) -> bool;
 }
 
@@ -68,7 +68,7 @@ impl Walker for ScalarWalker {
         nodes: &[GpuBvh8Node],
         ray: &Ray,
         t_max: &mut f32,
-        leaf: impl FnMut(u32, &mut f32) -> bool,
+        leaf: &mut impl Leaf,
     ) -> bool {
         scalar::walk(nodes, ray, t_max, leaf)
     }
@@ -87,17 +87,22 @@ fn instance_view<'a>(
     Some((nodes, blocks, to_object_space(instance, ray)))
 }
 
-/// Two-level closest hit with any kernel.
-#[inline(always)]
-pub(crate) fn closest_scene<W: Walker>(w: W, scene: &TraceScene, ray: &Ray) -> Option<Hit> {
-    let tlas = scene.nodes.get(scene.tlas_root as usize..)?;
-    let mut t_max = ray.t_max;
-    let mut best = None;
-    w.walk_tlas(tlas, ray, &mut t_max, |index, t_max| {
-        if let Some((nodes, blocks, local)) = instance_view(scene, index, ray)
-            && let Some((t, u, v, triangle)) = w.closest_blas(nodes, blocks, &local, t_max)
+/// TLAS leaf visitor of a closest-hit query: the instance's BLAS with the object-space ray.
+struct ClosestInstance<'s, 'a, W> {
+    walker: W,
+    scene: &'s TraceScene<'a>,
+    ray: &'s Ray,
+    best: Option<Hit>,
+}
+
+impl<W: Walker> Leaf for ClosestInstance<'_, '_, W> {
+    #[inline(always)]
+    fn visit(&mut self, index: u32, t_max: &mut f32) -> bool {
+        if let Some((nodes, blocks, local)) = instance_view(self.scene, index, self.ray)
+            && let Some((t, u, v, triangle)) =
+                self.walker.closest_blas(nodes, blocks, &local, t_max)
         {
-            best = Some(Hit {
+            self.best = Some(Hit {
                 t,
                 u,
                 v,
@@ -106,21 +111,46 @@ pub(crate) fn closest_scene<W: Walker>(w: W, scene: &TraceScene, ray: &Ray) -> O
             });
         }
         false
-    });
-    best
+    }
+}
+
+/// TLAS leaf visitor of an any-hit query.
+struct AnyInstance<'s, 'a, W> {
+    walker: W,
+    scene: &'s TraceScene<'a>,
+    ray: &'s Ray,
+}
+
+impl<W: Walker> Leaf for AnyInstance<'_, '_, W> {
+    #[inline(always)]
+    fn visit(&mut self, index: u32, _t_max: &mut f32) -> bool {
+        instance_view(self.scene, index, self.ray)
+            .is_some_and(|(nodes, blocks, local)| self.walker.occluded_blas(nodes, blocks, &local))
+    }
+}
+
+/// Two-level closest hit with any kernel.
+#[inline(always)]
+pub(crate) fn closest_scene<W: Walker>(walker: W, scene: &TraceScene, ray: &Ray) -> Option<Hit> {
+    let tlas = scene.nodes.get(scene.tlas_root as usize..)?;
+    let mut leaf = ClosestInstance {
+        walker,
+        scene,
+        ray,
+        best: None,
+    };
+    walker.walk_tlas(tlas, ray, &mut { ray.t_max }, &mut leaf);
+    leaf.best
 }
 
 /// Two-level any hit with any kernel.
 #[inline(always)]
-pub(crate) fn occluded_scene<W: Walker>(w: W, scene: &TraceScene, ray: &Ray) -> bool {
+pub(crate) fn occluded_scene<W: Walker>(walker: W, scene: &TraceScene, ray: &Ray) -> bool {
     let Some(tlas) = scene.nodes.get(scene.tlas_root as usize..) else {
         return false;
     };
-    let mut t_max = ray.t_max;
-    w.walk_tlas(tlas, ray, &mut t_max, |index, _| {
-        instance_view(scene, index, ray)
-            .is_some_and(|(nodes, blocks, local)| w.occluded_blas(nodes, blocks, &local))
-    })
+    let mut leaf = AnyInstance { walker, scene, ray };
+    walker.walk_tlas(tlas, ray, &mut { ray.t_max }, &mut leaf)
 }
 
 impl TraceScene<'_> {
@@ -137,14 +167,23 @@ impl TraceScene<'_> {
     /// [`Self::closest`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
     pub fn closest_with(&self, kernel: Kernel, ray: &Ray) -> Option<Hit> {
         match kernel.checked() {
-            Kernel::Scalar => closest_scene(ScalarWalker, self, ray),
+            // SAFETY (all SIMD arms): `checked` returned the kernel, so the CPU supports it.
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx512 => unsafe { super::x86::avx512::closest_scene(self, ray) },
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx2 => unsafe { super::x86::avx2::closest_scene(self, ray) },
+            _ => scalar::with_fma(|| closest_scene(ScalarWalker, self, ray)),
         }
     }
 
     /// [`Self::occluded`] with a chosen kernel (one this CPU lacks runs the scalar kernel).
     pub fn occluded_with(&self, kernel: Kernel, ray: &Ray) -> bool {
         match kernel.checked() {
-            Kernel::Scalar => occluded_scene(ScalarWalker, self, ray),
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx512 => unsafe { super::x86::avx512::occluded_scene(self, ray) },
+            #[cfg(target_arch = "x86_64")]
+            Kernel::Avx2 => unsafe { super::x86::avx2::occluded_scene(self, ray) },
+            _ => scalar::with_fma(|| occluded_scene(ScalarWalker, self, ray)),
         }
     }
 }
@@ -169,7 +208,14 @@ pub fn closest_blas_with(
 ) -> Option<Hit> {
     let mut t_max = ray.t_max;
     let hit = match kernel.checked() {
-        Kernel::Scalar => scalar::closest_blas(nodes, blocks, ray, &mut t_max),
+        // SAFETY (all SIMD arms): `checked` returned the kernel, so the CPU supports it.
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx512 => unsafe {
+            super::x86::avx512::closest_blas(nodes, blocks, ray, &mut t_max)
+        },
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx2 => unsafe { super::x86::avx2::closest_blas(nodes, blocks, ray, &mut t_max) },
+        _ => scalar::with_fma(|| scalar::closest_blas(nodes, blocks, ray, &mut t_max)),
     };
     hit.map(|(t, u, v, triangle)| Hit {
         t,
@@ -188,6 +234,10 @@ pub fn occluded_blas_with(
     ray: &Ray,
 ) -> bool {
     match kernel.checked() {
-        Kernel::Scalar => scalar::occluded_blas(nodes, blocks, ray),
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx512 => unsafe { super::x86::avx512::occluded_blas(nodes, blocks, ray) },
+        #[cfg(target_arch = "x86_64")]
+        Kernel::Avx2 => unsafe { super::x86::avx2::occluded_blas(nodes, blocks, ray) },
+        _ => scalar::with_fma(|| scalar::occluded_blas(nodes, blocks, ray)),
     }
 }
