@@ -1,11 +1,18 @@
 // Two-level BVH8 traversal (TLAS over instances, one BLAS per mesh), twin of the scalar
-// traversal in engine/src/trace/ (same tree, same order, same triangle test). Octant-ordered slab test: the near plane of each child box
-// is read from min or max by the sign of the ray direction, children are visited in the
-// node's precomputed front-to-back order for the ray's octant (GpuBvh8Node::perm), and a
-// short stack holds (entry, entry distance) pairs so that far entries are culled when popped.
+// reference in engine/src/trace/ (scalar.rs, ray.rs, triangle.rs): the same conservative slab
+// test (safe reciprocals, far side widened by ROBUST_FAR and an absolute margin, one fused
+// multiply-add per plane), the same front-to-back child order per ray octant (GpuBvh8Node::perm),
+// the same culling of popped entries, and the same watertight-style triangle test with the same
+// fused multiply-adds, so that both tracers find the same hits.
 
 // 7 * (MAX_DEPTH - 1) + 8 entries fit (engine/src/accel/mod.rs), as in the CPU traversal.
 const STACK_SIZE: u32 = 256u;
+// engine/src/trace/ray.rs: RCP_MIN_ABS, ROBUST_FAR (1 + 2^-21).
+const RCP_MIN_ABS: f32 = 1e-30;
+const ROBUST_FAR: f32 = 1.000000476837158;
+// engine/src/trace/triangle.rs: DEGENERATE_RATIO (2^-18), EDGE_SLACK (2^-20).
+const DEGENERATE_RATIO: f32 = 3.814697265625e-6;
+const EDGE_SLACK: f32 = 9.5367431640625e-7;
 
 struct Ray {
     origin: vec3<f32>,
@@ -31,45 +38,105 @@ struct BlasHit {
     found: bool,
 }
 
-fn safe_rcp(d: vec3<f32>) -> vec3<f32> {
-    let tiny = select(vec3<f32>(1e-20), vec3<f32>(-1e-20), d < vec3<f32>(0.0));
-    return 1.0 / select(d, tiny, abs(d) < vec3<f32>(1e-20));
+// Per-ray constants of the slab test (engine/src/trace/ray.rs, SlabRay).
+struct SlabRay {
+    rcp: vec3<f32>,
+    near_orcp: vec3<f32>,
+    far_rcp: vec3<f32>,
+    far_sub: vec3<f32>,
+    margin: f32,
+    octant: u32,
 }
 
-fn ray_octant(d: vec3<f32>) -> u32 {
-    return select(0u, 1u, d.x < 0.0) | select(0u, 2u, d.y < 0.0) | select(0u, 4u, d.z < 0.0);
+fn sign_bits(d: vec3<f32>) -> vec3<bool> {
+    return (bitcast<vec3<u32>>(d) >> vec3<u32>(31u)) == vec3<u32>(1u);
 }
 
-// Möller–Trumbore, two-sided, over the four lanes of a leaf block.
-fn intersect_block(block_index: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, t_max: f32) -> BlasHit {
+fn slab_ray(o: vec3<f32>, d: vec3<f32>) -> SlabRay {
+    var s: SlabRay;
+    var far_orcp: vec3<f32>;
+    var largest = 0.0;
+    let negative = sign_bits(d);
+    for (var axis = 0u; axis < 3u; axis++) {
+        if (abs(d[axis]) < RCP_MIN_ABS) {
+            let sign = select(1.0, -1.0, negative[axis]);
+            let delta = abs(o[axis]) * (1.0 / 1048576.0) + 1e-20;
+            s.rcp[axis] = sign * (1.0 / RCP_MIN_ABS);
+            s.near_orcp[axis] = (o[axis] + sign * delta) * s.rcp[axis];
+            far_orcp[axis] = (o[axis] - sign * delta) * s.rcp[axis];
+        } else {
+            s.rcp[axis] = 1.0 / d[axis];
+            s.near_orcp[axis] = o[axis] * s.rcp[axis];
+            far_orcp[axis] = s.near_orcp[axis];
+            largest = max(largest, abs(s.near_orcp[axis]));
+        }
+    }
+    s.margin = largest * (1.0 / 1048576.0);
+    s.far_rcp = s.rcp * ROBUST_FAR;
+    s.far_sub = fma(far_orcp, vec3<f32>(ROBUST_FAR), vec3<f32>(-s.margin));
+    s.octant = select(0u, 1u, negative.x) | select(0u, 2u, negative.y) | select(0u, 4u, negative.z);
+    return s;
+}
+
+fn far_limit(s: SlabRay, t: f32) -> f32 {
+    return fma(t, ROBUST_FAR, s.margin);
+}
+
+// Per-ray constants of the triangle test (engine/src/trace/triangle.rs, TriRay): axes permuted
+// so that k.z is the dominant direction axis, origin in that order, shear.
+struct TriRay {
+    k: vec3<u32>,
+    origin: vec3<f32>,
+    shear: vec3<f32>,
+}
+
+fn tri_ray(o: vec3<f32>, d: vec3<f32>) -> TriRay {
+    let a = abs(d);
+    var kz = 2u;
+    if (a.x >= a.y && a.x >= a.z) {
+        kz = 0u;
+    } else if (a.y >= a.z) {
+        kz = 1u;
+    }
+    let kx = (kz + 1u) % 3u;
+    let ky = (kx + 1u) % 3u;
+    let sz = 1.0 / d[kz];
+    return TriRay(vec3<u32>(kx, ky, kz), vec3<f32>(o[kx], o[ky], o[kz]), vec3<f32>(d[kx] * sz, d[ky] * sz, sz));
+}
+
+// Closest hit among the four lanes of a leaf block in (t_min, t_max).
+fn intersect_block(block_index: u32, r: TriRay, t_min: f32, t_max: f32) -> BlasHit {
     var best = BlasHit(t_max, 0.0, 0.0, INVALID, false);
     let b = blocks[block_index];
-    for (var k = 0u; k < 4u; k++) {
-        if (b.prim[k] == INVALID) {
+    let k = r.k;
+    for (var lane = 0u; lane < 4u; lane++) {
+        if (b.prim[lane] == INVALID) {
             continue;
         }
-        let v0 = vec3<f32>(b.v0_x[k], b.v0_y[k], b.v0_z[k]);
-        let e1 = vec3<f32>(b.e1_x[k], b.e1_y[k], b.e1_z[k]);
-        let e2 = vec3<f32>(b.e2_x[k], b.e2_y[k], b.e2_z[k]);
-        let pvec = cross(d, e2);
-        let det = dot(e1, pvec);
-        if (det == 0.0) {
-            continue;
-        }
-        let inv = 1.0 / det;
-        let tvec = o - v0;
-        let u = dot(tvec, pvec) * inv;
-        if (!(u >= 0.0 && u <= 1.0)) {
-            continue;
-        }
-        let qvec = cross(tvec, e1);
-        let v = dot(d, qvec) * inv;
-        if (!(v >= 0.0 && u + v <= 1.0)) {
-            continue;
-        }
-        let t = dot(e2, qvec) * inv;
-        if (t > t_min && t < best.t) {
-            best = BlasHit(t, u, v, b.prim[k], true);
+        let v0f = vec3<f32>(b.v0_x[lane], b.v0_y[lane], b.v0_z[lane]);
+        let e1f = vec3<f32>(b.e1_x[lane], b.e1_y[lane], b.e1_z[lane]);
+        let e2f = vec3<f32>(b.e2_x[lane], b.e2_y[lane], b.e2_z[lane]);
+        let v0 = vec3<f32>(v0f[k.x], v0f[k.y], v0f[k.z]);
+        let e1 = vec3<f32>(e1f[k.x], e1f[k.y], e1f[k.z]);
+        let e2 = vec3<f32>(e2f[k.x], e2f[k.y], e2f[k.z]);
+        let a = v0 - r.origin;
+        let ax = fma(-r.shear.x, a.z, a.x);
+        let ay = fma(-r.shear.y, a.z, a.y);
+        let e1x = fma(-r.shear.x, e1.z, e1.x);
+        let e1y = fma(-r.shear.y, e1.z, e1.y);
+        let e2x = fma(-r.shear.x, e2.z, e2.x);
+        let e2y = fma(-r.shear.y, e2.z, e2.y);
+        let w1 = fma(ax, e2y, -(ay * e2x));
+        let w2 = fma(e1x, ay, -(e1y * ax));
+        let p2 = e2y * e1x;
+        let det = fma(e2x, e1y, -p2);
+        let bound = abs(p2) * DEGENERATE_RATIO;
+        let inv_det = 1.0 / det;
+        let u = w1 * inv_det;
+        let v = w2 * inv_det;
+        let t = fma(v, e2.z, fma(u, e1.z, a.z)) * r.shear.z;
+        if (abs(det) > bound && u >= -EDGE_SLACK && v >= -EDGE_SLACK && u + v <= 1.0 + EDGE_SLACK && t > t_min && t < best.t) {
+            best = BlasHit(t, u, v, b.prim[lane], true);
         }
     }
     return best;
@@ -82,11 +149,9 @@ fn intersect_block(block_index: u32, o: vec3<f32>, d: vec3<f32>, t_min: f32, t_m
 // is restored and the TLAS traversal resumes.
 fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
     var hit = Hit(ray.t_max, 0.0, 0.0, INVALID, INVALID, false);
-    var o = ray.origin;
-    var d = ray.direction;
-    var rcp = safe_rcp(d);
-    var shift = 3u * ray_octant(d);
-    var neg = d < vec3<f32>(0.0);
+    let world_slab = slab_ray(ray.origin, ray.direction);
+    var slab = world_slab;
+    var tri = tri_ray(ray.origin, ray.direction);
     var node_base = frame.tlas_root;
     var block_base = 0u;
     var instance = INVALID;
@@ -101,11 +166,7 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
         if (in_blas && sp == blas_floor) {
             // This instance is done: back to the TLAS in world space.
             in_blas = false;
-            o = ray.origin;
-            d = ray.direction;
-            rcp = safe_rcp(d);
-            shift = 3u * ray_octant(d);
-            neg = d < vec3<f32>(0.0);
+            slab = world_slab;
             node_base = frame.tlas_root;
         }
         if (sp == 0u) {
@@ -114,13 +175,13 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
         sp -= 1u;
         let entry = stack_entry[sp];
         let entry_t = stack_t[sp];
-        if (entry_t > hit.t) {
+        if (!(entry_t <= far_limit(slab, hit.t))) {
             continue;
         }
         if ((entry & LEAF_BIT) != 0u) {
             let payload = entry & ~LEAF_BIT;
             if (in_blas) {
-                let b = intersect_block(block_base + payload, o, d, ray.t_min, hit.t);
+                let b = intersect_block(block_base + payload, tri, ray.t_min, hit.t);
                 if (b.found) {
                     hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
                     if (any_hit) {
@@ -129,44 +190,52 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
                 }
                 continue;
             }
-            // Enter instance `payload`: its BLAS root goes on the stack.
+            // Enter instance `payload` (engine/src/trace/ray.rs, to_object_space).
             let inst = instances[payload];
+            var o = ray.origin;
+            var d = ray.direction;
             if ((inst.flags & INSTANCE_FLAG_IDENTITY) == 0u) {
-                let q = vec4<f32>(ray.origin, 1.0);
-                let r = inst.object_from_world;
-                o = vec3<f32>(dot(r[0], q), dot(r[1], q), dot(r[2], q));
-                d = vec3<f32>(dot(r[0].xyz, ray.direction), dot(r[1].xyz, ray.direction), dot(r[2].xyz, ray.direction));
-                rcp = safe_rcp(d);
-                shift = 3u * ray_octant(d);
-                neg = d < vec3<f32>(0.0);
+                let m = inst.object_from_world;
+                o = vec3<f32>(
+                    m[0].x * o.x + m[0].y * o.y + m[0].z * o.z + m[0].w,
+                    m[1].x * o.x + m[1].y * o.y + m[1].z * o.z + m[1].w,
+                    m[2].x * o.x + m[2].y * o.y + m[2].z * o.z + m[2].w,
+                );
+                d = vec3<f32>(
+                    m[0].x * d.x + m[0].y * d.y + m[0].z * d.z,
+                    m[1].x * d.x + m[1].y * d.y + m[1].z * d.z,
+                    m[2].x * d.x + m[2].y * d.y + m[2].z * d.z,
+                );
             }
+            slab = slab_ray(o, d);
+            tri = tri_ray(o, d);
             node_base = inst.node_base;
             block_base = inst.block_base;
             instance = payload;
             in_blas = true;
             blas_floor = sp;
             stack_entry[sp] = 0u;
-            stack_t[sp] = entry_t;
+            stack_t[sp] = ray.t_min;
             sp += 1u;
             continue;
         }
         let n = node_base + entry;
+        let shift = 3u * slab.octant;
+        let neg = vec3<bool>((slab.octant & 1u) != 0u, (slab.octant & 2u) != 0u, (slab.octant & 4u) != 0u);
+        let t_limit = far_limit(slab, hit.t);
         // Push in reverse front-to-back order so the nearest child is popped first.
         for (var i = 0u; i < 8u; i++) {
             let slot = (nodes[n].perm[7u - i] >> shift) & 7u;
-            let child = nodes[n].child[slot];
-            if (child == INVALID) {
-                continue;
-            }
             let lo = vec3<f32>(nodes[n].min_x[slot], nodes[n].min_y[slot], nodes[n].min_z[slot]);
             let hi = vec3<f32>(nodes[n].max_x[slot], nodes[n].max_y[slot], nodes[n].max_z[slot]);
-            let t0 = (select(lo, hi, neg) - o) * rcp;
-            let t1 = (select(hi, lo, neg) - o) * rcp;
-            let tn = max(max(t0.x, t0.y), max(t0.z, ray.t_min));
-            let tf = min(min(t1.x, t1.y), min(t1.z, hit.t));
-            if (tn <= tf && sp < STACK_SIZE) {
+            let near = fma(select(lo, hi, neg), slab.rcp, -slab.near_orcp);
+            let far = fma(select(hi, lo, neg), slab.far_rcp, -slab.far_sub);
+            let t_near = max(max(max(near.x, near.y), near.z), ray.t_min);
+            let t_far = min(min(min(far.x, far.y), far.z), t_limit);
+            let child = nodes[n].child[slot];
+            if (t_near <= t_far && child != INVALID && sp < STACK_SIZE) {
                 stack_entry[sp] = child;
-                stack_t[sp] = tn;
+                stack_t[sp] = t_near;
                 sp += 1u;
             }
         }
