@@ -72,9 +72,14 @@ fn readme_render_command_writes_a_cornell_box_png_headless() {
         light.iter().all(|&c| c > 250.0),
         "the light is saturated: {light:?}"
     );
+    let floor_luma = 0.2126 * floor[0] + 0.7152 * floor[1] + 0.0722 * floor[2];
     assert!(
-        floor.iter().all(|&c| c > 40.0 && c < 250.0),
-        "the floor is lit: {floor:?}"
+        floor_luma > 20.0 && floor_luma < 250.0,
+        "the floor is lit, not saturated: {floor:?}"
+    );
+    assert!(
+        floor[0] > floor[2],
+        "the light is warm (17, 12, 4): {floor:?}"
     );
     let _ = std::fs::remove_dir_all(&out);
 }

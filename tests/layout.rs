@@ -121,8 +121,20 @@ fn rust_layouts() -> Vec<RustLayout> {
             sky_kind,
             tlas_root
         }),
-        rust_layout!(GpuRay { origin, t_min, direction, t_max }),
-        rust_layout!(GpuHit { t, u, v, instance, triangle, _padding }),
+        rust_layout!(GpuRay {
+            origin,
+            t_min,
+            direction,
+            t_max
+        }),
+        rust_layout!(GpuHit {
+            t,
+            u,
+            v,
+            instance,
+            triangle,
+            _padding
+        }),
     ]
 }
 

@@ -223,19 +223,38 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
         let shift = 3u * slab.octant;
         let neg = vec3<bool>((slab.octant & 1u) != 0u, (slab.octant & 2u) != 0u, (slab.octant & 4u) != 0u);
         let t_limit = far_limit(slab, hit.t);
+        // All eight slab tests four lanes at a time (a node is 16 vec4 loads).
+        var t_near: array<vec4<f32>, 2>;
+        var accept: array<vec4<bool>, 2>;
+        for (var h = 0u; h < 2u; h++) {
+            let min_x = nodes[n].min_x[h];
+            let max_x = nodes[n].max_x[h];
+            let min_y = nodes[n].min_y[h];
+            let max_y = nodes[n].max_y[h];
+            let min_z = nodes[n].min_z[h];
+            let max_z = nodes[n].max_z[h];
+            let near_x = fma(select(min_x, max_x, neg.x), vec4<f32>(slab.rcp.x), vec4<f32>(-slab.near_orcp.x));
+            let near_y = fma(select(min_y, max_y, neg.y), vec4<f32>(slab.rcp.y), vec4<f32>(-slab.near_orcp.y));
+            let near_z = fma(select(min_z, max_z, neg.z), vec4<f32>(slab.rcp.z), vec4<f32>(-slab.near_orcp.z));
+            let far_x = fma(select(max_x, min_x, neg.x), vec4<f32>(slab.far_rcp.x), vec4<f32>(-slab.far_sub.x));
+            let far_y = fma(select(max_y, min_y, neg.y), vec4<f32>(slab.far_rcp.y), vec4<f32>(-slab.far_sub.y));
+            let far_z = fma(select(max_z, min_z, neg.z), vec4<f32>(slab.far_rcp.z), vec4<f32>(-slab.far_sub.z));
+            let tn = max(max(max(near_x, near_y), near_z), vec4<f32>(ray.t_min));
+            let tf = min(min(min(far_x, far_y), far_z), vec4<f32>(t_limit));
+            t_near[h] = tn;
+            accept[h] = (tn <= tf) & (nodes[n].child[h] != vec4<u32>(INVALID));
+        }
+        let perm = array<vec4<u32>, 2>(nodes[n].perm[0], nodes[n].perm[1]);
+        let child = array<vec4<u32>, 2>(nodes[n].child[0], nodes[n].child[1]);
         // Push in reverse front-to-back order so the nearest child is popped first.
         for (var i = 0u; i < 8u; i++) {
-            let slot = (nodes[n].perm[7u - i] >> shift) & 7u;
-            let lo = vec3<f32>(nodes[n].min_x[slot], nodes[n].min_y[slot], nodes[n].min_z[slot]);
-            let hi = vec3<f32>(nodes[n].max_x[slot], nodes[n].max_y[slot], nodes[n].max_z[slot]);
-            let near = fma(select(lo, hi, neg), slab.rcp, -slab.near_orcp);
-            let far = fma(select(hi, lo, neg), slab.far_rcp, -slab.far_sub);
-            let t_near = max(max(max(near.x, near.y), near.z), ray.t_min);
-            let t_far = min(min(min(far.x, far.y), far.z), t_limit);
-            let child = nodes[n].child[slot];
-            if (t_near <= t_far && child != INVALID && sp < STACK_SIZE) {
-                stack_entry[sp] = child;
-                stack_t[sp] = t_near;
+            let rank = 7u - i;
+            let slot = (perm[rank >> 2u][rank & 3u] >> shift) & 7u;
+            let half = slot >> 2u;
+            let lane = slot & 3u;
+            if (accept[half][lane] && sp < STACK_SIZE) {
+                stack_entry[sp] = child[half][lane];
+                stack_t[sp] = t_near[half][lane];
                 sp += 1u;
             }
         }

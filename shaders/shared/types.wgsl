@@ -21,15 +21,17 @@ const TEXTURE_FLAG_NEAREST: u32 = 16u;
 const SKY_CONSTANT: u32 = 0u;
 const SKY_GRADIENT: u32 = 1u;
 
+// Eight lanes as two vec4 halves (lanes 0-3, 4-7): the same bytes as Rust's [f32; 8], loaded
+// four lanes at a time.
 struct GpuBvh8Node {
-    min_x: array<f32, 8>,
-    max_x: array<f32, 8>,
-    min_y: array<f32, 8>,
-    max_y: array<f32, 8>,
-    min_z: array<f32, 8>,
-    max_z: array<f32, 8>,
-    child: array<u32, 8>,
-    perm: array<u32, 8>,
+    min_x: array<vec4<f32>, 2>,
+    max_x: array<vec4<f32>, 2>,
+    min_y: array<vec4<f32>, 2>,
+    max_y: array<vec4<f32>, 2>,
+    min_z: array<vec4<f32>, 2>,
+    max_z: array<vec4<f32>, 2>,
+    child: array<vec4<u32>, 2>,
+    perm: array<vec4<u32>, 2>,
 }
 
 struct GpuTri4 {
