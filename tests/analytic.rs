@@ -292,3 +292,43 @@ fn cpu_absorbing_slab() {
 fn gpu_absorbing_slab() {
     absorbing_slab(Which::Gpu);
 }
+
+/// Thin lens: whatever point of the lens a camera ray starts from, it passes through the point
+/// the pinhole ray of the same pixel position reaches on the plane in focus.
+#[test]
+fn thin_lens_rays_meet_on_the_focal_plane() {
+    use candela::render::cpu::integrator::camera_ray;
+    use candela::render::cpu::rng::Rng;
+    use candela::render::{FrameSettings, frame_uniforms};
+    let mut cam = camera(Vec3::new(1.0, 2.0, 5.0), Vec3::new(0.0, 0.5, 0.0), 35.0);
+    cam.aperture_radius = 0.2;
+    cam.focus_distance = Some(4.0);
+    let settings = FrameSettings::new(64, 48, 1, 0, &Default::default());
+    let lens = frame_uniforms(&cam, None, &SkyDesc::default(), &settings, 0, 0.0, 0);
+    cam.aperture_radius = 0.0;
+    let pinhole = frame_uniforms(&cam, None, &SkyDesc::default(), &settings, 0, 0.0, 0);
+    let forward = Vec3::from(lens.camera_forward);
+    let mut spread = 0.0f32;
+    for sample in 0..256 {
+        let (px, py) = (sample % 64, (sample * 7) % 48);
+        let a = camera_ray(&pinhole, px, py, &mut Rng::new(px, py, sample, 9));
+        let b = camera_ray(&lens, px, py, &mut Rng::new(px, py, sample, 9));
+        // Where each ray crosses the plane 4 m in front of the camera.
+        let at = |r: &candela::trace::Ray| {
+            let t = (4.0 - (r.origin - Vec3::from(lens.camera_position)).dot(forward))
+                / r.direction.dot(forward);
+            r.origin + r.direction * t
+        };
+        assert!(
+            (at(&a) - at(&b)).length() < 1e-4,
+            "sample {sample}: {} vs {}",
+            at(&a),
+            at(&b)
+        );
+        spread = spread.max((b.origin - a.origin).length());
+    }
+    assert!(
+        spread > 0.1 && spread <= 0.2 + 1e-5,
+        "lens samples cover the aperture: {spread}"
+    );
+}

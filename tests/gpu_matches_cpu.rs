@@ -79,7 +79,7 @@ fn mirror_glass_scene_agrees() {
 }
 
 /// Base-colour, metallic-roughness, normal and emissive textures, the metallic-roughness BSDF,
-/// generated tangents, a sun with a finite disc and a gradient sky.
+/// generated tangents, a sun with a finite disc, a gradient sky and a thin-lens camera.
 #[test]
 fn textured_helmet_in_sunlight_agrees() {
     use candela::assets::{SkyDesc, SunDesc, load_model_file};
@@ -90,10 +90,9 @@ fn textured_helmet_in_sunlight_agrees() {
         external().join("gltf/DamagedHelmet/glTF/DamagedHelmet.gltf")
     };
     let model = load_model_file(&path).expect("DamagedHelmet loads");
-    let mut desc = SceneDesc::single(
-        model,
-        candela_tests::camera(glam::Vec3::new(0.0, 0.3, 3.0), glam::Vec3::ZERO, 40.0),
-    );
+    let mut camera = candela_tests::camera(glam::Vec3::new(0.0, 0.3, 3.0), glam::Vec3::ZERO, 40.0);
+    camera.aperture_radius = 0.05;
+    let mut desc = SceneDesc::single(model, camera);
     desc.sun = Some(SunDesc {
         direction: [0.4, 1.0, 0.6],
         irradiance: [3.0, 2.9, 2.7],

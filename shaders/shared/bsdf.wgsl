@@ -192,11 +192,16 @@ fn dielectric_sample(b: Bsdf, wo: vec3<f32>, u: vec3<f32>) -> BsdfSample {
     }
     let m = ggx_sample_vndf(wo_up, b.alpha, u.xy);
     let fr = fresnel_dielectric(dot(wo_up, m), eta);
+    let reflected = u.z < fr.x;
     var wi_up: vec3<f32>;
-    if (u.z < fr.x) {
+    if (reflected) {
         wi_up = reflect_about(wo_up, m);
     } else {
         wi_up = refract_through(wo_up, m, eta, fr.y);
+    }
+    // A microfacet can send the direction to the other side of the macro surface: lost.
+    if ((wi_up.z > 0.0) != reflected) {
+        return no_sample();
     }
     return sample_from_eval(b, wo, vec3<f32>(wi_up.xy, wi_up.z * s));
 }
@@ -247,6 +252,10 @@ fn bsdf_sample(b: Bsdf, wo: vec3<f32>, u: vec3<f32>) -> BsdfSample {
             return no_sample();
         }
         wi = refract_through(wo, m, b.ior, fr.y);
+    }
+    // Reflection lobes stay above, the transmission lobe below the macro surface.
+    if ((wi.z > 0.0) != (u.z < p.x + p.y)) {
+        return no_sample();
     }
     return sample_from_eval(b, wo, wi);
 }

@@ -166,11 +166,17 @@ impl Bsdf {
         let m = ggx_sample_vndf(wo_up, self.alpha, Vec2::new(u.x, u.y));
         let wo_m = wo_up.dot(m);
         let (f, cos_t) = fresnel_dielectric(wo_m, eta);
-        let wi_up = if u.z < f {
+        let reflected = u.z < f;
+        let wi_up = if reflected {
             reflect(wo_up, m)
         } else {
             refract(wo_up, m, eta, cos_t)
         };
+        // A microfacet can send the direction to the other side of the macro surface; such a
+        // sample is lost (`eval` would read it as the other event, with another density).
+        if (wi_up.z > 0.0) != reflected {
+            return None;
+        }
         let wi = Vec3::new(wi_up.x, wi_up.y, wi_up.z * sign);
         let (value, pdf) = self.eval(wo, wi);
         (pdf > 0.0 && value.max_element() > 0.0).then(|| BsdfSample {
@@ -241,6 +247,11 @@ impl Bsdf {
             }
             refract(wo, m, self.ior, cos_t)
         };
+        // Reflection lobes must stay above, the transmission lobe below the macro surface;
+        // a direction a microfacet sent across is lost (its density is not in `eval`'s mixture).
+        if (wi.z > 0.0) != (u.z < p[0] + p[1]) {
+            return None;
+        }
         let (value, pdf) = self.metal_rough_eval(wo, wi);
         (pdf > 0.0 && value.max_element() > 0.0).then(|| BsdfSample {
             wi,
@@ -333,3 +344,7 @@ fn rough_dielectric_eval(ior: f32, alpha: f32, wo: Vec3, wi: Vec3) -> Dielectric
         pdf_refract_always: pdf_always,
     }
 }
+
+#[cfg(test)]
+#[path = "bsdf_tests.rs"]
+mod tests;

@@ -1,0 +1,208 @@
+//! Statistical checks of every scattering model (kept beside `bsdf.rs`).
+//!
+//! For each model and several viewing directions:
+//! * a sample's weight equals `eval(wo, wi) / pdf` for the direction it returned (non-delta);
+//! * the directional albedo estimated by importance sampling (mean weight) equals the one
+//!   estimated by uniform sphere sampling (mean of eval / (1/4π)): if `sample` did not draw from
+//!   the density `eval` reports, these two estimators would disagree;
+//! * energy is never gained: albedo ≤ 1 (for refraction out of a denser medium, radiance grows by
+//!   η² legitimately, so transmitted weights are divided by η² there);
+//! * the reported density integrates to at most 1 over the sphere.
+//!
+//! Tolerances: 5 standard errors of the Monte-Carlo estimates (each estimate's standard error is
+//! computed from its own samples), plus 1e-3 relative for f32 arithmetic.
+
+use glam::{Vec2, Vec3};
+
+use super::*;
+use crate::layout::MATERIAL_METAL_ROUGH;
+use crate::render::cpu::rng::Rng;
+
+fn models() -> Vec<(&'static str, Bsdf)> {
+    let b = |kind, base: f32, alpha: f32, metallic: f32, transmission: f32| Bsdf {
+        kind,
+        base_color: Vec3::new(base, base * 0.8, base * 0.6),
+        alpha,
+        metallic,
+        ior: 1.5,
+        transmission,
+    };
+    vec![
+        ("diffuse", b(MATERIAL_DIFFUSE, 0.9, 1.0, 0.0, 0.0)),
+        (
+            "conductor a=0.05",
+            b(MATERIAL_CONDUCTOR, 1.0, 0.05, 0.0, 0.0),
+        ),
+        ("conductor a=0.3", b(MATERIAL_CONDUCTOR, 1.0, 0.3, 0.0, 0.0)),
+        ("conductor a=1", b(MATERIAL_CONDUCTOR, 0.7, 1.0, 0.0, 0.0)),
+        (
+            "dielectric a=0.1",
+            b(MATERIAL_DIELECTRIC, 1.0, 0.1, 0.0, 0.0),
+        ),
+        (
+            "dielectric a=0.5",
+            b(MATERIAL_DIELECTRIC, 1.0, 0.5, 0.0, 0.0),
+        ),
+        (
+            "metal-rough plastic",
+            b(MATERIAL_METAL_ROUGH, 0.8, 0.2, 0.0, 0.0),
+        ),
+        (
+            "metal-rough metal",
+            b(MATERIAL_METAL_ROUGH, 0.9, 0.3, 1.0, 0.0),
+        ),
+        (
+            "metal-rough half",
+            b(MATERIAL_METAL_ROUGH, 0.9, 0.5, 0.5, 0.0),
+        ),
+        (
+            "metal-rough glassy",
+            b(MATERIAL_METAL_ROUGH, 0.9, 0.2, 0.0, 0.6),
+        ),
+    ]
+}
+
+fn directions(b: &Bsdf) -> Vec<Vec3> {
+    let mut d: Vec<Vec3> = [0.95f32, 0.6, 0.2]
+        .iter()
+        .map(|&z| Vec3::new((1.0 - z * z).sqrt(), 0.0, z))
+        .collect();
+    if b.kind == MATERIAL_DIELECTRIC {
+        d.extend([
+            Vec3::new(0.3, 0.0, -0.95).normalize(),
+            Vec3::new(0.8, 0.0, -0.6),
+        ]);
+    }
+    d
+}
+
+struct Mean {
+    n: f64,
+    sum: f64,
+    sum2: f64,
+}
+
+impl Mean {
+    fn new() -> Self {
+        Self {
+            n: 0.0,
+            sum: 0.0,
+            sum2: 0.0,
+        }
+    }
+    fn add(&mut self, x: f64) {
+        self.n += 1.0;
+        self.sum += x;
+        self.sum2 += x * x;
+    }
+    fn mean(&self) -> f64 {
+        self.sum / self.n
+    }
+    fn std_error(&self) -> f64 {
+        let m = self.mean();
+        ((self.sum2 / self.n - m * m).max(0.0) / self.n).sqrt()
+    }
+}
+
+/// Weight for the energy check: refraction out of the denser side legitimately multiplies
+/// radiance by η²; divide that back out.
+fn energy(b: &Bsdf, wo: Vec3, wi: Vec3, weight: f32) -> f64 {
+    let out_of_dense =
+        (b.kind == MATERIAL_DIELECTRIC || b.transmission > 0.0) && wo.z < 0.0 && wi.z > 0.0;
+    (if out_of_dense {
+        weight / (b.ior * b.ior)
+    } else {
+        weight
+    }) as f64
+}
+
+#[test]
+fn sampling_matches_evaluation_and_conserves_energy() {
+    const N: u32 = 200_000;
+    for (name, b) in models() {
+        for (di, wo) in directions(&b).into_iter().enumerate() {
+            let mut rng = Rng::new(di as u32, 0, 0, 17);
+            let mut importance = Mean::new();
+            let mut uniform = Mean::new();
+            let mut density = Mean::new();
+            for _ in 0..N {
+                let u = Vec3::new(rng.next_f32(), rng.next_f32(), rng.next_f32());
+                match b.sample(wo, u) {
+                    Some(s) => {
+                        let (value, pdf) = b.eval(wo, s.wi);
+                        for c in 0..3 {
+                            let expected = value[c] / pdf;
+                            assert!(
+                                (s.weight[c] - expected).abs() <= 1e-3 * expected.abs().max(1e-3),
+                                "{name} wo {wo}: weight {} vs eval/pdf {expected}",
+                                s.weight[c]
+                            );
+                        }
+                        importance.add(energy(&b, wo, s.wi, s.weight.y));
+                    }
+                    None => importance.add(0.0),
+                }
+                // Uniform direction on the sphere, density 1/(4π).
+                let z = 1.0 - 2.0 * rng.next_f32();
+                let phi = 2.0 * PI * rng.next_f32();
+                let r = (1.0 - z * z).max(0.0).sqrt();
+                let wi = Vec3::new(r * phi.cos(), r * phi.sin(), z);
+                let (value, pdf) = b.eval(wo, wi);
+                uniform.add(energy(&b, wo, wi, value.y) * 4.0 * PI as f64);
+                density.add(pdf as f64 * 4.0 * PI as f64);
+            }
+            let (a, sa) = (importance.mean(), importance.std_error());
+            let (c, sc) = (uniform.mean(), uniform.std_error());
+            let tolerance = 5.0 * (sa * sa + sc * sc).sqrt() + 1e-3 * a.abs();
+            assert!(
+                (a - c).abs() <= tolerance,
+                "{name} wo {wo}: albedo by sampling {a:.4} ± {sa:.4} vs by uniform directions {c:.4} ± {sc:.4}"
+            );
+            assert!(
+                a <= 1.0 + 5.0 * sa + 1e-3,
+                "{name} wo {wo}: albedo {a:.4} ± {sa:.4} gains energy"
+            );
+            let (p, sp) = (density.mean(), density.std_error());
+            assert!(
+                p <= 1.0 + 5.0 * sp + 1e-3,
+                "{name} wo {wo}: density integrates to {p:.4} ± {sp:.4}"
+            );
+        }
+    }
+}
+
+#[test]
+fn delta_lobes_reflect_and_refract_exactly() {
+    let mirror = Bsdf {
+        kind: MATERIAL_CONDUCTOR,
+        base_color: Vec3::ONE,
+        alpha: 0.0,
+        metallic: 0.0,
+        ior: 1.5,
+        transmission: 0.0,
+    };
+    let wo = Vec3::new(0.6, 0.0, 0.8);
+    let s = mirror
+        .sample(wo, Vec3::splat(0.5))
+        .expect("mirror reflects");
+    assert!(s.delta && (s.wi - Vec3::new(-0.6, 0.0, 0.8)).length() < 1e-6);
+    assert_eq!(s.weight, Vec3::ONE);
+    let glass = Bsdf {
+        kind: MATERIAL_DIELECTRIC,
+        ..mirror
+    };
+    let (f, _) = super::super::microfacet::fresnel_dielectric(0.8, 1.5);
+    let reflected = glass
+        .sample(wo, Vec3::new(0.5, 0.5, f * 0.5))
+        .expect("reflects");
+    assert!(reflected.wi.z > 0.0 && reflected.delta);
+    let refracted = glass
+        .sample(wo, Vec3::new(0.5, 0.5, (1.0 + f) * 0.5))
+        .expect("refracts");
+    assert!(refracted.wi.z < 0.0);
+    assert!(
+        (refracted.weight.x - 1.0 / 2.25).abs() < 1e-6,
+        "radiance scaled by 1/η²"
+    );
+    let _ = Vec2::ZERO;
+}
