@@ -6,13 +6,17 @@
 //! Rendering", JCGT 2020); all arithmetic is wrapping u32, exactly as WGSL does it.
 //! Must not: hold global state.
 
-/// One path's random stream: pixel (x, y), global sample index, and seed + draw counter.
+/// One path's random stream: pixel (x, y), global sample index, and seed + block counter.
+/// Each hash gives four numbers: draw `k` is lane `k % 4` of the hash of block `k / 4`.
 #[derive(Clone, Copy, Debug)]
 pub struct Rng {
     pixel_x: u32,
     pixel_y: u32,
     sample: u32,
     stream: u32,
+    block: [u32; 4],
+    /// Lanes of `block` already used (4: none left).
+    used: u32,
 }
 
 /// Golden-ratio constant that spreads seeds far apart on the counter lane.
@@ -49,15 +53,22 @@ impl Rng {
             pixel_y,
             sample,
             stream: seed.wrapping_mul(SEED_SPREAD),
+            block: [0; 4],
+            used: 4,
         }
     }
 
     /// Next uniform number in [0, 1) with 24 bits of resolution.
     #[inline]
     pub fn next_f32(&mut self) -> f32 {
-        let h = pcg4d([self.pixel_x, self.pixel_y, self.sample, self.stream]);
-        self.stream = self.stream.wrapping_add(1);
-        (h[0] >> 8) as f32 * (1.0 / 16_777_216.0)
+        if self.used == 4 {
+            self.block = pcg4d([self.pixel_x, self.pixel_y, self.sample, self.stream]);
+            self.stream = self.stream.wrapping_add(1);
+            self.used = 0;
+        }
+        let x = self.block[self.used as usize];
+        self.used += 1;
+        (x >> 8) as f32 * (1.0 / 16_777_216.0)
     }
 }
 
