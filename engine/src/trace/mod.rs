@@ -7,8 +7,8 @@
 //!
 //! Files: [`ray`] (ray, hit, safe reciprocal, instance transform), `triangle` (the one
 //! triangle test), `scalar` (reference traversal, the algorithm the WGSL twin follows), `scene`
-//! (two-level queries and kernel choice), `simd` + `x86` (AVX2 / AVX-512 kernels, x86-64
-//! only), [`brute`] (brute-force reference for tests).
+//! (two-level queries and kernel choice), `simd` + `simd_block` + `x86` (AVX2 / AVX-512
+//! kernels, x86-64 only), [`brute`] (brute-force reference for tests).
 
 pub mod brute;
 pub mod ray;
@@ -16,6 +16,8 @@ mod scalar;
 mod scene;
 #[cfg(target_arch = "x86_64")]
 mod simd;
+#[cfg(target_arch = "x86_64")]
+mod simd_block;
 pub mod triangle;
 #[cfg(target_arch = "x86_64")]
 mod x86;
