@@ -311,8 +311,12 @@ pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
             let (mut rank, mut rank_rev) = (0, 0);
             for t in 0..8 {
                 if used[t] && t != s {
-                    rank += usize::from(key[t] < key[s] || (key[t] == key[s] && t < s));
-                    rank_rev += usize::from(key[t] > key[s] || (key[t] == key[s] && t < s));
+                    // total_cmp: a strict total order even for NaN keys (centres that
+                    // overflowed), so the ranks always form a permutation.
+                    let order = key[t].total_cmp(&key[s]).then(t.cmp(&s));
+                    rank += usize::from(order.is_lt());
+                    rank_rev +=
+                        usize::from(key[t].total_cmp(&key[s]).reverse().then(t.cmp(&s)).is_lt());
                 }
             }
             order[rank] = s;
