@@ -22,7 +22,8 @@ use crate::layout::{GpuBvh8Node, GpuTri4};
 
 /// SAH constants of a BLAS, in units of one 8-wide node visit. A 4-triangle block test costs
 /// about as much as a node test on this layout (both are one SIMD pass over a 160-256 byte
-/// record); see the module docs of `accel` for the measurements.
+/// record). Measured: leaf costs from 0.5 to 3 and node costs up to 4 changed the dragon's
+/// tree by under 1 % and its traversal speed by less than the noise (±3 %).
 pub const BLAS_NODE_COST: f32 = 1.0;
 /// Cost of testing one [`GpuTri4`] block (1 to 4 triangles alike), relative to a node visit.
 pub const BLAS_LEAF_COST: f32 = 1.0;

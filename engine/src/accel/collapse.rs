@@ -278,7 +278,7 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
 /// occupied slots sorted by their box centre projected on the octant's diagonal (±1, ±1, ±1),
 /// nearest first, then the empty slots; rank `i`'s slot goes to bits `3o..3o+3` of `perm[i]`.
 pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
-    let mut perm = [0u32; 8];
+    let used = node.child.map(|c| c != INVALID);
     let centers: [Vec3; 8] = std::array::from_fn(|s| {
         Vec3::new(
             node.min_x[s] + node.max_x[s],
@@ -286,29 +286,45 @@ pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
             node.min_z[s] + node.max_z[s],
         )
     });
-    let used = node.child.map(|c| c != INVALID);
-    for octant in 0..8u32 {
+    let occupied = used.iter().filter(|&&u| u).count();
+    let mut perm = [0u32; 8];
+    // Octant 7 - o sees the keys negated: its order of the occupied slots is the reverse of
+    // octant o's (ties aside, which both break by slot index), so only octants 0..4 are ranked.
+    for octant in 0..4u32 {
         let sign = Vec3::new(
             if octant & 1 != 0 { -1.0 } else { 1.0 },
             if octant & 2 != 0 { -1.0 } else { 1.0 },
             if octant & 4 != 0 { -1.0 } else { 1.0 },
         );
-        // Insertion sort of the slots: occupied ones by key (ties by slot), then empty ones.
-        // Empty slots sort after occupied ones (an occupied slot has `empty = 0`).
-        let key = |s: usize| (u8::from(!used[s]), centers[s].dot(sign));
-        let mut order = [0usize, 1, 2, 3, 4, 5, 6, 7];
-        for i in 1..8 {
-            let mut j = i;
-            while j > 0 && {
-                let (a, b) = (key(order[j - 1]), key(order[j]));
-                a.0 > b.0 || (a.0 == b.0 && a.1.total_cmp(&b.1).is_gt())
-            } {
-                order.swap(j - 1, j);
-                j -= 1;
+        let key: [f32; 8] = std::array::from_fn(|s| centers[s].dot(sign));
+        // Rank of each occupied slot among the occupied ones: smaller key first, ties by slot.
+        let mut order = [0usize; 8];
+        let mut order_rev = [0usize; 8];
+        let mut next_empty = occupied;
+        for s in 0..8 {
+            if !used[s] {
+                order[next_empty] = s;
+                order_rev[next_empty] = s;
+                next_empty += 1;
+                continue;
             }
+            let (mut rank, mut rank_rev) = (0, 0);
+            for t in 0..8 {
+                if used[t] && t != s {
+                    // total_cmp: a strict total order even for NaN keys (centres that
+                    // overflowed), so the ranks always form a permutation.
+                    let order = key[t].total_cmp(&key[s]).then(t.cmp(&s));
+                    rank += usize::from(order.is_lt());
+                    rank_rev +=
+                        usize::from(key[t].total_cmp(&key[s]).reverse().then(t.cmp(&s)).is_lt());
+                }
+            }
+            order[rank] = s;
+            order_rev[rank_rev] = s;
         }
-        for (rank, &slot) in order.iter().enumerate() {
-            perm[rank] |= (slot as u32) << (3 * octant);
+        for rank in 0..8 {
+            perm[rank] |= (order[rank] as u32) << (3 * octant);
+            perm[rank] |= (order_rev[rank] as u32) << (3 * (7 - octant));
         }
     }
     perm

@@ -1,5 +1,6 @@
 //! Entry points of the AVX2 and AVX-512 kernels: `#[target_feature]` functions that instantiate
-//! the shared core (`simd.rs`) and the two-level scene walk (`scene.rs`) with those features.
+//! the shared core (`simd.rs`, `simd_block.rs`) and the two-level scene walk (`scene.rs`) with
+//! those features.
 //!
 //! Safety contract of every `unsafe fn` here: the CPU supports the features named on it; the
 //! only caller, `scene.rs`, checks that with [`super::Kernel::checked`] first. Any thread.
@@ -9,6 +10,7 @@ use super::ray::{Hit, Ray};
 use super::scalar::{BlasHit, Leaf};
 use super::scene::{TraceScene, Walker, closest_scene as closest_two_level, occluded_scene};
 use super::simd::{self, NodeRay};
+use super::simd_block;
 use crate::layout::{GpuBvh8Node, GpuTri4};
 
 /// The SIMD walker; only constructed inside the `#[target_feature]` functions below, so its
@@ -26,12 +28,12 @@ impl<const W512: bool> Walker for SimdWalker<W512> {
         t_max: &mut f32,
     ) -> Option<BlasHit> {
         // SAFETY: a SimdWalker exists only inside a function with the features enabled.
-        unsafe { simd::closest_blas::<W512>(nodes, blocks, ray, t_max) }
+        unsafe { simd_block::closest_blas::<W512>(nodes, blocks, ray, t_max) }
     }
     #[inline(always)]
     fn occluded_blas(self, nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> bool {
         // SAFETY: as above.
-        unsafe { simd::occluded_blas::<W512>(nodes, blocks, ray) }
+        unsafe { simd_block::occluded_blas::<W512>(nodes, blocks, ray) }
     }
     #[inline(always)]
     fn walk_tlas(
@@ -62,7 +64,7 @@ macro_rules! kernel {
                 ray: &Ray,
                 t_max: &mut f32,
             ) -> Option<BlasHit> {
-                unsafe { simd::closest_blas::<$wide>(nodes, blocks, ray, t_max) }
+                unsafe { simd_block::closest_blas::<$wide>(nodes, blocks, ray, t_max) }
             }
 
             /// # Safety
@@ -73,7 +75,7 @@ macro_rules! kernel {
                 blocks: &[GpuTri4],
                 ray: &Ray,
             ) -> bool {
-                unsafe { simd::occluded_blas::<$wide>(nodes, blocks, ray) }
+                unsafe { simd_block::occluded_blas::<$wide>(nodes, blocks, ray) }
             }
 
             /// # Safety
