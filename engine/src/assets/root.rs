@@ -111,7 +111,12 @@ mod tests {
         let referrer = Path::new("level.ron");
         assert!(root.resolve(referrer, None, "a.obj").is_ok());
         assert!(root.resolve(referrer, None, "./x/../a.obj").is_ok()); // lexical: x need not exist
-        for bad in ["../a.obj", "../../etc/passwd", "/etc/passwd", "x/../../a.obj"] {
+        for bad in [
+            "../a.obj",
+            "../../etc/passwd",
+            "/etc/passwd",
+            "x/../../a.obj",
+        ] {
             match root.resolve(referrer, None, bad) {
                 Err(AssetError::OutsideRoot { requested, .. }) => assert_eq!(requested, bad),
                 other => panic!("{bad}: expected OutsideRoot, got {other:?}"),
