@@ -301,7 +301,8 @@ fn trace_main(@builtin(global_invocation_id) id: vec3<u32>) {
         sum += radiance(id.x, id.y, frame.sample_base + s);
     }
     let index = id.y * frame.width + id.x;
-    film[index] = film[index] + vec4<f32>(sum, 0.0);
+    let new_mean = vec4<f32>(sum / f32(max(frame.spp, 1u)), 0.0);
+    film[index] = mix(film[index], new_mean, frame.film_blend);
     atomicAdd(&counters[0], count_camera);
     atomicAdd(&counters[1], count_bounce);
     atomicAdd(&counters[2], count_shadow);

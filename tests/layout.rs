@@ -98,7 +98,7 @@ fn rust_layouts() -> Vec<RustLayout> {
             camera_right,
             focus_distance,
             camera_up,
-            _padding0,
+            film_blend,
             camera_forward,
             _padding1,
             sun_direction,

@@ -1,6 +1,5 @@
 //! Development aid: times GPU pipeline creation and dispatches on a level.
 //! `cargo run --release -p candela --example gpu_timing -- <level.ron> [asset-root] [size] [spp]`
-use std::sync::Arc;
 use std::time::Instant;
 
 use candela::assets::{AssetRoot, load_level};
@@ -20,7 +19,7 @@ fn main() -> anyhow::Result<()> {
     let size: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(128);
     let spp: u32 = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(4);
     let desc = load_level(&level, &root)?;
-    let scene = Arc::new(RenderScene::build(&desc));
+    let scene = RenderScene::build(&desc);
     let t = Instant::now();
     let ctx = gpu::GpuContext::headless()?;
     let mut tracer = gpu::GpuTracer::new(ctx, &scene)?;
@@ -43,7 +42,7 @@ fn main() -> anyhow::Result<()> {
             scene.lights.weight_total,
             scene.tlas_root,
         );
-        let s = tracer.render(&u)?;
+        let s = tracer.render(&scene, &u)?;
         println!(
             "{} spp: {:.3} s, {:.3} M rays/s ({} rays)",
             settings.spp,

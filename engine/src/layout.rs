@@ -270,7 +270,10 @@ pub struct GpuFrameUniforms {
     pub focus_distance: f32,
     /// Camera up, scaled by `tan(vfov/2)`.
     pub camera_up: [f32; 3],
-    pub _padding0: f32,
+    /// How this render's mean enters the film: `film = mix(film, new_mean, film_blend)`.
+    /// `spp / (samples so far + spp)` keeps an exact running mean; 1 replaces the film;
+    /// the converging policy (Brigade §4.5) sets it from camera and object motion.
+    pub film_blend: f32,
     pub camera_forward: [f32; 3],
     pub _padding1: f32,
     /// Unit vector towards the sun.

@@ -12,7 +12,7 @@
 @group(0) @binding(7) var<storage, read> textures: array<GpuTexture>;
 @group(0) @binding(8) var<storage, read> texels: array<vec2<u32>>;
 @group(0) @binding(9) var<storage, read> lights: array<GpuLight>;
-// Sum of sample radiance per pixel (rgb), rows top to bottom.
+// The converged mean radiance per pixel (rgb), rows top to bottom.
 @group(0) @binding(10) var<storage, read_write> film: array<vec4<f32>>;
 // Rays traced: camera, bounce, shadow; and dropped (non-finite) samples.
 @group(0) @binding(11) var<storage, read_write> counters: array<atomic<u32>, 4>;

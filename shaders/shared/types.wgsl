@@ -115,7 +115,7 @@ struct GpuFrameUniforms {
     camera_right: vec3<f32>,
     focus_distance: f32,
     camera_up: vec3<f32>,
-    _padding0: f32,
+    film_blend: f32,
     camera_forward: vec3<f32>,
     _padding1: f32,
     sun_direction: vec3<f32>,

@@ -7,10 +7,8 @@
 //! of pixels × (batches − 1) degrees of freedom, so the error estimate itself is precise.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use candela::assets::{CameraDesc, Material, Mesh, Model, Placement, SceneDesc};
-use candela::render::film::Film;
 use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
 use glam::{Mat4, Vec3};
 
@@ -32,9 +30,9 @@ pub enum Which {
 }
 
 /// Opens a tracer over `scene`.
-pub fn open(which: Which, scene: &Arc<RenderScene>) -> anyhow::Result<Box<dyn Tracer>> {
+pub fn open(which: Which, scene: &RenderScene) -> anyhow::Result<Box<dyn Tracer>> {
     Ok(match which {
-        Which::Cpu => Box::new(candela::render::cpu::CpuTracer::new(Arc::clone(scene))),
+        Which::Cpu => Box::new(candela::render::cpu::CpuTracer::new()),
         Which::Gpu => {
             let context = candela::render::gpu::GpuContext::headless()?;
             Box::new(candela::render::gpu::GpuTracer::new(context, scene)?)
@@ -51,7 +49,8 @@ pub struct Batches {
     pub spp_per_batch: u32,
 }
 
-/// Renders `desc` with `which`: `batches` passes of `spp` samples each, `width × height`.
+/// Renders `desc` with `which`: `batches` passes of `spp` samples each, `width × height`; each
+/// pass replaces the film (`film_blend = 1`), so the film after it is that batch's mean.
 pub fn render_batches(
     which: Which,
     desc: &SceneDesc,
@@ -61,9 +60,8 @@ pub fn render_batches(
     batches: u32,
     seed: u32,
 ) -> anyhow::Result<Batches> {
-    let scene = Arc::new(RenderScene::build(desc));
+    let scene = RenderScene::build(desc);
     let mut tracer = open(which, &scene)?;
-    let mut previous = Film::new(width, height);
     let mut out = Vec::new();
     for b in 0..batches {
         let mut settings = FrameSettings::new(width, height, spp, seed, &desc.render);
@@ -77,16 +75,8 @@ pub fn render_batches(
             scene.lights.weight_total,
             scene.tlas_root,
         );
-        tracer.render(&uniforms)?;
-        let film = tracer.film()?;
-        let batch: Vec<Vec3> = film
-            .sum
-            .iter()
-            .zip(&previous.sum)
-            .map(|(now, before)| (*now - *before) / spp as f32)
-            .collect();
-        out.push(batch);
-        previous = film;
+        tracer.render(&scene, &uniforms)?;
+        out.push(tracer.film()?.mean);
     }
     Ok(Batches {
         width,

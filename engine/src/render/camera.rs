@@ -28,6 +28,8 @@ pub struct FrameSettings {
     pub roulette_start: u32,
     /// Multiplies the roulette survival probability; 1 is the default.
     pub roulette_scale: f32,
+    /// Weight of this render's mean in the film (see `GpuFrameUniforms::film_blend`).
+    pub film_blend: f32,
 }
 
 impl FrameSettings {
@@ -42,7 +44,16 @@ impl FrameSettings {
             max_bounces: render.max_bounces,
             roulette_start: render.roulette_start,
             roulette_scale: 1.0,
+            film_blend: 1.0,
         }
+    }
+
+    /// Continues an exact running mean: this call's `spp` samples follow `sample_base` earlier
+    /// ones (sets `sample_base` and `film_blend`).
+    pub fn continuing(mut self, sample_base: u32) -> Self {
+        self.sample_base = sample_base;
+        self.film_blend = self.spp as f32 / (sample_base + self.spp).max(1) as f32;
+        self
     }
 }
 
@@ -77,7 +88,7 @@ pub fn frame_uniforms(
         camera_right: (right * tan_half * aspect).to_array(),
         focus_distance,
         camera_up: (up * tan_half).to_array(),
-        _padding0: 0.0,
+        film_blend: frame.film_blend,
         camera_forward: forward.to_array(),
         _padding1: 0.0,
         sun_direction: [0.0, 1.0, 0.0],

@@ -7,6 +7,7 @@
 
 pub use super::cpu::integrator::RayCounts;
 use super::film::Film;
+use super::scene::RenderScene;
 use crate::layout::GpuFrameUniforms;
 
 /// What one `render` call did.
@@ -50,10 +51,16 @@ pub trait Tracer {
     fn name(&self) -> &'static str;
     /// A description of the device (adapter name, thread count).
     fn device(&self) -> String;
-    /// Traces `uniforms.spp` samples per pixel (starting at `uniforms.sample_base`) and adds
-    /// them to the film. The film is resized and cleared when the image size changes.
-    fn render(&mut self, uniforms: &GpuFrameUniforms) -> Result<RenderStats, RenderError>;
-    /// The accumulated image so far (mean radiance per pixel).
+    /// Traces `uniforms.spp` samples per pixel (starting at `uniforms.sample_base`) of `scene`
+    /// and blends their mean into the film: `film = mix(film, mean, uniforms.film_blend)`. The
+    /// film is resized and cleared when the image size changes. `scene` must be the scene the
+    /// tracer was created with, brought up to date with [`Tracer::update`].
+    fn render(
+        &mut self,
+        scene: &RenderScene,
+        uniforms: &GpuFrameUniforms,
+    ) -> Result<RenderStats, RenderError>;
+    /// The converged image so far (mean radiance per pixel).
     fn film(&mut self) -> Result<Film, RenderError>;
     /// Forgets every accumulated sample.
     fn clear(&mut self);

@@ -10,7 +10,6 @@
 //! scene.md gives its time per sample (484 s / 32,768 spp for cornell_box on a 2-core VM).
 
 use std::path::PathBuf;
-use std::sync::Arc;
 
 use candela::assets::{AssetRoot, load_level};
 use candela::render::film::read_exr;
@@ -75,10 +74,9 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
     );
     let level = PathBuf::from("assets/test_scenes/reference/cornell_box.ron");
     let desc = load_level(&level, &AssetRoot::new(&dir)?)?;
-    let scene = Arc::new(RenderScene::build(&desc));
-    let mut tracers: Vec<Box<dyn candela::render::Tracer>> = vec![Box::new(
-        candela::render::cpu::CpuTracer::new(Arc::clone(&scene)),
-    )];
+    let scene = RenderScene::build(&desc);
+    let mut tracers: Vec<Box<dyn candela::render::Tracer>> =
+        vec![Box::new(candela::render::cpu::CpuTracer::new())];
     if !args.no_gpu {
         let context = candela::render::gpu::GpuContext::headless()?;
         tracers.push(Box::new(candela::render::gpu::GpuTracer::new(
@@ -97,14 +95,13 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
             scene.lights.weight_total,
             scene.tlas_root,
         );
-        tracer.render(&u)?;
+        tracer.render(&scene, &u)?;
         tracer.clear();
         let mut seconds = 0.0;
         let mut done = 0;
         while done < args.spp {
             let batch = 8.min(args.spp - done);
-            let mut s = FrameSettings::new(256, 256, batch, 1, &desc.render);
-            s.sample_base = done;
+            let s = FrameSettings::new(256, 256, batch, 1, &desc.render).continuing(done);
             let u = frame_uniforms(
                 &desc.camera,
                 None,
@@ -114,10 +111,10 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
                 scene.lights.weight_total,
                 scene.tlas_root,
             );
-            seconds += tracer.render(&u)?.seconds;
+            seconds += tracer.render(&scene, &u)?.seconds;
             done += batch;
         }
-        let image = tracer.film()?.mean();
+        let image = tracer.film()?.mean;
         let mut e = 0.0;
         for ((a, r), v) in image.iter().zip(&reference).zip(&ref_var) {
             let d: Vec3 = *a - *r;

@@ -13,7 +13,6 @@
 //! dispatch (which also compiles the shader). Hit counts of the two are printed side by side.
 
 use std::path::PathBuf;
-use std::sync::Arc;
 use std::time::Instant;
 
 use candela::assets::{AssetRoot, load_level};
@@ -201,7 +200,7 @@ pub fn run(args: &RaysArgs) -> anyhow::Result<()> {
             .unwrap_or_else(|| PathBuf::from(".")),
     };
     let desc = load_level(&args.level, &AssetRoot::new(root_dir)?)?;
-    let scene = Arc::new(RenderScene::build(&desc));
+    let scene = RenderScene::build(&desc);
     let kinds = make_rays(&scene, args, &desc.camera, desc.sun.map(|s| s.direction));
     let name = args
         .level

@@ -5,7 +5,6 @@
 //! Must not: contain rendering logic (the engine does it).
 
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
 use std::time::Instant;
 
 use anyhow::Context;
@@ -94,15 +93,12 @@ impl std::fmt::Display for CaptureReport {
 }
 
 /// Opens the requested tracer over `scene`.
-pub fn open_tracer(
-    kind: TracerKind,
-    scene: Arc<RenderScene>,
-) -> Result<Box<dyn Tracer>, RenderError> {
+pub fn open_tracer(kind: TracerKind, scene: &RenderScene) -> Result<Box<dyn Tracer>, RenderError> {
     Ok(match kind {
-        TracerKind::Cpu => Box::new(candela::render::cpu::CpuTracer::new(scene)),
+        TracerKind::Cpu => Box::new(candela::render::cpu::CpuTracer::new()),
         TracerKind::Gpu => {
             let context = candela::render::gpu::GpuContext::headless()?;
-            Box::new(candela::render::gpu::GpuTracer::new(context, &scene)?)
+            Box::new(candela::render::gpu::GpuTracer::new(context, scene)?)
         }
     })
 }
@@ -127,9 +123,9 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let root = level_root(&args.level, args.asset_root.as_deref())?;
     let started = Instant::now();
     let desc = load_level(&args.level, &root)?;
-    let scene = Arc::new(RenderScene::build(&desc));
+    let scene = RenderScene::build(&desc);
     let build_seconds = started.elapsed().as_secs_f64();
-    let mut tracer = open_tracer(args.tracer, Arc::clone(&scene))
+    let mut tracer = open_tracer(args.tracer, &scene)
         .with_context(|| format!("cannot open the {:?} tracer", args.tracer))?;
 
     let progress = if args.quiet {
@@ -149,9 +145,8 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let mut done = 0;
     while done < args.spp {
         let batch = args.batch.max(1).min(args.spp - done);
-        let mut settings =
-            FrameSettings::new(args.width, args.height, batch, args.seed, &desc.render);
-        settings.sample_base = done;
+        let settings = FrameSettings::new(args.width, args.height, batch, args.seed, &desc.render)
+            .continuing(done);
         let uniforms = frame_uniforms(
             &desc.camera,
             desc.sun.as_ref(),
@@ -161,7 +156,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
             scene.lights.weight_total,
             scene.tlas_root,
         );
-        let stats = tracer.render(&uniforms)?;
+        let stats = tracer.render(&scene, &uniforms)?;
         rays += stats.rays();
         render_seconds += stats.seconds;
         done += batch;
@@ -169,14 +164,14 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     }
     progress.finish_and_clear();
     let film = tracer.film()?;
-    let pixels = film.mean();
+    let pixels = &film.mean;
     let tonemap = TonemapSettings {
         exposure_ev: args.exposure,
         ..Default::default()
     };
-    write_png(&args.out, film.width, film.height, &pixels, &tonemap)?;
+    write_png(&args.out, film.width, film.height, pixels, &tonemap)?;
     if let Some(exr) = &args.exr {
-        write_exr(exr, film.width, film.height, &pixels)?;
+        write_exr(exr, film.width, film.height, pixels)?;
     }
     Ok(CaptureReport {
         tracer: tracer.name(),

@@ -1,11 +1,10 @@
 //! [`CpuTracer`]: renders a `RenderScene` on all CPU cores.
 //!
 //! Owns: splitting the image into 16×16 tiles handed to rayon, running the integrator for every
-//! sample of every pixel of a tile, and adding the tile sums to the film. Sums are formed in
-//! sample order inside each pixel, so the film is bit-identical for any thread count.
-//! Must not: change the scene.
+//! sample of every pixel of a tile, and blending each pixel's mean into the film. Sums are
+//! formed in sample order inside each pixel, so the film is bit-identical for any thread count.
+//! Must not: change the scene (it reads the caller's `RenderScene` in place).
 
-use std::sync::Arc;
 use std::time::Instant;
 
 use glam::Vec3;
@@ -20,18 +19,22 @@ use crate::render::tracer::{RenderError, RenderStats, Tracer};
 /// Tile edge in pixels.
 const TILE: u32 = 16;
 
-/// The CPU path tracer.
+/// The CPU path tracer. It keeps only the film: the scene is read from the caller.
 pub struct CpuTracer {
-    scene: Arc<RenderScene>,
     film: Film,
 }
 
 impl CpuTracer {
-    pub fn new(scene: Arc<RenderScene>) -> Self {
+    pub fn new() -> Self {
         Self {
-            scene,
             film: Film::new(0, 0),
         }
+    }
+}
+
+impl Default for CpuTracer {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -44,7 +47,11 @@ impl Tracer for CpuTracer {
         format!("CPU, {} threads", rayon::current_num_threads())
     }
 
-    fn render(&mut self, u: &GpuFrameUniforms) -> Result<RenderStats, RenderError> {
+    fn render(
+        &mut self,
+        scene: &RenderScene,
+        u: &GpuFrameUniforms,
+    ) -> Result<RenderStats, RenderError> {
         if u.width == 0 || u.height == 0 {
             return Err(RenderError::BadSize {
                 width: u.width,
@@ -58,7 +65,6 @@ impl Tracer for CpuTracer {
         let started = Instant::now();
         let tiles_x = u.width.div_ceil(TILE);
         let tiles_y = u.height.div_ceil(TILE);
-        let scene = &*self.scene;
         let tracer = scene.trace_scene();
         let results: Vec<(u32, Vec<Vec3>, RayCounts)> = (0..tiles_x * tiles_y)
             .into_par_iter()
@@ -88,10 +94,16 @@ impl Tracer for CpuTracer {
             let w = (x1 - x0) as usize;
             for (i, s) in sums.iter().enumerate() {
                 let (x, y) = (x0 as usize + i % w, y0 as usize + i / w);
-                self.film.sum[y * u.width as usize + x] += *s;
+                let pixel = &mut self.film.mean[y * u.width as usize + x];
+                let new = *s / u.spp.max(1) as f32;
+                *pixel += (new - *pixel) * u.film_blend;
             }
         }
-        self.film.samples += u.spp;
+        self.film.samples = if u.film_blend >= 1.0 {
+            u.spp
+        } else {
+            self.film.samples + u.spp
+        };
         Ok(RenderStats {
             counts,
             seconds: started.elapsed().as_secs_f64(),

@@ -266,7 +266,11 @@ impl Tracer for GpuTracer {
         self.context.describe()
     }
 
-    fn render(&mut self, u: &GpuFrameUniforms) -> Result<RenderStats, RenderError> {
+    fn render(
+        &mut self,
+        _scene: &RenderScene,
+        u: &GpuFrameUniforms,
+    ) -> Result<RenderStats, RenderError> {
         if u.width == 0 || u.height == 0 {
             return Err(RenderError::BadSize {
                 width: u.width,
@@ -297,7 +301,11 @@ impl Tracer for GpuTracer {
         context.queue.submit([encoder.finish()]);
         let counters_bytes = self.read_buffer(&film.counters)?;
         let c: &[u32] = bytemuck::cast_slice(&counters_bytes);
-        self.samples += u.spp;
+        self.samples = if u.film_blend >= 1.0 {
+            u.spp
+        } else {
+            self.samples + u.spp
+        };
         Ok(RenderStats {
             counts: RayCounts {
                 camera: c[0] as u64,
@@ -318,7 +326,7 @@ impl Tracer for GpuTracer {
         Ok(Film {
             width: film.width,
             height: film.height,
-            sum: texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect(),
+            mean: texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect(),
             samples: self.samples,
         })
     }
