@@ -134,6 +134,9 @@ const _: () = assert!(size_of::<GpuInstance>() == 128);
 
 /// `GpuInstance::flags`: the transform is the identity (rays need not be transformed).
 pub const INSTANCE_FLAG_IDENTITY: u32 = 1;
+/// `GpuInstance::flags`: the instance's light group is switched off: its emissive triangles
+/// emit nothing and are absent from the light table (Brigade §6.1: not just multiplied by zero).
+pub const INSTANCE_FLAG_EMISSION_OFF: u32 = 2;
 
 /// Vertex indices (relative to the instance's `vertex_base`) and the global material index.
 /// 16 bytes.

@@ -12,6 +12,8 @@ pub mod layout;
 
 pub mod assets;
 
+pub mod ecs;
+
 pub mod accel;
 pub mod trace;
 

@@ -7,6 +7,7 @@ struct Surface {
     tangent: vec4<f32>,
     uv: vec2<f32>,
     material: u32,
+    emits: bool,
 }
 
 struct Shading {
@@ -72,13 +73,16 @@ fn resolve_surface(hit: Hit, direction: vec3<f32>) -> Surface {
     if (inst.material_override != INVALID) {
         material = inst.material_override;
     }
-    return Surface(position, ng, ns, tangent, uv, material);
+    return Surface(position, ng, ns, tangent, uv, material, (inst.flags & INSTANCE_FLAG_EMISSION_OFF) == 0u);
 }
 
 fn shade_surface(s: Surface) -> Shading {
     let m = materials[s.material];
     let base = m.base_color * sample_texture(m.base_color_texture, s.uv);
-    let emission = m.emission.xyz * sample_texture(m.emission_texture, s.uv).xyz;
+    var emission = vec3<f32>(0.0);
+    if (s.emits) {
+        emission = m.emission.xyz * sample_texture(m.emission_texture, s.uv).xyz;
+    }
     let mr = sample_texture(m.metal_rough_texture, s.uv);
     let roughness = clamp(m.roughness * mr.y, 0.0, 1.0);
     var ns = s.shading_normal;

@@ -6,6 +6,7 @@ const INVALID: u32 = 0xffffffffu;
 const LEAF_BIT: u32 = 0x80000000u;
 
 const INSTANCE_FLAG_IDENTITY: u32 = 1u;
+const INSTANCE_FLAG_EMISSION_OFF: u32 = 2u;
 
 const MATERIAL_DIFFUSE: u32 = 0u;
 const MATERIAL_CONDUCTOR: u32 = 1u;

@@ -46,6 +46,9 @@ pub fn build_lights(
 ) -> LightTable {
     let mut lights = Vec::new();
     for (instance_index, instance) in instances.iter().enumerate() {
+        if instance.flags & crate::layout::INSTANCE_FLAG_EMISSION_OFF != 0 {
+            continue;
+        }
         let first = instance.triangle_base as usize;
         let count = triangle_counts.get(instance_index).copied().unwrap_or(0) as usize;
         for local in 0..count {

@@ -8,8 +8,10 @@ pub mod gpu;
 pub mod lights;
 pub mod materials;
 pub mod scene;
+pub mod scene_writes;
 pub mod tracer;
 
 pub use camera::{FrameSettings, frame_uniforms};
 pub use scene::RenderScene;
+pub use scene_writes::{SceneHeader, SceneWrite};
 pub use tracer::{RenderError, RenderStats, Tracer};

@@ -11,7 +11,10 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::bsdf::Bsdf;
 use super::texture;
-use crate::layout::{GpuInstance, GpuMaterial, INVALID, MATERIAL_DIELECTRIC, MATERIAL_METAL_ROUGH};
+use crate::layout::{
+    GpuInstance, GpuMaterial, INSTANCE_FLAG_EMISSION_OFF, INVALID, MATERIAL_DIELECTRIC,
+    MATERIAL_METAL_ROUGH,
+};
 use crate::render::scene::RenderScene;
 use crate::trace::Hit;
 
@@ -28,6 +31,8 @@ pub struct Surface {
     pub tangent: Vec4,
     pub uv: Vec2,
     pub material: u32,
+    /// False when the instance's light group is off (`INSTANCE_FLAG_EMISSION_OFF`).
+    pub emits: bool,
 }
 
 /// Object-space vector to world space with the instance's 3×3 part.
@@ -94,6 +99,7 @@ pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
         tangent,
         uv,
         material,
+        emits: inst.flags & INSTANCE_FLAG_EMISSION_OFF == 0,
     }
 }
 
@@ -112,7 +118,11 @@ pub fn shade(scene: &RenderScene, surface: &Surface) -> Shading {
     let m: &GpuMaterial = &scene.materials[surface.material as usize];
     let tex = |index: u32| texture::sample(&scene.textures, &scene.texels, index, surface.uv);
     let base = Vec4::from(m.base_color) * tex(m.base_color_texture);
-    let emission = Vec3::from_slice(&m.emission[..3]) * tex(m.emission_texture).truncate();
+    let emission = if surface.emits {
+        Vec3::from_slice(&m.emission[..3]) * tex(m.emission_texture).truncate()
+    } else {
+        Vec3::ZERO
+    };
     let metal_rough = tex(m.metal_rough_texture);
     let roughness = (m.roughness * metal_rough.y).clamp(0.0, 1.0);
     let mut shading_normal = surface.shading_normal;

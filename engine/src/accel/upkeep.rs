@@ -1,0 +1,428 @@
+//! The game side's flattened scene and its upkeep: what changed this frame becomes buffer
+//! writes for the commit (Brigade §4.4).
+//!
+//! Owns: [`Upkeep`] — the authoritative copy of the flattened scene on the main thread (ray
+//! queries read it), per-mesh slots in the node/block/vertex buffers, the instance table and
+//! which entity owns which instance, light groups, and the policy: rigid movers change only
+//! their instance rows; a deforming mesh is refitted every frame it changes and rebuilt when its
+//! SAH cost exceeds [`REBUILD_RATIO`] × its cost at the last build; the TLAS is rebuilt every
+//! frame an instance changed; the light table every frame an emitter changed. Only what changed
+//! is written. Main thread. Must not: talk to the GPU or the render thread (the commit carries
+//! the writes).
+//!
+//! Instance operations live in `upkeep_instances.rs`.
+
+use std::collections::{HashMap, HashSet};
+
+use glam::{Mat4, Vec3};
+use rayon::prelude::*;
+
+use super::blas::{Blas, build_blas};
+use super::bounds::Aabb;
+use super::refit::{refit_blas, sah_cost};
+use super::tlas::build_tlas;
+use crate::assets::{Material, Model};
+use crate::ecs::ModelHandle;
+use crate::layout::{GpuBvh8Node, GpuTriangle, GpuVertex};
+use crate::render::lights::{LightTable, build_lights};
+use crate::render::materials::{pack_textures, to_gpu_material};
+use crate::render::scene::{RenderScene, SceneStats, mesh_vertices};
+use crate::render::scene_writes::{SceneHeader, SceneWrite};
+
+/// Rebuild a deforming mesh's BLAS when its SAH cost after refitting exceeds this multiple of
+/// its cost right after its last build. Chosen by measurement: see `docs/PERFORMANCE.md`
+/// ("BVH upkeep"); a refit is 10–30× cheaper than a rebuild, and traversal slows roughly in
+/// proportion to the SAH cost.
+pub const REBUILD_RATIO: f32 = 1.5;
+
+/// Where one mesh lives in the flattened buffers.
+#[derive(Clone, Debug)]
+pub(super) struct MeshSlot {
+    pub(super) blas: Blas,
+    pub(super) node_base: u32,
+    pub(super) node_capacity: u32,
+    pub(super) block_base: u32,
+    pub(super) block_capacity: u32,
+    pub(super) triangle_base: u32,
+    pub(super) vertex_base: u32,
+    pub(super) vertex_count: u32,
+    pub(super) triangles: Vec<[u32; 3]>,
+    /// SAH cost right after the last (re)build.
+    pub(super) built_cost: f32,
+    /// Any of its triangles' materials emits.
+    pub(super) emissive: bool,
+}
+
+/// A registered model: its meshes' slots and where each is placed.
+#[derive(Clone, Debug)]
+pub(super) struct ModelRecord {
+    pub(super) meshes: Vec<usize>,
+    pub(super) placements: Vec<(usize, Mat4)>,
+}
+
+/// What the upkeep did in one frame (for the stats overlay and the "model no more than a scene
+/// needs" report).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct UpkeepStats {
+    pub instances_written: u32,
+    pub blas_refits: u32,
+    pub blas_rebuilds: u32,
+    pub tlas_builds: u32,
+    pub light_table_builds: u32,
+    /// Bytes of all writes of the frame.
+    pub bytes: usize,
+    /// Seconds spent in refits, rebuilds and the TLAS.
+    pub seconds: f64,
+}
+
+/// The game side's flattened scene.
+pub struct Upkeep {
+    pub(super) scene: RenderScene,
+    pub(super) models: Vec<ModelRecord>,
+    pub(super) meshes: Vec<MeshSlot>,
+    /// Owner entity and mesh slot of every row of `scene.instances`.
+    pub(super) rows: Vec<(hecs::Entity, usize)>,
+    /// Rows of every entity, and its light group.
+    pub(super) entities: HashMap<hecs::Entity, (Vec<u32>, Option<u32>)>,
+    pub(super) groups_off: HashSet<u32>,
+    pub(super) level_material_base: u32,
+    /// End of the BLAS part of the node buffer; the TLAS follows.
+    pub(super) blas_node_end: u32,
+    pub(super) pending: Vec<SceneWrite>,
+    pub(super) tlas_dirty: bool,
+    pub(super) lights_dirty: bool,
+    pub(super) stats: UpkeepStats,
+}
+
+impl Default for Upkeep {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl Upkeep {
+    /// An empty scene.
+    pub fn new() -> Self {
+        let scene = RenderScene {
+            nodes: vec![GpuBvh8Node::EMPTY],
+            blocks: Vec::new(),
+            instances: Vec::new(),
+            triangles: Vec::new(),
+            vertices: Vec::new(),
+            materials: Vec::new(),
+            textures: Vec::new(),
+            texels: Vec::new(),
+            lights: build_lights(&[], &[], &[], &[], &[]),
+            tlas_root: 0,
+            bounds: Aabb::EMPTY,
+            stats: SceneStats::default(),
+        };
+        Self {
+            scene,
+            models: Vec::new(),
+            meshes: Vec::new(),
+            rows: Vec::new(),
+            entities: HashMap::new(),
+            groups_off: HashSet::new(),
+            level_material_base: 0,
+            blas_node_end: 0,
+            pending: vec![SceneWrite::Nodes {
+                first: 0,
+                data: vec![GpuBvh8Node::EMPTY],
+            }],
+            tlas_dirty: true,
+            lights_dirty: true,
+            stats: UpkeepStats::default(),
+        }
+    }
+
+    /// The scene as of the last [`Upkeep::finish_frame`] (what ray queries read).
+    pub fn scene(&self) -> &RenderScene {
+        &self.scene
+    }
+
+    /// Appends materials the level defines (instance overrides index them); returns the first
+    /// one's index in the material table. Call once, before any instance uses an override.
+    pub fn add_level_materials(&mut self, materials: &[Material]) -> u32 {
+        let base = self.scene.materials.len() as u32;
+        let gpu: Vec<_> = materials
+            .iter()
+            .map(|m| to_gpu_material(m, 0, &[]))
+            .collect();
+        self.push(SceneWrite::Materials {
+            first: base,
+            data: gpu,
+        });
+        self.level_material_base = base;
+        base
+    }
+
+    /// Registers `model`: builds every mesh's BLAS (in parallel) and appends its geometry,
+    /// materials and textures. Its instances come later, one per entity.
+    pub fn add_model(&mut self, model: &Model) -> ModelHandle {
+        let started = std::time::Instant::now();
+        let (textures, texels, _, means) = pack_textures(std::slice::from_ref(model));
+        let texture_base = self.scene.textures.len() as u32;
+        let texel_base = self.scene.texels.len() as u32;
+        let textures: Vec<_> = textures
+            .into_iter()
+            .map(|mut t| {
+                t.texel_offset += texel_base;
+                t
+            })
+            .collect();
+        let mut global_means = vec![1.0; texture_base as usize];
+        global_means.extend(means);
+        let material_base = self.scene.materials.len() as u32;
+        let default = [Material::default()];
+        let source = if model.materials.is_empty() {
+            &default[..]
+        } else {
+            &model.materials[..]
+        };
+        let materials: Vec<_> = source
+            .iter()
+            .map(|m| to_gpu_material(m, texture_base, &global_means))
+            .collect();
+        let material_count = materials.len() as u32;
+        if !textures.is_empty() {
+            self.push(SceneWrite::Textures {
+                first: texture_base,
+                data: textures,
+            });
+            self.push(SceneWrite::Texels {
+                first: texel_base,
+                data: texels,
+            });
+        }
+        let emissive: Vec<bool> = materials.iter().map(|m| m.emission[3] > 0.0).collect();
+        self.push(SceneWrite::Materials {
+            first: material_base,
+            data: materials,
+        });
+        let built: Vec<Blas> = model
+            .meshes
+            .par_iter()
+            .map(|m| build_blas(&m.positions, &m.triangles))
+            .collect();
+        let mut mesh_slots = Vec::new();
+        for (mesh, blas) in model.meshes.iter().zip(built) {
+            let triangle_base = self.scene.triangles.len() as u32;
+            let vertex_base = self.scene.vertices.len() as u32;
+            let triangles: Vec<GpuTriangle> = mesh
+                .triangles
+                .iter()
+                .enumerate()
+                .map(|(i, t)| GpuTriangle {
+                    indices: *t,
+                    material: material_base
+                        + mesh
+                            .triangle_materials
+                            .get(i)
+                            .copied()
+                            .filter(|&m| m < material_count)
+                            .unwrap_or(0),
+                })
+                .collect();
+            let vertices: Vec<GpuVertex> = mesh_vertices(mesh).collect();
+            let vertex_count = vertices.len() as u32;
+            self.push(SceneWrite::Triangles {
+                first: triangle_base,
+                data: triangles,
+            });
+            self.push(SceneWrite::Vertices {
+                first: vertex_base,
+                data: vertices,
+            });
+            let slot_emissive = mesh
+                .triangle_materials
+                .iter()
+                .any(|&m| emissive.get(m as usize).copied().unwrap_or(false));
+            let built_cost = sah_cost(&blas.nodes, &blas.blocks);
+            let mut slot = MeshSlot {
+                node_base: 0,
+                node_capacity: blas.nodes.len() as u32,
+                block_base: self.scene.blocks.len() as u32,
+                block_capacity: blas.blocks.len() as u32,
+                triangle_base,
+                vertex_base,
+                vertex_count,
+                triangles: mesh.triangles.clone(),
+                built_cost,
+                emissive: slot_emissive,
+                blas,
+            };
+            self.place_blas(&mut slot, true);
+            mesh_slots.push(self.meshes.len());
+            self.meshes.push(slot);
+        }
+        self.models.push(ModelRecord {
+            meshes: mesh_slots,
+            placements: model
+                .placements
+                .iter()
+                .filter(|p| p.mesh < model.meshes.len())
+                .map(|p| (p.mesh, p.model_from_mesh))
+                .collect(),
+        });
+        self.stats.seconds += started.elapsed().as_secs_f64();
+        ModelHandle(self.models.len() as u32 - 1)
+    }
+
+    /// Writes `slot.blas` into the node and block buffers: in place when it fits the slot's
+    /// capacity, else at the end of the BLAS area (the TLAS moves behind it).
+    pub(super) fn place_blas(&mut self, slot: &mut MeshSlot, new: bool) {
+        let nodes = slot.blas.nodes.len() as u32;
+        let blocks = slot.blas.blocks.len() as u32;
+        if new || nodes > slot.node_capacity {
+            slot.node_base = self.blas_node_end;
+            slot.node_capacity = nodes;
+            self.blas_node_end += nodes;
+            self.tlas_dirty = true;
+        }
+        if new || blocks > slot.block_capacity {
+            slot.block_base = self.scene.blocks.len() as u32;
+            slot.block_capacity = blocks;
+        }
+        let (node_base, block_base) = (slot.node_base, slot.block_base);
+        self.push(SceneWrite::Nodes {
+            first: node_base,
+            data: slot.blas.nodes.clone(),
+        });
+        self.push(SceneWrite::Blocks {
+            first: block_base,
+            data: slot.blas.blocks.clone(),
+        });
+    }
+
+    /// New object-space positions (and optionally normals) for mesh `mesh` of `model`: refits
+    /// its BLAS, or rebuilds it when the refit has degraded past [`REBUILD_RATIO`]. Every
+    /// placement of the model shows the new shape. Wrong vertex counts are ignored (logged).
+    pub fn deform(
+        &mut self,
+        model: ModelHandle,
+        mesh: usize,
+        positions: &[Vec3],
+        normals: Option<&[Vec3]>,
+    ) {
+        let Some(&slot_index) = self
+            .models
+            .get(model.0 as usize)
+            .and_then(|m| m.meshes.get(mesh))
+        else {
+            log::warn!("deform: model {} has no mesh {mesh}", model.0);
+            return;
+        };
+        let started = std::time::Instant::now();
+        let mut slot = self.meshes[slot_index].clone();
+        let first = slot.vertex_base as usize;
+        let count = slot.vertex_count as usize;
+        if positions.len() != count || normals.is_some_and(|n| n.len() != count) {
+            log::warn!("deform: mesh has {count} vertices, got {}", positions.len());
+            return;
+        }
+        let mut vertices = self.scene.vertices[first..first + count].to_vec();
+        for (i, v) in vertices.iter_mut().enumerate() {
+            v.position = positions[i].to_array();
+            if let Some(n) = normals {
+                v.normal = n[i].to_array();
+            }
+        }
+        self.push(SceneWrite::Vertices {
+            first: first as u32,
+            data: vertices,
+        });
+        let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
+        if cost > REBUILD_RATIO * slot.built_cost {
+            slot.blas = build_blas(positions, &slot.triangles);
+            slot.built_cost = sah_cost(&slot.blas.nodes, &slot.blas.blocks);
+            self.stats.blas_rebuilds += 1;
+            self.place_blas(&mut slot, false);
+            self.rewrite_rows_of_slot(slot_index, &slot);
+        } else {
+            self.stats.blas_refits += 1;
+            self.place_blas(&mut slot, false);
+        }
+        self.meshes[slot_index] = slot;
+        self.refresh_bounds_of_slot(slot_index);
+        self.stats.seconds += started.elapsed().as_secs_f64();
+    }
+
+    /// Switches a light group on or off.
+    pub fn set_light_group(&mut self, group: u32, on: bool) {
+        let changed = if on {
+            self.groups_off.remove(&group)
+        } else {
+            self.groups_off.insert(group)
+        };
+        if changed {
+            self.apply_group_flags(group);
+        }
+    }
+
+    /// Ends the frame: rebuilds the TLAS and the light table if needed, and returns the
+    /// frame's writes, the header and the statistics. The scene is then what queries read.
+    pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
+        if self.tlas_dirty {
+            let started = std::time::Instant::now();
+            let bounds: Vec<Aabb> = self
+                .rows
+                .iter()
+                .enumerate()
+                .map(|(i, _)| self.row_bounds(i))
+                .collect();
+            let tlas = build_tlas(&bounds);
+            self.scene.bounds = bounds.iter().fold(Aabb::EMPTY, |a, b| a.union(*b));
+            self.scene.tlas_root = self.blas_node_end;
+            self.push(SceneWrite::Nodes {
+                first: self.blas_node_end,
+                data: tlas,
+            });
+            self.stats.tlas_builds += 1;
+            self.stats.seconds += started.elapsed().as_secs_f64();
+            self.tlas_dirty = false;
+        }
+        if self.lights_dirty {
+            let counts: Vec<u32> = self
+                .rows
+                .iter()
+                .map(|&(_, s)| self.meshes[s].triangles.len() as u32)
+                .collect();
+            let table = build_lights(
+                &self.scene.instances,
+                &counts,
+                &self.scene.triangles,
+                &self.scene.vertices,
+                &self.scene.materials,
+            );
+            self.push(SceneWrite::Lights {
+                first: 0,
+                data: table.lights.clone(),
+            });
+            self.scene.lights = LightTable {
+                lights: std::mem::take(&mut self.scene.lights.lights),
+                ..table
+            };
+            self.stats.light_table_builds += 1;
+            self.lights_dirty = false;
+        }
+        self.scene.stats.instances = self.rows.len();
+        self.scene.stats.lights = self.scene.lights.count as usize;
+        let writes = std::mem::take(&mut self.pending);
+        let mut stats = std::mem::take(&mut self.stats);
+        stats.bytes = writes.iter().map(SceneWrite::bytes).sum();
+        (writes, self.scene.header(), stats)
+    }
+
+    /// The flattened scene, giving up the upkeep (for one-shot builds).
+    pub fn into_scene(self) -> RenderScene {
+        self.scene
+    }
+
+    /// Records a write and applies it to the game-side copy.
+    pub(super) fn push(&mut self, write: SceneWrite) {
+        let header = self.scene.header();
+        self.scene.apply(std::slice::from_ref(&write), &header);
+        self.pending.push(write);
+    }
+}

@@ -1,0 +1,218 @@
+//! Instance rows of the [`Upkeep`]: spawning, moving, re-materialising and removing the
+//! instances of entities, and keeping rows in step with their meshes and light groups.
+//!
+//! Owns: the mapping entity ↔ instance rows (one row per placement of the entity's model) and
+//! the writes of `GpuInstance` rows. Rows of removed entities are filled by swapping in the last
+//! row, so the table stays dense. Main thread. Must not: touch BLAS data (see `upkeep.rs`).
+
+use glam::Mat4;
+use hecs::Entity;
+
+use super::bounds::Aabb;
+use super::upkeep::Upkeep;
+use crate::ecs::ModelHandle;
+use crate::layout::{GpuInstance, INSTANCE_FLAG_EMISSION_OFF, INSTANCE_FLAG_IDENTITY, INVALID};
+use crate::render::scene_writes::SceneWrite;
+
+fn affine_rows(m: Mat4) -> [[f32; 4]; 3] {
+    let r = m.transpose().to_cols_array_2d();
+    [r[0], r[1], r[2]]
+}
+
+impl Upkeep {
+    fn instance_row(
+        &self,
+        slot: usize,
+        world_from_object: Mat4,
+        material_override: Option<u32>,
+        group: Option<u32>,
+    ) -> GpuInstance {
+        let mesh = &self.meshes[slot];
+        let mut flags = 0;
+        if world_from_object == Mat4::IDENTITY {
+            flags |= INSTANCE_FLAG_IDENTITY;
+        }
+        if group.is_some_and(|g| self.groups_off.contains(&g)) {
+            flags |= INSTANCE_FLAG_EMISSION_OFF;
+        }
+        let inverse = world_from_object.inverse();
+        GpuInstance {
+            world_from_object: affine_rows(world_from_object),
+            object_from_world: affine_rows(if inverse.is_finite() {
+                inverse
+            } else {
+                Mat4::ZERO
+            }),
+            node_base: mesh.node_base,
+            block_base: mesh.block_base,
+            triangle_base: mesh.triangle_base,
+            vertex_base: mesh.vertex_base,
+            material_override: material_override
+                .map(|m| self.level_material_base + m)
+                .unwrap_or(INVALID),
+            flags,
+            _padding: [0; 2],
+        }
+    }
+
+    /// Places (or moves) `entity` showing `model` at `world_from_model`, with an optional level
+    /// material override and light group. The same model again rewrites the entity's rows; a
+    /// different model replaces them.
+    pub fn set_instance(
+        &mut self,
+        entity: Entity,
+        model: ModelHandle,
+        world_from_model: Mat4,
+        material_override: Option<u32>,
+        group: Option<u32>,
+    ) {
+        let Some(record) = self.models.get(model.0 as usize).cloned() else {
+            log::warn!("set_instance: unknown model {}", model.0);
+            return;
+        };
+        let existing = self.entities.get(&entity).map(|(rows, _)| rows.clone());
+        let reuse = existing.as_ref().is_some_and(|rows| {
+            rows.len() == record.placements.len()
+                && rows
+                    .iter()
+                    .zip(&record.placements)
+                    .all(|(&r, &(mesh, _))| self.rows[r as usize].1 == record.meshes[mesh])
+        });
+        if existing.is_some() && !reuse {
+            self.remove_instance(entity);
+        }
+        let mut rows = Vec::with_capacity(record.placements.len());
+        for (i, &(mesh, model_from_mesh)) in record.placements.iter().enumerate() {
+            let slot = record.meshes[mesh];
+            let row = self.instance_row(
+                slot,
+                world_from_model * model_from_mesh,
+                material_override,
+                group,
+            );
+            let index = if reuse {
+                existing.as_ref().map(|r| r[i]).unwrap_or(0)
+            } else {
+                self.rows.push((entity, slot));
+                self.rows.len() as u32 - 1
+            };
+            self.push(SceneWrite::Instances {
+                first: index,
+                data: vec![row],
+            });
+            rows.push(index);
+            if self.meshes[slot].emissive {
+                self.lights_dirty = true;
+            }
+        }
+        self.stats.instances_written += rows.len() as u32;
+        if group.is_some() || self.entities.get(&entity).is_some_and(|(_, g)| g.is_some()) {
+            self.lights_dirty = true;
+        }
+        self.entities.insert(entity, (rows, group));
+        self.tlas_dirty = true;
+    }
+
+    /// Removes `entity`'s instances (nothing if it has none).
+    pub fn remove_instance(&mut self, entity: Entity) {
+        let Some((mut rows, _)) = self.entities.remove(&entity) else {
+            return;
+        };
+        rows.sort_unstable_by(|a, b| b.cmp(a));
+        for index in rows {
+            let index = index as usize;
+            let last = self.rows.len() - 1;
+            if self.meshes[self.rows[index].1].emissive {
+                self.lights_dirty = true;
+            }
+            if index != last {
+                let moved = self.scene.instances[last];
+                let (owner, slot) = self.rows[last];
+                self.rows[index] = (owner, slot);
+                if let Some((owner_rows, _)) = self.entities.get_mut(&owner) {
+                    for r in owner_rows.iter_mut().filter(|r| **r as usize == last) {
+                        *r = index as u32;
+                    }
+                }
+                self.push(SceneWrite::Instances {
+                    first: index as u32,
+                    data: vec![moved],
+                });
+            }
+            self.rows.pop();
+            self.push(SceneWrite::TruncateInstances {
+                len: self.rows.len() as u32,
+            });
+        }
+        self.tlas_dirty = true;
+    }
+
+    /// Rewrites the emission flag of every row of the entities in `group`.
+    pub(super) fn apply_group_flags(&mut self, group: u32) {
+        let off = self.groups_off.contains(&group);
+        let rows: Vec<u32> = self
+            .entities
+            .values()
+            .filter(|(_, g)| *g == Some(group))
+            .flat_map(|(rows, _)| rows.iter().copied())
+            .collect();
+        for r in rows {
+            let mut row = self.scene.instances[r as usize];
+            if off {
+                row.flags |= INSTANCE_FLAG_EMISSION_OFF;
+            } else {
+                row.flags &= !INSTANCE_FLAG_EMISSION_OFF;
+            }
+            self.push(SceneWrite::Instances {
+                first: r,
+                data: vec![row],
+            });
+            self.stats.instances_written += 1;
+        }
+        self.lights_dirty = true;
+    }
+
+    /// After a mesh's BLAS moved in the buffers: point its rows at the new place.
+    pub(super) fn rewrite_rows_of_slot(
+        &mut self,
+        slot_index: usize,
+        slot: &super::upkeep::MeshSlot,
+    ) {
+        for r in 0..self.rows.len() {
+            if self.rows[r].1 != slot_index {
+                continue;
+            }
+            let mut row = self.scene.instances[r];
+            row.node_base = slot.node_base;
+            row.block_base = slot.block_base;
+            self.push(SceneWrite::Instances {
+                first: r as u32,
+                data: vec![row],
+            });
+            self.stats.instances_written += 1;
+        }
+    }
+
+    /// After a mesh changed shape: the TLAS (and, for emitters, the light table) must follow.
+    pub(super) fn refresh_bounds_of_slot(&mut self, slot_index: usize) {
+        if self.rows.iter().any(|&(_, s)| s == slot_index) {
+            self.tlas_dirty = true;
+            if self.meshes[slot_index].emissive {
+                self.lights_dirty = true;
+            }
+        }
+    }
+
+    /// World bounds of row `i`.
+    pub(super) fn row_bounds(&self, i: usize) -> Aabb {
+        let slot = self.rows[i].1;
+        let r = &self.scene.instances[i].world_from_object;
+        let m = Mat4::from_cols_array_2d(&[r[0], r[1], r[2], [0.0, 0.0, 0.0, 1.0]]).transpose();
+        self.meshes[slot].blas.bounds.transformed(&m)
+    }
+
+    /// The entity that owns instance row `row` (for ray queries).
+    pub fn entity_of_instance(&self, row: u32) -> Option<Entity> {
+        self.rows.get(row as usize).map(|&(e, _)| e)
+    }
+}

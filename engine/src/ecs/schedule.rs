@@ -1,0 +1,22 @@
+//! The order of the engine's work in one frame (Brigade §4.2, Figure 7). Games insert their
+//! systems in the `game rules` slot; everything else is the engine's.
+//!
+//! ```text
+//! main thread   input → game rules (fixed 60 Hz steps) → physics → animation → triggers
+//!               → propagate_transforms → extract (typed scene changes)
+//!               → upkeep (instances, refit/rebuild, TLAS, lights) → seal commit N → hand-off
+//! render thread … render N−1 │ apply commit N │ render N │ …
+//! ```
+//! The hand-off is the only synchronisation point; game rules for frame N+1 run while frame N
+//! renders. Ray queries read the scene as of the last sealed commit.
+
+/// The engine's systems in the order the runner calls them each frame.
+pub const SYSTEM_ORDER: &[&str] = &[
+    "input",
+    "game rules (fixed steps)",
+    "propagate_transforms",
+    "extract",
+    "upkeep",
+    "seal commit",
+    "hand-off",
+];
