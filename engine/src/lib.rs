@@ -14,7 +14,15 @@ pub mod assets;
 
 pub mod ecs;
 
+pub mod extract;
+
 pub mod accel;
 pub mod trace;
 
+pub mod commit;
+
 pub mod render;
+
+pub mod query;
+
+pub mod app;

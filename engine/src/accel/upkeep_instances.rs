@@ -211,6 +211,35 @@ impl Upkeep {
         self.meshes[slot].blas.bounds.transformed(&m)
     }
 
+    /// Applies one frame's extracted changes.
+    pub fn apply_changes(&mut self, changes: Vec<crate::extract::SceneChange>) {
+        use crate::extract::SceneChange;
+        for change in changes {
+            match change {
+                SceneChange::Place {
+                    entity,
+                    model,
+                    world_from_model,
+                    material_override,
+                    light_group,
+                } => self.set_instance(
+                    entity,
+                    model,
+                    world_from_model,
+                    material_override,
+                    light_group,
+                ),
+                SceneChange::Remove { entity } => self.remove_instance(entity),
+                SceneChange::Deform {
+                    model,
+                    mesh,
+                    positions,
+                    normals,
+                } => self.deform(model, mesh, &positions, normals.as_deref()),
+            }
+        }
+    }
+
     /// The entity that owns instance row `row` (for ray queries).
     pub fn entity_of_instance(&self, row: u32) -> Option<Entity> {
         self.rows.get(row as usize).map(|&(e, _)| e)

@@ -98,6 +98,8 @@ pub struct Deformable {
     /// Index of the mesh within the entity's model.
     pub mesh: usize,
     pub positions: Vec<Vec3>,
+    /// New vertex normals (same count), or `None` to keep the mesh's.
+    pub normals: Option<Vec<Vec3>>,
     /// Set by the game when `positions` changed this step; cleared by the upkeep.
     pub dirty: bool,
 }

@@ -7,11 +7,14 @@ pub mod film;
 pub mod gpu;
 pub mod lights;
 pub mod materials;
+pub mod scaling;
 pub mod scene;
 pub mod scene_writes;
+pub mod thread;
 pub mod tracer;
 
 pub use camera::{FrameSettings, frame_uniforms};
 pub use scene::RenderScene;
 pub use scene_writes::{SceneHeader, SceneWrite};
+pub use thread::{RenderConfig, RenderThread, Rendered, TracerChoice};
 pub use tracer::{RenderError, RenderStats, Tracer};

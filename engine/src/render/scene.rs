@@ -100,6 +100,24 @@ impl RenderScene {
         scene
     }
 
+    /// A scene with nothing in it (the render thread's copy before the first commit).
+    pub fn empty() -> RenderScene {
+        RenderScene {
+            nodes: Vec::new(),
+            blocks: Vec::new(),
+            instances: Vec::new(),
+            triangles: Vec::new(),
+            vertices: Vec::new(),
+            materials: Vec::new(),
+            textures: Vec::new(),
+            texels: Vec::new(),
+            lights: LightTable::default(),
+            tlas_root: 0,
+            bounds: Aabb::EMPTY,
+            stats: SceneStats::default(),
+        }
+    }
+
     /// A view for the CPU traversal kernels.
     pub fn trace_scene(&self) -> crate::trace::TraceScene<'_> {
         crate::trace::TraceScene {

@@ -8,6 +8,7 @@
 pub use super::cpu::integrator::RayCounts;
 use super::film::Film;
 use super::scene::RenderScene;
+use super::scene_writes::SceneWrite;
 use crate::layout::GpuFrameUniforms;
 
 /// What one `render` call did.
@@ -60,6 +61,9 @@ pub trait Tracer {
         scene: &RenderScene,
         uniforms: &GpuFrameUniforms,
     ) -> Result<RenderStats, RenderError>;
+    /// Brings the tracer's copy of the scene up to date after `writes` (a commit's deltas)
+    /// were applied to `scene`. The CPU tracer reads `scene` itself and has nothing to do.
+    fn update(&mut self, scene: &RenderScene, writes: &[SceneWrite]) -> Result<(), RenderError>;
     /// The converged image so far (mean radiance per pixel).
     fn film(&mut self) -> Result<Film, RenderError>;
     /// Forgets every accumulated sample.

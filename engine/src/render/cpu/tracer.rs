@@ -110,6 +110,14 @@ impl Tracer for CpuTracer {
         })
     }
 
+    fn update(
+        &mut self,
+        _scene: &RenderScene,
+        _writes: &[crate::render::scene_writes::SceneWrite],
+    ) -> Result<(), RenderError> {
+        Ok(())
+    }
+
     fn film(&mut self) -> Result<Film, RenderError> {
         Ok(self.film.clone())
     }

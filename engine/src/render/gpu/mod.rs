@@ -4,6 +4,7 @@ mod context;
 mod ray_batch;
 mod shaders;
 mod tracer;
+mod upload;
 
 pub use context::GpuContext;
 pub use shaders::{SHARED, ShaderSource, compose};

@@ -37,8 +37,8 @@ pub struct GpuTracer {
 pub(super) struct FilmBuffers {
     width: u32,
     height: u32,
-    film: wgpu::Buffer,
-    counters: wgpu::Buffer,
+    pub(super) film: wgpu::Buffer,
+    pub(super) counters: wgpu::Buffer,
     pub(super) bind_group: wgpu::BindGroup,
 }
 
@@ -87,7 +87,9 @@ impl GpuTracer {
                 device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                     label: Some(name),
                     contents: bytes,
-                    usage: wgpu::BufferUsages::STORAGE,
+                    usage: wgpu::BufferUsages::STORAGE
+                        | wgpu::BufferUsages::COPY_DST
+                        | wgpu::BufferUsages::COPY_SRC,
                 }),
             );
         }
@@ -182,28 +184,7 @@ impl GpuTracer {
                     | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            let mut entries: Vec<wgpu::BindGroupEntry> = self
-                .scene_buffers
-                .iter()
-                .enumerate()
-                .map(|(i, b)| wgpu::BindGroupEntry {
-                    binding: i as u32,
-                    resource: b.as_entire_binding(),
-                })
-                .collect();
-            entries.push(wgpu::BindGroupEntry {
-                binding: 10,
-                resource: film.as_entire_binding(),
-            });
-            entries.push(wgpu::BindGroupEntry {
-                binding: 11,
-                resource: counters.as_entire_binding(),
-            });
-            let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("trace"),
-                layout: &self.layout,
-                entries: &entries,
-            });
+            let bind_group = self.bind_group(&film, &counters);
             self.film = Some(FilmBuffers {
                 width,
                 height,
@@ -216,6 +197,46 @@ impl GpuTracer {
         self.film
             .as_ref()
             .ok_or_else(|| RenderError::Device("film buffers missing".into()))
+    }
+
+    /// The group-0 bind group over the current scene buffers, `film` and `counters`.
+    pub(super) fn bind_group(
+        &self,
+        film: &wgpu::Buffer,
+        counters: &wgpu::Buffer,
+    ) -> wgpu::BindGroup {
+        let mut entries: Vec<wgpu::BindGroupEntry> = self
+            .scene_buffers
+            .iter()
+            .enumerate()
+            .map(|(i, b)| wgpu::BindGroupEntry {
+                binding: i as u32,
+                resource: b.as_entire_binding(),
+            })
+            .collect();
+        entries.push(wgpu::BindGroupEntry {
+            binding: 10,
+            resource: film.as_entire_binding(),
+        });
+        entries.push(wgpu::BindGroupEntry {
+            binding: 11,
+            resource: counters.as_entire_binding(),
+        });
+        self.context
+            .device
+            .create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("trace"),
+                layout: &self.layout,
+                entries: &entries,
+            })
+    }
+
+    /// Rebuilds the film's bind group after a scene buffer was replaced.
+    pub(super) fn rebind(&mut self) {
+        if let Some(film) = self.film.take() {
+            let bind_group = self.bind_group(&film.film, &film.counters);
+            self.film = Some(FilmBuffers { bind_group, ..film });
+        }
     }
 
     pub(super) fn film_buffers_ref(&self) -> Option<&FilmBuffers> {
@@ -315,6 +336,14 @@ impl Tracer for GpuTracer {
             },
             seconds: started.elapsed().as_secs_f64(),
         })
+    }
+
+    fn update(
+        &mut self,
+        scene: &RenderScene,
+        writes: &[crate::render::scene_writes::SceneWrite],
+    ) -> Result<(), RenderError> {
+        self.upload(scene, writes)
     }
 
     fn film(&mut self) -> Result<Film, RenderError> {

@@ -1,0 +1,176 @@
+//! [`Engine`]: one frame of the Brigade pipeline, headless. The window runner drives the same
+//! frames.
+//!
+//! Owns: the world (hecs), the game side's [`Upkeep`] (and so the ray-query scene), the
+//! [`Extractor`], the fixed-step clock and the [`RenderThread`]. A frame: run the game's fixed
+//! steps (with queries on the previous frame's BVH) → propagate transforms → extract → upkeep →
+//! seal the commit → hand it off. The game rules of frame N+1 then run while the render thread
+//! renders frame N. Main thread.
+//! Must not: render (the render thread does) or block on anything but the hand-off.
+
+use std::time::Instant;
+
+use hecs::World;
+
+use super::clock::FixedClock;
+use crate::accel::Upkeep;
+use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
+use crate::commit::{Commit, Motion};
+use crate::ecs::propagate_transforms;
+use crate::extract::Extractor;
+use crate::query::Queries;
+use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
+
+/// Everything about the scene that is not an entity: sun, sky, render settings, and the view to
+/// use when no entity carries a camera.
+#[derive(Clone, Copy, Debug)]
+pub struct Environment {
+    pub sun: Option<SunDesc>,
+    pub sky: SkyDesc,
+    pub render: RenderSettings,
+    pub default_camera: CameraDesc,
+}
+
+/// Errors of the runner.
+#[derive(Debug, thiserror::Error)]
+pub enum EngineError {
+    #[error(transparent)]
+    Render(#[from] RenderError),
+}
+
+/// What one call of [`Engine::frame`] did on the main thread.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FrameReport {
+    pub frame: u64,
+    pub steps: u32,
+    /// Seconds in game rules (fixed steps) and transform propagation.
+    pub update_seconds: f64,
+    /// Seconds in extraction and upkeep (BVH refits/rebuilds, TLAS, lights).
+    pub upkeep_seconds: f64,
+    /// Seconds waiting for the render thread to take the commit.
+    pub handoff_seconds: f64,
+    pub commit_bytes: usize,
+}
+
+/// The engine's frame loop.
+pub struct Engine {
+    pub world: World,
+    pub upkeep: Upkeep,
+    pub environment: Environment,
+    pub clock: FixedClock,
+    extractor: Extractor,
+    render: RenderThread,
+    frame: u64,
+    camera: CameraDesc,
+    cut: bool,
+    capture_next: bool,
+}
+
+impl Engine {
+    /// Starts the render thread with `config`.
+    pub fn new(config: RenderConfig, environment: Environment) -> Result<Self, EngineError> {
+        Ok(Self {
+            world: World::new(),
+            upkeep: Upkeep::new(),
+            camera: environment.default_camera,
+            environment,
+            clock: FixedClock::default(),
+            extractor: Extractor::new(),
+            render: RenderThread::spawn(config)?,
+            frame: 0,
+            cut: true,
+            capture_next: false,
+        })
+    }
+
+    /// Marks the next frame as a camera cut (the converged image restarts).
+    pub fn cut(&mut self) {
+        self.cut = true;
+    }
+
+    /// Asks the render thread to send the converged film back after the next frame.
+    pub fn capture_next(&mut self) {
+        self.capture_next = true;
+    }
+
+    /// Runs one frame: `frame_seconds` of simulated time in fixed steps of game rules
+    /// (`game(world, queries, step_seconds)`), then extraction, upkeep and the hand-off.
+    pub fn frame(
+        &mut self,
+        frame_seconds: f64,
+        mut game: impl FnMut(&mut World, Queries<'_>, f64),
+    ) -> Result<FrameReport, EngineError> {
+        let started = Instant::now();
+        let steps = self.clock.advance(frame_seconds);
+        for _ in 0..steps {
+            game(
+                &mut self.world,
+                self.upkeep.queries(),
+                self.clock.step_seconds,
+            );
+        }
+        propagate_transforms(&mut self.world);
+        let update_seconds = started.elapsed().as_secs_f64();
+
+        let started = Instant::now();
+        let extracted = self.extractor.extract(&mut self.world);
+        let objects = !extracted.changes.is_empty();
+        self.upkeep.apply_changes(extracted.changes);
+        let (writes, header, upkeep) = self.upkeep.finish_frame();
+        if let Some(camera) = extracted.camera {
+            self.camera = camera;
+        }
+        let upkeep_seconds = started.elapsed().as_secs_f64();
+
+        let commit = Commit {
+            frame: self.frame,
+            writes,
+            header,
+            camera: self.camera,
+            sun: self.environment.sun,
+            sky: self.environment.sky,
+            render: self.environment.render,
+            motion: Motion {
+                cut: std::mem::take(&mut self.cut),
+                camera: if extracted.camera.is_some() {
+                    extracted.camera_motion
+                } else {
+                    0.0
+                },
+                objects,
+            },
+            upkeep,
+            capture: std::mem::take(&mut self.capture_next),
+            update_seconds,
+        };
+        let commit_bytes = commit.bytes();
+        let started = Instant::now();
+        self.render.submit(commit)?;
+        let handoff_seconds = started.elapsed().as_secs_f64();
+        let report = FrameReport {
+            frame: self.frame,
+            steps,
+            update_seconds,
+            upkeep_seconds,
+            handoff_seconds,
+            commit_bytes,
+        };
+        self.frame += 1;
+        Ok(report)
+    }
+
+    /// Render results that are ready.
+    pub fn rendered(&self) -> Vec<Result<Rendered, RenderError>> {
+        self.render.ready()
+    }
+
+    /// Waits for the next render result.
+    pub fn wait_rendered(&self) -> Option<Result<Rendered, RenderError>> {
+        self.render.wait()
+    }
+
+    /// Stops the render thread after it rendered everything submitted; returns those results.
+    pub fn shutdown(self) -> Vec<Result<Rendered, RenderError>> {
+        self.render.shutdown()
+    }
+}

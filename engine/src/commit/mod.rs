@@ -1,0 +1,8 @@
+//! The commit buffer: everything the render thread learns about a frame, sealed once per frame
+//! on the main thread, and the hand-off between the two threads.
+
+mod handoff;
+mod sealed;
+
+pub use handoff::{CommitReceiver, CommitSender, commit_channel};
+pub use sealed::{Commit, Motion};

@@ -1,0 +1,48 @@
+//! [`Commit`]: one frame's deltas for the render thread (Brigade §4.4, Figure 7).
+//!
+//! Owns: the sealed frame — buffer writes (instances, refitted or rebuilt BLAS data, deformed
+//! vertices, materials, light table, TLAS) with the header they leave behind, the view, sun, sky
+//! and render settings, and how much moved (for converging). Static data travels once, in the
+//! first commit after it is loaded. Must not: reference the ECS (the render thread never sees
+//! game state).
+
+use crate::accel::UpkeepStats;
+use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
+use crate::render::scene_writes::{SceneHeader, SceneWrite};
+
+/// What moved since the previous commit, for the converging policy.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Motion {
+    /// A camera cut (teleport, level change): forget the accumulated image.
+    pub cut: bool,
+    /// How far the camera moved: metres of translation plus radians of rotation.
+    pub camera: f32,
+    /// Whether any rendered object moved, deformed, changed material or light.
+    pub objects: bool,
+}
+
+/// One frame, sealed.
+#[derive(Clone, Debug)]
+pub struct Commit {
+    pub frame: u64,
+    pub writes: Vec<SceneWrite>,
+    pub header: SceneHeader,
+    pub camera: CameraDesc,
+    pub sun: Option<SunDesc>,
+    pub sky: SkyDesc,
+    pub render: RenderSettings,
+    pub motion: Motion,
+    /// What the upkeep did to produce `writes`.
+    pub upkeep: UpkeepStats,
+    /// Read the converged film back after rendering this frame (screenshots, captures).
+    pub capture: bool,
+    /// Seconds the main thread spent on game update (fixed steps) for this frame.
+    pub update_seconds: f64,
+}
+
+impl Commit {
+    /// Bytes of scene data this commit carries.
+    pub fn bytes(&self) -> usize {
+        self.writes.iter().map(SceneWrite::bytes).sum()
+    }
+}

@@ -1,0 +1,5 @@
+//! Extraction: the world's renderable state → typed, deduplicated scene changes.
+
+mod changes;
+
+pub use changes::{Extracted, Extractor, SceneChange};

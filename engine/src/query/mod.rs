@@ -1,0 +1,7 @@
+//! CPU single-ray queries for game code (Brigade §4.6): lasers, picking, line of sight, ground
+//! probes, against the full-detail scene (animated objects included) as of the last sealed
+//! commit.
+
+mod queries;
+
+pub use queries::{Queries, QueryHit};

@@ -1,0 +1,178 @@
+//! Dynamic workload scaling (Brigade §4.7): hold a frame time by trading samples per pixel, the
+//! Russian-roulette survival scale and the render resolution.
+//!
+//! Owns: a small controller over the measured frame time (exponential average). Too slow by
+//! more than 10 %: first fewer samples per pixel, then a lower roulette scale (shorter paths; no
+//! bias, more noise), then a lower resolution (presented upscaled). Fast by more than 25 %: the
+//! reverse order. One step per three frames, so that each step's effect is measured before the
+//! next. Render thread. Must not: change anything but the workload numbers.
+
+/// What to hold and within which bounds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScalingTarget {
+    /// Target seconds per frame (1/60 for 60 Hz).
+    pub frame_seconds: f32,
+    pub min_spp: u32,
+    pub max_spp: u32,
+    /// Lowest roulette scale (1 = default survival).
+    pub min_roulette: f32,
+    /// Lowest render resolution, as a fraction of the output size per axis.
+    pub min_resolution: f32,
+}
+
+impl ScalingTarget {
+    /// Hold `frame_seconds` with the default bounds (1–64 spp, roulette ≥ 0.5, resolution ≥ ½).
+    pub fn new(frame_seconds: f32) -> Self {
+        Self {
+            frame_seconds,
+            min_spp: 1,
+            max_spp: 64,
+            min_roulette: 0.5,
+            min_resolution: 0.5,
+        }
+    }
+}
+
+/// The workload of one frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Workload {
+    pub spp: u32,
+    pub roulette_scale: f32,
+    /// Fraction of the output resolution per axis.
+    pub resolution: f32,
+}
+
+impl Workload {
+    /// The film size for an output of `width × height`.
+    pub fn film_size(&self, width: u32, height: u32) -> (u32, u32) {
+        let scale = |n: u32| ((n as f32 * self.resolution).round() as u32).clamp(1, n.max(1));
+        (scale(width), scale(height))
+    }
+}
+
+/// The controller.
+#[derive(Clone, Debug)]
+pub struct Scaling {
+    target: Option<ScalingTarget>,
+    work: Workload,
+    smoothed: Option<f32>,
+    cooldown: u32,
+    resized: bool,
+}
+
+impl Scaling {
+    /// Starts at `spp` samples per pixel, full resolution, default roulette.
+    pub fn new(spp: u32, target: Option<ScalingTarget>) -> Self {
+        Self {
+            target,
+            work: Workload {
+                spp: spp.max(1),
+                roulette_scale: 1.0,
+                resolution: 1.0,
+            },
+            smoothed: None,
+            cooldown: 0,
+            resized: false,
+        }
+    }
+
+    /// The workload for the next frame.
+    pub fn current(&self) -> Workload {
+        self.work
+    }
+
+    /// Whether the last adjustment changed the resolution (reported once).
+    pub fn resized(&mut self) -> bool {
+        std::mem::take(&mut self.resized)
+    }
+
+    /// Feeds the measured seconds of the frame just rendered.
+    pub fn observe(&mut self, seconds: f64) {
+        let Some(t) = self.target else {
+            return;
+        };
+        let s = self
+            .smoothed
+            .map_or(seconds as f32, |s| 0.7 * s + 0.3 * seconds as f32);
+        self.smoothed = Some(s);
+        if self.cooldown > 0 {
+            self.cooldown -= 1;
+            return;
+        }
+        let before = self.work;
+        let w = &mut self.work;
+        if s > 1.1 * t.frame_seconds {
+            if w.spp > t.min_spp {
+                w.spp = (w.spp * 3 / 4).max(t.min_spp).min(w.spp - 1);
+            } else if w.roulette_scale > t.min_roulette + 1e-6 {
+                w.roulette_scale = (w.roulette_scale - 0.1).max(t.min_roulette);
+            } else if w.resolution > t.min_resolution + 1e-6 {
+                w.resolution = (w.resolution - 0.125).max(t.min_resolution);
+            }
+        } else if s < 0.75 * t.frame_seconds {
+            if w.resolution < 1.0 {
+                w.resolution = (w.resolution + 0.125).min(1.0);
+            } else if w.roulette_scale < 1.0 {
+                w.roulette_scale = (w.roulette_scale + 0.1).min(1.0);
+            } else if w.spp < t.max_spp {
+                w.spp = (w.spp + w.spp.div_ceil(4)).min(t.max_spp);
+            }
+        }
+        if self.work != before {
+            self.cooldown = 3;
+            self.resized |= self.work.resolution != before.resolution;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A synthetic renderer whose frame time is proportional to the work.
+    fn cost(w: &Workload) -> f64 {
+        0.002
+            * w.spp as f64
+            * (0.5 + 0.5 * w.roulette_scale as f64)
+            * (w.resolution * w.resolution) as f64
+    }
+
+    #[test]
+    fn converges_to_the_target_from_both_sides() {
+        for start in [1, 64] {
+            let mut s = Scaling::new(start, Some(ScalingTarget::new(0.02)));
+            for _ in 0..400 {
+                let w = s.current();
+                s.observe(cost(&w));
+            }
+            let t = cost(&s.current());
+            assert!(
+                t <= 0.022 && t >= 0.75 * 0.02 * 0.7,
+                "start {start}: {:?} costs {t}",
+                s.current()
+            );
+        }
+    }
+
+    #[test]
+    fn gives_up_resolution_only_after_samples_and_roulette() {
+        let mut s = Scaling::new(4, Some(ScalingTarget::new(0.001)));
+        let mut seen_low_res_with_spp = false;
+        for _ in 0..200 {
+            let w = s.current();
+            if w.resolution < 1.0 && (w.spp > 1 || w.roulette_scale > 0.5 + 1e-6) {
+                seen_low_res_with_spp = true;
+            }
+            s.observe(1.0);
+        }
+        assert!(!seen_low_res_with_spp);
+        assert_eq!(
+            s.current(),
+            Workload {
+                spp: 1,
+                roulette_scale: 0.5,
+                resolution: 0.5
+            }
+        );
+    }
+}

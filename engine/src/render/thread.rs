@@ -1,0 +1,225 @@
+//! The render thread (Brigade §4.2, Figure 7): receive commit → apply → trace → converge →
+//! report.
+//!
+//! Owns: the tracer (and with it the wgpu device for the GPU tracer), the render side's copy of
+//! the flattened scene, the converging state and workload scaling. It never reads game state:
+//! all it sees are sealed commits. Results (statistics, and the film when a commit asks for it)
+//! go back on a channel. Dropping the sender side ends the thread cleanly.
+//! Must not: touch the ECS or the main thread's upkeep.
+
+use std::sync::mpsc::{Receiver, Sender, channel};
+use std::thread::JoinHandle;
+use std::time::Instant;
+
+use super::film::{Converge, ConvergePolicy, Film};
+use super::scaling::{Scaling, ScalingTarget};
+use super::scene::RenderScene;
+use super::tracer::{RenderError, RenderStats, Tracer};
+use super::{FrameSettings, frame_uniforms};
+use crate::commit::{Commit, CommitReceiver, CommitSender, commit_channel};
+
+/// Which tracer the render thread runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TracerChoice {
+    Gpu,
+    Cpu,
+}
+
+/// How the render thread renders.
+#[derive(Clone, Copy, Debug)]
+pub struct RenderConfig {
+    pub tracer: TracerChoice,
+    /// Output size in pixels (the film may be smaller when scaling lowers the resolution).
+    pub width: u32,
+    pub height: u32,
+    /// Samples per pixel per frame (the starting point when scaling is on).
+    pub spp: u32,
+    pub seed: u32,
+    pub converge: ConvergePolicy,
+    /// Hold a frame time by adapting spp, roulette and resolution (`None`: fixed workload).
+    pub scaling: Option<ScalingTarget>,
+}
+
+/// What the render thread did with one commit.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    pub frame: u64,
+    pub stats: RenderStats,
+    /// Seconds spent applying the commit (CPU copy and GPU upload).
+    pub apply_seconds: f64,
+    /// Seconds spent tracing.
+    pub render_seconds: f64,
+    /// The converging blend factor used.
+    pub blend: f32,
+    /// Samples per pixel, roulette scale and film size used.
+    pub spp: u32,
+    pub roulette_scale: f32,
+    pub film_size: (u32, u32),
+    /// Bytes of scene data the commit carried.
+    pub commit_bytes: usize,
+    /// Main-thread figures carried through for the stats overlay.
+    pub update_seconds: f64,
+    pub upkeep: crate::accel::UpkeepStats,
+    /// The converged film, when the commit asked for it.
+    pub film: Option<Film>,
+}
+
+/// A running render thread.
+pub struct RenderThread {
+    sender: Option<CommitSender>,
+    results: Receiver<Result<Rendered, RenderError>>,
+    handle: Option<JoinHandle<()>>,
+}
+
+fn open_tracer(choice: TracerChoice, scene: &RenderScene) -> Result<Box<dyn Tracer>, RenderError> {
+    Ok(match choice {
+        TracerChoice::Cpu => Box::new(super::cpu::CpuTracer::new()),
+        TracerChoice::Gpu => {
+            let context = super::gpu::GpuContext::headless()?;
+            Box::new(super::gpu::GpuTracer::new(context, scene)?)
+        }
+    })
+}
+
+fn render_one(
+    commit: Commit,
+    config: &RenderConfig,
+    scene: &mut RenderScene,
+    tracer: &mut dyn Tracer,
+    converge: &mut Converge,
+    scaling: &mut Scaling,
+) -> Result<Rendered, RenderError> {
+    let started = Instant::now();
+    scene.apply(&commit.writes, &commit.header);
+    tracer.update(scene, &commit.writes)?;
+    let apply_seconds = started.elapsed().as_secs_f64();
+    let work = scaling.current();
+    let (width, height) = work.film_size(config.width, config.height);
+    if scaling.resized() {
+        converge.reset();
+    }
+    let blend = converge.blend(&commit.motion);
+    let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &commit.render);
+    settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
+    settings.film_blend = blend;
+    settings.roulette_scale = work.roulette_scale;
+    let uniforms = frame_uniforms(
+        &commit.camera,
+        commit.sun.as_ref(),
+        &commit.sky,
+        &settings,
+        scene.lights.count,
+        scene.lights.weight_total,
+        scene.tlas_root,
+    );
+    let started = Instant::now();
+    let stats = tracer.render(scene, &uniforms)?;
+    let render_seconds = started.elapsed().as_secs_f64();
+    scaling.observe(render_seconds + apply_seconds);
+    let film = if commit.capture {
+        Some(tracer.film()?)
+    } else {
+        None
+    };
+    Ok(Rendered {
+        frame: commit.frame,
+        stats,
+        apply_seconds,
+        render_seconds,
+        blend,
+        spp: work.spp,
+        roulette_scale: work.roulette_scale,
+        film_size: (width, height),
+        commit_bytes: commit.bytes(),
+        update_seconds: commit.update_seconds,
+        upkeep: commit.upkeep,
+        film,
+    })
+}
+
+fn run(
+    config: RenderConfig,
+    commits: CommitReceiver,
+    results: Sender<Result<Rendered, RenderError>>,
+) {
+    let mut scene = RenderScene::empty();
+    let mut tracer = match open_tracer(config.tracer, &scene) {
+        Ok(t) => t,
+        Err(e) => {
+            let _ = results.send(Err(e));
+            return;
+        }
+    };
+    let mut converge = Converge::new(config.converge);
+    let mut scaling = Scaling::new(config.spp, config.scaling);
+    while let Ok(commit) = commits.recv() {
+        let outcome = render_one(
+            commit,
+            &config,
+            &mut scene,
+            tracer.as_mut(),
+            &mut converge,
+            &mut scaling,
+        );
+        let failed = outcome.is_err();
+        if results.send(outcome).is_err() || failed {
+            return;
+        }
+    }
+}
+
+impl RenderThread {
+    /// Starts the render thread. Tracer set-up happens on it; a failure there arrives as the
+    /// first result.
+    pub fn spawn(config: RenderConfig) -> Result<Self, RenderError> {
+        let (sender, receiver) = commit_channel();
+        let (result_tx, results) = channel();
+        let handle = std::thread::Builder::new()
+            .name("candela-render".into())
+            .spawn(move || run(config, receiver, result_tx))
+            .map_err(|e| RenderError::Device(format!("cannot start the render thread: {e}")))?;
+        Ok(Self {
+            sender: Some(sender),
+            results,
+            handle: Some(handle),
+        })
+    }
+
+    /// Hands a sealed commit over (blocks while the render thread still holds the previous
+    /// one). Fails when the render thread has stopped; its error then comes with the results.
+    pub fn submit(&self, commit: Commit) -> Result<(), RenderError> {
+        self.sender
+            .as_ref()
+            .ok_or_else(|| RenderError::Device("render thread shut down".into()))?
+            .send(commit)
+            .map_err(|_| RenderError::Device("the render thread has stopped".into()))
+    }
+
+    /// Results that are ready, without waiting.
+    pub fn ready(&self) -> Vec<Result<Rendered, RenderError>> {
+        self.results.try_iter().collect()
+    }
+
+    /// Waits for the next result (`None` once the thread has ended and nothing is left).
+    pub fn wait(&self) -> Option<Result<Rendered, RenderError>> {
+        self.results.recv().ok()
+    }
+
+    /// Ends the thread after it has rendered every submitted commit; returns their results.
+    pub fn shutdown(mut self) -> Vec<Result<Rendered, RenderError>> {
+        self.sender = None;
+        if let Some(handle) = self.handle.take() {
+            let _ = handle.join();
+        }
+        self.results.try_iter().collect()
+    }
+}
+
+impl Drop for RenderThread {
+    fn drop(&mut self) {
+        self.sender = None;
+        if let Some(handle) = self.handle.take() {
+            let _ = handle.join();
+        }
+    }
+}
