@@ -75,11 +75,7 @@ fn model(meshes: Vec<Mesh>, materials: Vec<Material>, textures: Vec<Texture>) ->
 
 fn scene(model: Model, eye: Vec3, target: Vec3, fov: f32) -> SceneDesc {
     let mut d = SceneDesc::single(model, camera(eye, target, fov));
-    d.instances = vec![SceneInstance {
-        model: 0,
-        world_from_model: Mat4::IDENTITY,
-        material_override: None,
-    }];
+    d.instances = vec![SceneInstance::placed(0, Mat4::IDENTITY)];
     d
 }
 

@@ -32,11 +32,7 @@ fn scene(models: Vec<Model>) -> SceneDesc {
     );
     desc.models = models;
     desc.instances = (0..desc.models.len())
-        .map(|model| SceneInstance {
-            model,
-            world_from_model: Mat4::IDENTITY,
-            material_override: None,
-        })
+        .map(|model| SceneInstance::placed(model, Mat4::IDENTITY))
         .collect();
     desc
 }

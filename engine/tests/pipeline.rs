@@ -287,23 +287,11 @@ fn still_scene_converges_to_a_direct_render() {
     desc.sky = environment().sky;
     desc.render = environment().render;
     desc.instances = vec![
-        SceneInstance {
-            model: 0,
-            world_from_model: Mat4::IDENTITY,
-            material_override: None,
-        },
-        SceneInstance {
-            model: 1,
-            world_from_model: Mat4::from_translation(Vec3::Y * 4.0),
-            material_override: None,
-        },
+        SceneInstance::placed(0, Mat4::IDENTITY),
+        SceneInstance::placed(1, Mat4::from_translation(Vec3::Y * 4.0)),
     ];
     for m in positions {
-        desc.instances.push(SceneInstance {
-            model: 2,
-            world_from_model: m,
-            material_override: None,
-        });
+        desc.instances.push(SceneInstance::placed(2, m));
     }
     let direct = candela_direct_mean(&desc, 24, 80);
     let ours: f64 = film.mean.iter().map(|p| p.x as f64).sum::<f64>() / film.mean.len() as f64;

@@ -83,6 +83,18 @@ impl Engine {
         })
     }
 
+    /// The view used while no entity carries a camera.
+    pub fn set_default_camera(&mut self, camera: CameraDesc) {
+        self.environment.default_camera = camera;
+        self.camera = camera;
+        self.cut = true;
+    }
+
+    /// Simulated seconds since the start (fixed steps taken × step length).
+    pub fn time_seconds(&self) -> f64 {
+        self.clock.steps as f64 * self.clock.step_seconds
+    }
+
     /// Marks the next frame as a camera cut (the converged image restarts).
     pub fn cut(&mut self) {
         self.cut = true;

@@ -3,6 +3,10 @@
 
 mod clock;
 mod engine;
+mod level;
+mod waves;
 
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
+pub use level::SpawnedLevel;
+pub use waves::{Waves, waves_system};

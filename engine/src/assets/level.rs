@@ -35,6 +35,9 @@ pub struct Level {
     /// Materials defined by the level, usable as instance overrides.
     #[serde(default)]
     pub materials: Vec<LevelMaterial>,
+    /// Grids the engine makes (usable as models by name).
+    #[serde(default)]
+    pub grids: Vec<GridEntry>,
     /// Placed copies of models.
     #[serde(default)]
     pub instances: Vec<InstanceEntry>,
@@ -62,13 +65,51 @@ pub struct ModelEntry {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InstanceEntry {
-    /// Name of a [`ModelEntry`].
+    /// Name of a [`ModelEntry`] or a [`GridEntry`].
     pub model: String,
+    /// A name game code and capture scripts refer to the instance by.
+    #[serde(default)]
+    pub name: Option<String>,
     #[serde(default)]
     pub transform: TransformDesc,
     /// Name of a [`LevelMaterial`] that replaces every material of the model.
     #[serde(default)]
     pub material: Option<String>,
+    /// The instance moves (its transform is compared every frame); otherwise it is static.
+    #[serde(default)]
+    pub dynamic: bool,
+    /// The light group its emitters belong to.
+    #[serde(default)]
+    pub light_group: Option<u32>,
+    /// Animate the model's first mesh with travelling waves (deforming every frame).
+    #[serde(default)]
+    pub waves: Option<WaveDesc>,
+}
+
+/// A flat grid made by the engine (water surfaces, test floors): `size` metres in x and z,
+/// `divisions` quads along each, facing +Y, with normals and texture coordinates.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GridEntry {
+    pub name: String,
+    pub size: [f32; 2],
+    pub divisions: [u32; 2],
+    /// Name of a [`LevelMaterial`].
+    pub material: String,
+}
+
+/// Two travelling sine waves displacing a grid vertically: height
+/// `a·sin(k·x − ω·t) + a/2·sin(k·1.7·(x + z)·0.7 − 1.3·ω·t)` with `k = 2π/wavelength`,
+/// `ω = k·speed`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WaveDesc {
+    /// Metres.
+    pub amplitude: f32,
+    /// Metres.
+    pub wavelength: f32,
+    /// Metres per second.
+    pub speed: f32,
 }
 
 /// Scale, then rotate, then translate. Rotation: Euler angles in degrees, applied as yaw about
@@ -222,13 +263,16 @@ fn default_attenuation_color() -> [f32; 3] {
 impl Level {
     /// Parses a level from RON text; `path` only names the file in errors.
     pub fn parse(path: &Path, text: &str) -> AssetResult<Level> {
-        ron::from_str::<Level>(text).map_err(|e| AssetError::Level {
-            path: path.to_path_buf(),
-            message: format!(
-                "line {}, column {}: {}",
-                e.span.start.line, e.span.start.col, e.code
-            ),
-        })
+        ron::Options::default()
+            .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+            .from_str::<Level>(text)
+            .map_err(|e| AssetError::Level {
+                path: path.to_path_buf(),
+                message: format!(
+                    "line {}, column {}: {}",
+                    e.span.start.line, e.span.start.col, e.code
+                ),
+            })
     }
 
     /// Reads and parses a level file.
@@ -255,13 +299,15 @@ impl Level {
             path: path.to_path_buf(),
             source,
         };
-        let text =
-            ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default()).map_err(|e| {
-                AssetError::Level {
-                    path: path.to_path_buf(),
-                    message: format!("cannot serialise: {e}"),
-                }
-            })?;
+        let text = ron::ser::to_string_pretty(
+            self,
+            ron::ser::PrettyConfig::default()
+                .extensions(ron::extensions::Extensions::IMPLICIT_SOME),
+        )
+        .map_err(|e| AssetError::Level {
+            path: path.to_path_buf(),
+            message: format!("cannot serialise: {e}"),
+        })?;
         let file_name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())

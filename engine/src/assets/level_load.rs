@@ -34,12 +34,14 @@ pub fn scene_from_level(
         message,
     };
     let mut model_index = HashMap::new();
-    for (i, entry) in level.models.iter().enumerate() {
-        if model_index.insert(entry.name.as_str(), i).is_some() {
-            return Err(level_error(format!(
-                "model name {:?} is used twice",
-                entry.name
-            )));
+    let names = level
+        .models
+        .iter()
+        .map(|m| m.name.as_str())
+        .chain(level.grids.iter().map(|g| g.name.as_str()));
+    for (i, name) in names.enumerate() {
+        if model_index.insert(name, i).is_some() {
+            return Err(level_error(format!("model name {name:?} is used twice")));
         }
     }
     let mut material_index = HashMap::new();
@@ -50,6 +52,27 @@ pub fn scene_from_level(
                 m.name
             )));
         }
+    }
+    let mut grids = Vec::with_capacity(level.grids.len());
+    for grid in &level.grids {
+        let Some(&material) = material_index.get(grid.material.as_str()) else {
+            return Err(level_error(format!(
+                "grid {:?} uses the material {:?}, which the level does not define",
+                grid.name, grid.material
+            )));
+        };
+        let [nx, nz] = grid.divisions;
+        let sizes_ok = grid.size.iter().all(|s| *s > 0.0 && s.is_finite());
+        if nx == 0 || nz == 0 || nx > 2048 || nz > 2048 || !sizes_ok {
+            return Err(level_error(format!(
+                "grid {:?}: size must be positive and divisions within 1..=2048",
+                grid.name
+            )));
+        }
+        grids.push(super::grid::grid_model(
+            grid,
+            level_material(&level.materials[material]),
+        ));
     }
     let mut instances = Vec::with_capacity(level.instances.len());
     for (i, instance) in level.instances.iter().enumerate() {
@@ -78,6 +101,10 @@ pub fn scene_from_level(
             model,
             world_from_model,
             material_override,
+            name: instance.name.clone(),
+            dynamic: instance.dynamic || instance.waves.is_some(),
+            light_group: instance.light_group,
+            waves: instance.waves,
         });
     }
     let camera = &level.camera;
@@ -90,7 +117,7 @@ pub fn scene_from_level(
     if Vec3::from(camera.look_at) == Vec3::from(camera.position) {
         return Err(level_error("camera.look_at equals camera.position".into()));
     }
-    let models = level
+    let mut models = level
         .models
         .par_iter()
         .map(|entry| {
@@ -106,6 +133,7 @@ pub fn scene_from_level(
             log::info!("{}: {}: {note}", level_path.display(), entry.path);
         }
     }
+    models.extend(grids);
     Ok(SceneDesc {
         source: level_path.to_path_buf(),
         models,

@@ -10,6 +10,7 @@ mod bump;
 mod context;
 mod error;
 mod gltf;
+mod grid;
 mod limits;
 mod load;
 mod mesh_check;
@@ -30,8 +31,8 @@ pub use root::AssetRoot;
 
 mod level;
 pub use level::{
-    CameraDesc, InstanceEntry, Level, LevelMaterial, ModelEntry, RenderSettings, SkyDesc, SunDesc,
-    TransformDesc,
+    CameraDesc, GridEntry, InstanceEntry, Level, LevelMaterial, ModelEntry, RenderSettings,
+    SkyDesc, SunDesc, TransformDesc, WaveDesc,
 };
 
 mod scene_desc;

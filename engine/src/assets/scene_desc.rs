@@ -27,7 +27,7 @@ pub struct SceneDesc {
 }
 
 /// One placed copy of a model.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct SceneInstance {
     /// Index into [`SceneDesc::models`].
     pub model: usize,
@@ -35,6 +35,27 @@ pub struct SceneInstance {
     pub world_from_model: Mat4,
     /// Index into [`SceneDesc::level_materials`] replacing every material of the model.
     pub material_override: Option<usize>,
+    /// The level's name for the instance.
+    pub name: Option<String>,
+    /// Moves at run time (otherwise static).
+    pub dynamic: bool,
+    pub light_group: Option<u32>,
+    pub waves: Option<super::level::WaveDesc>,
+}
+
+impl SceneInstance {
+    /// A static, unnamed placement of `model`.
+    pub fn placed(model: usize, world_from_model: Mat4) -> Self {
+        Self {
+            model,
+            world_from_model,
+            material_override: None,
+            name: None,
+            dynamic: false,
+            light_group: None,
+            waves: None,
+        }
+    }
 }
 
 impl SceneDesc {
@@ -44,11 +65,7 @@ impl SceneDesc {
             source: PathBuf::new(),
             models: vec![model],
             level_materials: Vec::new(),
-            instances: vec![SceneInstance {
-                model: 0,
-                world_from_model: Mat4::IDENTITY,
-                material_override: None,
-            }],
+            instances: vec![SceneInstance::placed(0, Mat4::IDENTITY)],
             camera,
             sun: None,
             sky: SkyDesc::default(),
