@@ -88,11 +88,14 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
     }
     var out: ShadowRays;
     out.count = 0u;
-    if (frame.light_count > 0u && frame.light_weight_total > 0.0) {
+    let nee = (frame.method & METHOD_NEE) != 0u;
+    let mis = (frame.method & METHOD_MIS) != 0u;
+    let by_power = (frame.method & METHOD_LIGHTS_BY_POWER) != 0u;
+    if (nee && frame.light_count > 0u && frame.light_weight_total > 0.0) {
         let n_lights = frame.light_count;
         let pick = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
         var light = lights[pick];
-        if (xi[1] >= light.alias_threshold) {
+        if (by_power && xi[1] >= light.alias_threshold) {
             light = lights[light.alias_index];
         }
         let bary = uniform_triangle(vec2<f32>(xi[2], xi[3]));
@@ -111,9 +114,16 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
             if (cos_light > 0.0 && any(emitter.radiance != vec3<f32>(0.0))) {
                 let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
-                let light_pdf = light.weight / frame.light_weight_total * dist2 / (cos_light * area);
+                var select = 1.0 / f32(n_lights);
+                if (by_power) {
+                    select = light.weight / frame.light_weight_total;
+                }
+                let light_pdf = select * dist2 / (cos_light * area);
                 if (any(e.value != vec3<f32>(0.0))) {
-                    let w = power_heuristic(light_pdf, e.pdf);
+                    var w = 1.0;
+                    if (mis) {
+                        w = power_heuristic(light_pdf, e.pdf);
+                    }
                     out.rays[out.count] = shadow_ray(x, ng, wi, dist * (1.0 - 1e-4));
                     out.contribution[out.count] = throughput * e.value * emitter.radiance * (w / light_pdf);
                     out.count += 1u;
@@ -121,7 +131,7 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
         }
     }
-    if (frame.sun_solid_angle >= 0.0) {
+    if (nee && frame.sun_solid_angle >= 0.0) {
         let sun = frame.sun_direction;
         var wi = sun;
         var scale = 1.0;
@@ -131,7 +141,11 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
         let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
         if (frame.sun_solid_angle > 0.0) {
             let sun_pdf = 1.0 / frame.sun_solid_angle;
-            scale = power_heuristic(sun_pdf, e.pdf) / sun_pdf;
+            var w = 1.0;
+            if (mis) {
+                w = power_heuristic(sun_pdf, e.pdf);
+            }
+            scale = w / sun_pdf;
         }
         if (any(e.value != vec3<f32>(0.0))) {
             out.rays[out.count] = shadow_ray(x, ng, wi, FAR);
@@ -140,6 +154,29 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
         }
     }
     return out;
+}
+
+// MIS weight of an emitter reached by BSDF sampling (twin of bsdf_hit_weight in the CPU
+// integrator): 1 after a delta bounce or without light sampling, 0 with light sampling but no
+// MIS, else the power heuristic.
+fn bsdf_hit_weight(last_delta: bool, bsdf_pdf: f32, light_pdf: f32) -> f32 {
+    if (last_delta || (frame.method & METHOD_NEE) == 0u) {
+        return 1.0;
+    }
+    if ((frame.method & METHOD_MIS) == 0u) {
+        return 0.0;
+    }
+    return power_heuristic(bsdf_pdf, light_pdf);
+}
+
+// World-space area of the triangle a hit lies on.
+fn hit_area(hit: Hit) -> f32 {
+    let inst = instances[hit.instance];
+    let tri = triangles[inst.triangle_base + hit.triangle];
+    let a = world_point(inst, v3(vertices[inst.vertex_base + tri.indices[0]].position));
+    let b = world_point(inst, v3(vertices[inst.vertex_base + tri.indices[1]].position));
+    let c = world_point(inst, v3(vertices[inst.vertex_base + tri.indices[2]].position));
+    return 0.5 * length(cross(b - a, c - a));
 }
 
 fn is_finite3(v: vec3<f32>) -> bool {
@@ -190,10 +227,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         if (!hit.found) {
             var escaped = sky_radiance(ray.direction);
             if (frame.sun_solid_angle > 0.0 && dot(ray.direction, frame.sun_direction) >= frame.sun_cos_radius) {
-                var w = 1.0;
-                if (!last_delta) {
-                    w = power_heuristic(last_pdf, 1.0 / frame.sun_solid_angle);
-                }
+                let w = bsdf_hit_weight(last_delta, last_pdf, 1.0 / frame.sun_solid_angle);
                 escaped += frame.sun_radiance * w;
             }
             result += throughput * escaped;
@@ -210,8 +244,14 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             var w = 1.0;
             if (!last_delta && frame.light_count > 0u) {
                 let cos_light = abs(dot(wo, surface.geometric_normal));
-                let light_pdf = materials[surface.material].emission.w * hit.t * hit.t / max(frame.light_weight_total * cos_light, 1e-30);
-                w = power_heuristic(last_pdf, light_pdf);
+                var select = 0.0;
+                if ((frame.method & METHOD_LIGHTS_BY_POWER) != 0u) {
+                    select = materials[surface.material].emission.w / frame.light_weight_total;
+                } else {
+                    select = 1.0 / (f32(frame.light_count) * hit_area(hit));
+                }
+                let light_pdf = select * hit.t * hit.t / max(cos_light, 1e-30);
+                w = bsdf_hit_weight(false, last_pdf, light_pdf);
             }
             result += throughput * shading.emission * w;
         }

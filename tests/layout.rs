@@ -100,7 +100,7 @@ fn rust_layouts() -> Vec<RustLayout> {
             camera_up,
             film_blend,
             camera_forward,
-            _padding1,
+            method,
             sun_direction,
             sun_cos_radius,
             sun_radiance,

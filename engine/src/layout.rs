@@ -252,6 +252,16 @@ pub struct GpuLight {
 }
 const _: () = assert!(size_of::<GpuLight>() == 64);
 
+/// `GpuFrameUniforms::method`: sample lights explicitly (next-event estimation).
+pub const METHOD_NEE: u32 = 1;
+/// `GpuFrameUniforms::method`: weight light and BSDF samples by multiple importance sampling
+/// (without it, emitters hit by BSDF sampling count only after specular bounces).
+pub const METHOD_MIS: u32 = 2;
+/// `GpuFrameUniforms::method`: pick lights in proportion to power (otherwise uniformly).
+pub const METHOD_LIGHTS_BY_POWER: u32 = 4;
+/// The default estimator.
+pub const METHOD_DEFAULT: u32 = METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER;
+
 /// `GpuFrameUniforms::sky_kind`: constant radiance `sky_zenith`.
 pub const SKY_CONSTANT: u32 = 0;
 /// `GpuFrameUniforms::sky_kind`: zenith → horizon → ground gradient.
@@ -278,7 +288,10 @@ pub struct GpuFrameUniforms {
     /// the converging policy (Brigade §4.5) sets it from camera and object motion.
     pub film_blend: f32,
     pub camera_forward: [f32; 3],
-    pub _padding1: f32,
+    /// Which estimator runs: bit set of `METHOD_*` (all three set is the default, NEE + MIS
+    /// with lights picked by power). The other combinations exist for speed-against-accuracy
+    /// measurements (`tools/bench`).
+    pub method: u32,
     /// Unit vector towards the sun.
     pub sun_direction: [f32; 3],
     /// Cosine of the sun's angular radius (1 for a delta sun).

@@ -19,6 +19,10 @@ const WRAP_CLAMP: u32 = 1u;
 const WRAP_MIRROR: u32 = 2u;
 const TEXTURE_FLAG_NEAREST: u32 = 16u;
 
+const METHOD_NEE: u32 = 1u;
+const METHOD_MIS: u32 = 2u;
+const METHOD_LIGHTS_BY_POWER: u32 = 4u;
+
 const SKY_CONSTANT: u32 = 0u;
 const SKY_GRADIENT: u32 = 1u;
 
@@ -118,7 +122,7 @@ struct GpuFrameUniforms {
     camera_up: vec3<f32>,
     film_blend: f32,
     camera_forward: vec3<f32>,
-    _padding1: f32,
+    method: u32,
     sun_direction: vec3<f32>,
     sun_cos_radius: f32,
     sun_radiance: vec3<f32>,

@@ -60,12 +60,37 @@ pub fn render_batches(
     batches: u32,
     seed: u32,
 ) -> anyhow::Result<Batches> {
+    render_batches_with(
+        which,
+        desc,
+        width,
+        height,
+        spp,
+        batches,
+        seed,
+        candela::layout::METHOD_DEFAULT,
+    )
+}
+
+/// [`render_batches`] with an estimator other than the default (`layout::METHOD_*` bits).
+#[allow(clippy::too_many_arguments)]
+pub fn render_batches_with(
+    which: Which,
+    desc: &SceneDesc,
+    width: u32,
+    height: u32,
+    spp: u32,
+    batches: u32,
+    seed: u32,
+    method: u32,
+) -> anyhow::Result<Batches> {
     let scene = RenderScene::build(desc);
     let mut tracer = open(which, &scene)?;
     let mut out = Vec::new();
     for b in 0..batches {
         let mut settings = FrameSettings::new(width, height, spp, seed, &desc.render);
         settings.sample_base = b * spp;
+        settings.method = method;
         let uniforms = frame_uniforms(
             &desc.camera,
             desc.sun.as_ref(),

@@ -30,6 +30,8 @@ pub struct FrameSettings {
     pub roulette_scale: f32,
     /// Weight of this render's mean in the film (see `GpuFrameUniforms::film_blend`).
     pub film_blend: f32,
+    /// The estimator (`layout::METHOD_*` bits).
+    pub method: u32,
 }
 
 impl FrameSettings {
@@ -45,6 +47,7 @@ impl FrameSettings {
             roulette_start: render.roulette_start,
             roulette_scale: 1.0,
             film_blend: 1.0,
+            method: crate::layout::METHOD_DEFAULT,
         }
     }
 
@@ -90,7 +93,7 @@ pub fn frame_uniforms(
         camera_up: (up * tan_half).to_array(),
         film_blend: frame.film_blend,
         camera_forward: forward.to_array(),
-        _padding1: 0.0,
+        method: frame.method,
         sun_direction: [0.0, 1.0, 0.0],
         sun_cos_radius: 1.0,
         sun_radiance: [0.0; 3],

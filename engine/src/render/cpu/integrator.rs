@@ -15,7 +15,9 @@ use super::sampling::{
     basis, concentric_disc, power_heuristic, to_local, to_world, uniform_cone, uniform_triangle,
 };
 use super::surface::{offset_origin, resolve, shade};
-use crate::layout::{GpuFrameUniforms, INVALID, SKY_GRADIENT};
+use crate::layout::{
+    GpuFrameUniforms, INVALID, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE, SKY_GRADIENT,
+};
 use crate::render::scene::RenderScene;
 use crate::trace::{Ray, TraceScene};
 
@@ -105,11 +107,7 @@ pub fn radiance(
         let Some(hit) = tracer.closest(&ray) else {
             let mut escaped = sky_radiance(u, ray.direction);
             if sun_solid_angle > 0.0 && ray.direction.dot(sun_direction) >= u.sun_cos_radius {
-                let w = if last_delta {
-                    1.0
-                } else {
-                    power_heuristic(last_pdf, 1.0 / sun_solid_angle)
-                };
+                let w = bsdf_hit_weight(u.method, last_delta, last_pdf, 1.0 / sun_solid_angle);
                 escaped += sun_radiance * w;
             }
             result += throughput * escaped;
@@ -127,11 +125,15 @@ pub fn radiance(
             let w = if last_delta || u.light_count == 0 {
                 1.0
             } else {
-                let material = &scene.materials[surface.material as usize];
                 let cos_light = wo.dot(surface.geometric_normal).abs();
-                let light_pdf = material.emission[3] * hit.t * hit.t
-                    / (u.light_weight_total * cos_light).max(1e-30);
-                power_heuristic(last_pdf, light_pdf)
+                let select = if u.method & METHOD_LIGHTS_BY_POWER != 0 {
+                    // weight/total with weight = area · emission weight: the area cancels.
+                    scene.materials[surface.material as usize].emission[3] / u.light_weight_total
+                } else {
+                    1.0 / (u.light_count as f32 * hit_area(scene, &hit))
+                };
+                let light_pdf = select * hit.t * hit.t / cos_light.max(1e-30);
+                bsdf_hit_weight(u.method, false, last_pdf, light_pdf)
             };
             result += throughput * shading.emission * w;
         }
@@ -259,11 +261,14 @@ fn next_event(
         !tracer.occluded(&ray)
     };
 
-    if u.light_count > 0 && u.light_weight_total > 0.0 {
+    let nee = u.method & METHOD_NEE != 0;
+    let mis = u.method & METHOD_MIS != 0;
+    if nee && u.light_count > 0 && u.light_weight_total > 0.0 {
         let n_lights = u.light_count;
+        let by_power = u.method & METHOD_LIGHTS_BY_POWER != 0;
         let pick = ((xi[0] * n_lights as f32) as u32).min(n_lights - 1);
         let mut light = &scene.lights.lights[pick as usize];
-        if xi[1] >= light.alias_threshold {
+        if by_power && xi[1] >= light.alias_threshold {
             light = &scene.lights.lights[light.alias_index as usize];
         }
         let (p0, p1, p2) = (
@@ -287,16 +292,25 @@ fn next_event(
             }
             if cos_light > 0.0 && emitter.0 != Vec3::ZERO {
                 let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
-                let light_pdf = light.weight / u.light_weight_total * dist2 / (cos_light * area);
+                let select = if by_power {
+                    light.weight / u.light_weight_total
+                } else {
+                    1.0 / n_lights as f32
+                };
+                let light_pdf = select * dist2 / (cos_light * area);
                 if f != Vec3::ZERO && shadow(wi, dist * (1.0 - 1e-4), counts) {
-                    let w = power_heuristic(light_pdf, bsdf_pdf);
+                    let w = if mis {
+                        power_heuristic(light_pdf, bsdf_pdf)
+                    } else {
+                        1.0
+                    };
                     sum += f * emitter.0 * (w / light_pdf);
                 }
             }
         }
     }
 
-    if u.sun_solid_angle >= 0.0 {
+    if nee && u.sun_solid_angle >= 0.0 {
         let sun = Vec3::from(u.sun_direction);
         let radiance = Vec3::from(u.sun_radiance);
         if u.sun_solid_angle == 0.0 {
@@ -315,11 +329,43 @@ fn next_event(
             let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
             if f != Vec3::ZERO && shadow(wi, f32::INFINITY, counts) {
                 let sun_pdf = 1.0 / u.sun_solid_angle;
-                sum += f * radiance * (power_heuristic(sun_pdf, bsdf_pdf) / sun_pdf);
+                let w = if mis {
+                    power_heuristic(sun_pdf, bsdf_pdf)
+                } else {
+                    1.0
+                };
+                sum += f * radiance * (w / sun_pdf);
             }
         }
     }
     sum
+}
+
+/// MIS weight of an emitter (triangle or sun disc) reached by BSDF sampling with density
+/// `bsdf_pdf`, against light sampling with density `light_pdf`, for estimator `method`: 1 after
+/// a delta bounce or without light sampling; 0 with light sampling but no MIS (the light
+/// sample already counted it); the power heuristic otherwise.
+fn bsdf_hit_weight(method: u32, last_delta: bool, bsdf_pdf: f32, light_pdf: f32) -> f32 {
+    if last_delta || method & METHOD_NEE == 0 {
+        1.0
+    } else if method & METHOD_MIS == 0 {
+        0.0
+    } else {
+        power_heuristic(bsdf_pdf, light_pdf)
+    }
+}
+
+/// World-space area of the triangle `hit` lies on.
+fn hit_area(scene: &RenderScene, hit: &crate::trace::Hit) -> f32 {
+    let inst = &scene.instances[hit.instance as usize];
+    let tri = scene.triangles[(inst.triangle_base + hit.triangle) as usize];
+    let p = tri.indices.map(|i| {
+        crate::render::lights::world_point(
+            inst,
+            scene.vertices[(inst.vertex_base + i) as usize].position,
+        )
+    });
+    0.5 * (p[1] - p[0]).cross(p[2] - p[0]).length()
 }
 
 /// Emitted radiance of a light triangle at barycentrics `bary` (b1, b2), and whether it emits
