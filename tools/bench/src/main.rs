@@ -8,11 +8,17 @@
 //!   diffuse-bounce rays made from the level's camera and lights.
 //! * `bench error` — time for each tracer to reach a fixed relative error against the Cornell
 //!   reference, beside Mitsuba 3's time to the same error from its own reference statistics.
+//! * `bench chart` — error against time for every estimator, both reference scenes and both
+//!   tracers: `docs/charts/*.png`, `docs/charts/accuracy.csv` and the generated section of
+//!   `docs/ACCURACY.md`.
 
 mod build;
+mod chart;
 mod error;
 mod machine;
+mod plot;
 mod rays;
+mod report;
 
 use clap::{Parser, Subcommand};
 
@@ -31,14 +37,22 @@ enum Command {
     Rays(rays::RaysArgs),
     /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
     Error(error::ErrorArgs),
+    /// Error against time for every estimator on the reference scenes: CSV, charts, and the
+    /// generated section of docs/ACCURACY.md.
+    Chart(chart::ChartArgs),
 }
 
 fn main() -> anyhow::Result<()> {
     env_logger::Builder::from_env(env_logger::Env::default().default_filter_or("warn")).init();
-    println!("{}", machine::describe());
+    let machine = machine::describe();
+    println!("{machine}");
     match Args::parse().command {
         Command::Build(a) => build::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::Error(a) => error::run(&a),
+        Command::Chart(a) => {
+            let points = chart::measure(&a)?;
+            report::write(&a, &points, &machine)
+        }
     }
 }
