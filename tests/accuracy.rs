@@ -18,7 +18,7 @@
 
 use candela::assets::{AssetRoot, load_level};
 use candela::render::film::read_exr;
-use candela_tests::{Batches, Which, external, region_stat, render_batches, repo};
+use candela_tests::{Batches, Which, external, region_stat, repo};
 use glam::Vec3;
 
 struct Reference {
