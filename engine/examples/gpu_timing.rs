@@ -24,7 +24,9 @@ fn main() -> anyhow::Result<()> {
     let ctx = gpu::GpuContext::headless()?;
     let mut tracer = gpu::GpuTracer::new(ctx, &scene)?;
     println!("context + pipeline {:?}", t.elapsed());
-    for round in 0..3 {
+    let rounds: u32 = args.get(5).and_then(|s| s.parse().ok()).unwrap_or(3);
+    let loop_start = Instant::now();
+    for round in 0..rounds {
         let mut settings = FrameSettings::new(
             size,
             size,
@@ -51,5 +53,6 @@ fn main() -> anyhow::Result<()> {
             s.rays()
         );
     }
+    println!("{rounds} rounds in {:?}", loop_start.elapsed());
     Ok(())
 }
