@@ -8,10 +8,17 @@
 //!   diffuse-bounce rays made from the level's camera and lights.
 //! * `bench error` — time for each tracer to reach a fixed relative error against the Cornell
 //!   reference, beside Mitsuba 3's time to the same error from its own reference statistics.
+//! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
+//!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
+//!   of game update and render (CSV files beside the tables).
 
 mod build;
 mod error;
 mod machine;
+mod pipeline;
+mod pipeline_overlap;
+mod pipeline_queries;
+mod pipeline_refit;
 mod rays;
 
 use clap::{Parser, Subcommand};
@@ -31,6 +38,8 @@ enum Command {
     Rays(rays::RaysArgs),
     /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
     Error(error::ErrorArgs),
+    /// The frame pipeline on the demo level: upkeep, refit threshold, queries, overlap.
+    Pipeline(pipeline::PipelineArgs),
 }
 
 fn main() -> anyhow::Result<()> {
@@ -40,5 +49,6 @@ fn main() -> anyhow::Result<()> {
         Command::Build(a) => build::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::Error(a) => error::run(&a),
+        Command::Pipeline(a) => pipeline::run(&a),
     }
 }
