@@ -38,6 +38,15 @@ pub struct Level {
     /// Grids the engine makes (usable as models by name).
     #[serde(default)]
     pub grids: Vec<GridEntry>,
+    /// Boxes the engine makes (usable as models by name).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub boxes: Vec<super::shapes::BoxEntry>,
+    /// Heightfield terrains the engine makes (usable as models by name).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub terrains: Vec<super::shapes::TerrainEntry>,
+    /// Box cities the engine makes (usable as models by name).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cities: Vec<super::city::CityEntry>,
     /// Placed copies of models.
     #[serde(default)]
     pub instances: Vec<InstanceEntry>,
@@ -65,24 +74,24 @@ pub struct ModelEntry {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InstanceEntry {
-    /// Name of a [`ModelEntry`] or a [`GridEntry`].
+    /// Name of a [`ModelEntry`] or of an engine-made model (grid, box, terrain, city).
     pub model: String,
     /// A name game code and capture scripts refer to the instance by.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub name: Option<String>,
     #[serde(default)]
     pub transform: TransformDesc,
     /// Name of a [`LevelMaterial`] that replaces every material of the model.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub material: Option<String>,
     /// The instance moves (its transform is compared every frame); otherwise it is static.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
     pub dynamic: bool,
     /// The light group its emitters belong to.
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub light_group: Option<u32>,
     /// Animate the model's first mesh with travelling waves (deforming every frame).
-    #[serde(default)]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
     pub waves: Option<WaveDesc>,
 }
 
@@ -120,8 +129,18 @@ pub struct TransformDesc {
     /// Metres.
     pub translation: [f32; 3],
     /// Degrees about (X, Y, Z).
+    #[serde(skip_serializing_if = "is_zero3")]
     pub rotation_deg: [f32; 3],
+    #[serde(skip_serializing_if = "is_one3")]
     pub scale: [f32; 3],
+}
+
+fn is_zero3(v: &[f32; 3]) -> bool {
+    *v == [0.0; 3]
+}
+
+fn is_one3(v: &[f32; 3]) -> bool {
+    *v == [1.0; 3]
 }
 
 impl Default for TransformDesc {

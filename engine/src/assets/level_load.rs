@@ -38,7 +38,10 @@ pub fn scene_from_level(
         .models
         .iter()
         .map(|m| m.name.as_str())
-        .chain(level.grids.iter().map(|g| g.name.as_str()));
+        .chain(level.grids.iter().map(|g| g.name.as_str()))
+        .chain(level.boxes.iter().map(|b| b.name.as_str()))
+        .chain(level.terrains.iter().map(|t| t.name.as_str()))
+        .chain(level.cities.iter().map(|c| c.name.as_str()));
     for (i, name) in names.enumerate() {
         if model_index.insert(name, i).is_some() {
             return Err(level_error(format!("model name {name:?} is used twice")));
@@ -53,14 +56,19 @@ pub fn scene_from_level(
             )));
         }
     }
+    let material_of = |kind: &str, name: &str, material: &str| {
+        material_index
+            .get(material)
+            .map(|&m| level_material(&level.materials[m]))
+            .ok_or_else(|| {
+                level_error(format!(
+                    "{kind} {name:?} uses the material {material:?}, which the level does not define"
+                ))
+            })
+    };
     let mut grids = Vec::with_capacity(level.grids.len());
     for grid in &level.grids {
-        let Some(&material) = material_index.get(grid.material.as_str()) else {
-            return Err(level_error(format!(
-                "grid {:?} uses the material {:?}, which the level does not define",
-                grid.name, grid.material
-            )));
-        };
+        let material = material_of("grid", &grid.name, &grid.material)?;
         let [nx, nz] = grid.divisions;
         let sizes_ok = grid.size.iter().all(|s| *s > 0.0 && s.is_finite());
         if nx == 0 || nz == 0 || nx > 2048 || nz > 2048 || !sizes_ok {
@@ -69,11 +77,13 @@ pub fn scene_from_level(
                 grid.name
             )));
         }
-        grids.push(super::grid::grid_model(
-            grid,
-            level_material(&level.materials[material]),
-        ));
+        grids.push(super::grid::grid_model(grid, material));
     }
+    grids.extend(super::level_shapes::generated_models(
+        level,
+        &material_of,
+        &level_error,
+    )?);
     let mut instances = Vec::with_capacity(level.instances.len());
     for (i, instance) in level.instances.iter().enumerate() {
         let Some(&model) = model_index.get(instance.model.as_str()) else {

@@ -7,6 +7,7 @@
 //! are in `limits`; `context` carries one load's file, root and notes.
 
 mod bump;
+mod city;
 mod context;
 mod error;
 mod gltf;
@@ -21,13 +22,16 @@ mod obj;
 mod obj_mesh;
 mod obj_scan;
 mod root;
+mod shapes;
 mod tangents;
 mod texture;
 
+pub use city::{CityEntry, city_model};
 pub use error::{AssetError, AssetResult};
 pub use load::{load_model, load_model_file};
 pub use model::{Material, MaterialKind, Mesh, Model, Placement, Texture, TextureRef, Wrap};
 pub use root::AssetRoot;
+pub use shapes::{BoxEntry, TerrainEntry, box_model, terrain_model};
 
 mod level;
 pub use level::{
@@ -39,4 +43,5 @@ mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_load;
+mod level_shapes;
 pub use level_load::{load_level, scene_from_level};

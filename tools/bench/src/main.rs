@@ -11,12 +11,19 @@
 //! * `bench chart` — error against time for every estimator, both reference scenes and both
 //!   tracers: `docs/charts/*.png`, `docs/charts/accuracy.csv` and the generated section of
 //!   `docs/ACCURACY.md`.
+//! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
+//!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
+//!   of game update and render (CSV files beside the tables).
 
 mod build;
 mod chart;
 mod error;
 mod machine;
 mod plot;
+mod pipeline;
+mod pipeline_overlap;
+mod pipeline_queries;
+mod pipeline_refit;
 mod rays;
 mod report;
 
@@ -40,6 +47,8 @@ enum Command {
     /// Error against time for every estimator on the reference scenes: CSV, charts, and the
     /// generated section of docs/ACCURACY.md.
     Chart(chart::ChartArgs),
+    /// The frame pipeline on the demo level: upkeep, refit threshold, queries, overlap.
+    Pipeline(pipeline::PipelineArgs),
 }
 
 fn main() -> anyhow::Result<()> {
@@ -54,5 +63,6 @@ fn main() -> anyhow::Result<()> {
             let points = chart::measure(&a)?;
             report::write(&a, &points, &machine)
         }
+        Command::Pipeline(a) => pipeline::run(&a),
     }
 }

@@ -1,7 +1,8 @@
 //! The capture tool as a library, so tests can run exactly what the command line runs.
 //!
-//! Owns: argument definitions, loading the level, building the scene, choosing the tracer,
-//! rendering in batches with a progress bar, writing PNG/EXR and the final report.
+//! Owns: argument definitions, and the single-frame mode: loading the level, building the
+//! scene, choosing the tracer, rendering in batches with a progress bar, writing PNG/EXR and the
+//! final report. The script mode (`--script`) is in `script_mode.rs`.
 //! Must not: contain rendering logic (the engine does it).
 
 use std::path::{Path, PathBuf};
@@ -13,6 +14,9 @@ use candela::render::film::{TonemapSettings, write_exr, write_png};
 use candela::render::{FrameSettings, RenderError, RenderScene, Tracer, frame_uniforms};
 use clap::{Parser, ValueEnum};
 
+mod script_mode;
+pub use script_mode::{ScriptSummary, run_script_mode};
+
 /// Which tracer renders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum TracerKind {
@@ -22,21 +26,32 @@ pub enum TracerKind {
     Cpu,
 }
 
-/// Render a level to an image file without any display.
+/// Render a level to an image file without any display, or run a capture script.
 #[derive(Clone, Debug, Parser)]
 #[command(name = "capture", version)]
 pub struct CaptureArgs {
-    /// The level file (RON).
-    pub level: PathBuf,
-    #[arg(long, value_enum, default_value = "gpu")]
-    pub tracer: TracerKind,
-    /// Samples per pixel.
-    #[arg(long, default_value_t = 64)]
-    pub spp: u32,
-    #[arg(long, default_value_t = 640)]
-    pub width: u32,
-    #[arg(long, default_value_t = 360)]
-    pub height: u32,
+    /// The level file (RON); not with `--script`.
+    #[arg(required_unless_present = "script", conflicts_with = "script")]
+    pub level: Option<PathBuf>,
+    /// Run a capture script (RON, see `engine/src/app/script.rs`): its frames, camera, motions,
+    /// light switches and screenshots. `--tracer`, `--spp`, `--width`, `--height` override it.
+    #[arg(long)]
+    pub script: Option<PathBuf>,
+    /// Folder for the script's screenshots and `frames.csv`.
+    #[arg(long, default_value = "capture_out")]
+    pub out_dir: PathBuf,
+    /// Tracer [default: gpu; with --script: the script's].
+    #[arg(long, value_enum)]
+    pub tracer: Option<TracerKind>,
+    /// Samples per pixel [default: 64; with --script: the script's, per frame].
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// Width in pixels [default: 640; with --script: the script's].
+    #[arg(long)]
+    pub width: Option<u32>,
+    /// Height in pixels [default: 360; with --script: the script's].
+    #[arg(long)]
+    pub height: Option<u32>,
     /// Output PNG (tonemapped 8-bit sRGB).
     #[arg(long, default_value = "frame.png")]
     pub out: PathBuf,
@@ -115,23 +130,32 @@ fn level_root(level: &Path, asset_root: Option<&Path>) -> anyhow::Result<AssetRo
     Ok(AssetRoot::new(&folder)?)
 }
 
-/// Runs a capture as the command line would.
+/// Renders one level to one image, as the command line does without `--script`.
 pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
-    if args.spp == 0 || args.width == 0 || args.height == 0 {
+    let Some(level) = &args.level else {
+        anyhow::bail!("give a level file, or a capture script with --script");
+    };
+    let (spp, width, height) = (
+        args.spp.unwrap_or(64),
+        args.width.unwrap_or(640),
+        args.height.unwrap_or(360),
+    );
+    let tracer_kind = args.tracer.unwrap_or(TracerKind::Gpu);
+    if spp == 0 || width == 0 || height == 0 {
         anyhow::bail!("--spp, --width and --height must be positive");
     }
-    let root = level_root(&args.level, args.asset_root.as_deref())?;
+    let root = level_root(level, args.asset_root.as_deref())?;
     let started = Instant::now();
-    let desc = load_level(&args.level, &root)?;
+    let desc = load_level(level, &root)?;
     let scene = RenderScene::build(&desc);
     let build_seconds = started.elapsed().as_secs_f64();
-    let mut tracer = open_tracer(args.tracer, &scene)
-        .with_context(|| format!("cannot open the {:?} tracer", args.tracer))?;
+    let mut tracer = open_tracer(tracer_kind, &scene)
+        .with_context(|| format!("cannot open the {tracer_kind:?} tracer"))?;
 
     let progress = if args.quiet {
         indicatif::ProgressBar::hidden()
     } else {
-        indicatif::ProgressBar::new(args.spp as u64)
+        indicatif::ProgressBar::new(spp as u64)
     };
     progress.set_style(
         indicatif::ProgressStyle::with_template(
@@ -143,10 +167,10 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let mut rays = 0u64;
     let mut render_seconds = 0.0;
     let mut done = 0;
-    while done < args.spp {
-        let batch = args.batch.max(1).min(args.spp - done);
-        let settings = FrameSettings::new(args.width, args.height, batch, args.seed, &desc.render)
-            .continuing(done);
+    while done < spp {
+        let batch = args.batch.max(1).min(spp - done);
+        let settings =
+            FrameSettings::new(width, height, batch, args.seed, &desc.render).continuing(done);
         let uniforms = frame_uniforms(
             &desc.camera,
             desc.sun.as_ref(),
@@ -179,7 +203,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         triangles: scene.stats.instanced_triangles,
         build_seconds,
         render_seconds,
-        samples: args.spp as u64 * args.width as u64 * args.height as u64,
+        samples: spp as u64 * width as u64 * height as u64,
         rays,
         out: args.out.clone(),
     })

@@ -1,0 +1,39 @@
+//! `assetgen demo [--out FILE]`: writes the demo level (default
+//! `assets/test_scenes/demo/demo.ron`, relative to the current folder). See `assetgen::demo_level`.
+
+use std::path::PathBuf;
+
+use anyhow::Context;
+use clap::{Parser, Subcommand};
+
+#[derive(Parser, Debug)]
+#[command(name = "assetgen", about = "Generates Candela's own assets")]
+struct Args {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// The demo city level.
+    Demo {
+        #[arg(long, default_value = "assets/test_scenes/demo/demo.ron")]
+        out: PathBuf,
+    },
+}
+
+fn main() -> anyhow::Result<()> {
+    match Args::parse().command {
+        Command::Demo { out } => {
+            let text = assetgen::demo_ron()?;
+            if let Some(dir) = out.parent().filter(|d| !d.as_os_str().is_empty()) {
+                std::fs::create_dir_all(dir)
+                    .with_context(|| format!("cannot create {}", dir.display()))?;
+            }
+            std::fs::write(&out, text)
+                .with_context(|| format!("cannot write {}", out.display()))?;
+            println!("wrote {}", out.display());
+            Ok(())
+        }
+    }
+}
