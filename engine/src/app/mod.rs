@@ -1,12 +1,33 @@
 //! The runner: the frame loop that drives the world, the upkeep and the render thread, headless
-//! or (later) in a window, and the fixed-step clock.
+//! ([`Engine`]) or in a window ([`run_window`]); the fixed-step clock; input mapped to actions;
+//! the fly camera; the stats overlay.
 
 mod clock;
 mod engine;
+mod fly_camera;
+mod frame_limiter;
+mod input;
 mod level;
+mod stats;
+mod stats_overlay;
 mod waves;
+mod window;
+mod window_app;
 
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
+pub use fly_camera::{FlyCamera, fly_camera_system};
+pub use frame_limiter::FrameLimiter;
+pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
+pub use stats::FrameStats;
+pub use stats_overlay::StatsOverlay;
 pub use waves::{Waves, waves_system};
+pub use window::{
+    WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport, display_problem, run_window,
+};
+
+/// Action names of the fly camera.
+pub mod fly_actions {
+    pub use super::fly_camera::actions::*;
+}
