@@ -135,6 +135,16 @@ fn rust_layouts() -> Vec<RustLayout> {
             triangle,
             _padding
         }),
+        rust_layout!(GpuPresentUniforms {
+            film_width,
+            film_height,
+            target_width,
+            target_height,
+            exposure_scale,
+            filmic,
+            encode_srgb,
+            _padding
+        }),
     ]
 }
 

@@ -357,3 +357,26 @@ pub struct GpuHit {
     pub _padding: [u32; 3],
 }
 const _: () = assert!(size_of::<GpuHit>() == 32);
+
+/// Uniforms of the present pass (`shaders/present.wgsl`, render thread): the film (linear
+/// radiance, `film_width × film_height`, rows top to bottom) is upscaled bilinearly to the
+/// `target_width × target_height` frame and tonemapped exactly as
+/// `render::film::linear_to_srgb8` does on the CPU. 32 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuPresentUniforms {
+    pub film_width: u32,
+    pub film_height: u32,
+    /// The frame (window) size in physical pixels.
+    pub target_width: u32,
+    pub target_height: u32,
+    /// Radiance is multiplied by this: 2^exposure_ev.
+    pub exposure_scale: f32,
+    /// 1: the ACES fit (Narkowicz 2015) before clamping to [0, 1]; 0: clamp only.
+    pub filmic: u32,
+    /// 1: the target format is not sRGB, so the shader applies the sRGB transfer function;
+    /// 0: the target is an sRGB format and the hardware encodes.
+    pub encode_srgb: u32,
+    pub _padding: u32,
+}
+const _: () = assert!(size_of::<GpuPresentUniforms>() == 32);

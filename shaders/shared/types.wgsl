@@ -159,3 +159,14 @@ struct GpuHit {
     triangle: u32,
     _padding: array<u32, 3>,
 }
+
+struct GpuPresentUniforms {
+    film_width: u32,
+    film_height: u32,
+    target_width: u32,
+    target_height: u32,
+    exposure_scale: f32,
+    filmic: u32,
+    encode_srgb: u32,
+    _padding: u32,
+}

@@ -15,10 +15,11 @@ use hecs::World;
 use super::clock::FixedClock;
 use crate::accel::Upkeep;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
-use crate::commit::{Commit, Motion};
+use crate::commit::{Commit, Motion, PresentRequest};
 use crate::ecs::propagate_transforms;
 use crate::extract::Extractor;
 use crate::query::Queries;
+use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
 
 /// Everything about the scene that is not an entity: sun, sky, render settings, and the view to
@@ -50,6 +51,8 @@ pub struct FrameReport {
     /// Seconds waiting for the render thread to take the commit.
     pub handoff_seconds: f64,
     pub commit_bytes: usize,
+    /// Bytes of overlay (egui vertices, indices, texture updates) the commit carried.
+    pub overlay_bytes: usize,
 }
 
 /// The engine's frame loop.
@@ -64,23 +67,42 @@ pub struct Engine {
     camera: CameraDesc,
     cut: bool,
     capture_next: bool,
+    present_next: Option<PresentRequest>,
 }
 
 impl Engine {
-    /// Starts the render thread with `config`.
+    /// Starts the render thread with `config`, headless.
     pub fn new(config: RenderConfig, environment: Environment) -> Result<Self, EngineError> {
-        Ok(Self {
+        Ok(Self::with_render(RenderThread::spawn(config)?, environment))
+    }
+
+    /// Starts the render thread with `config`, presenting into `target`'s window (see
+    /// [`Engine::present_next`]).
+    pub fn new_windowed(
+        config: RenderConfig,
+        environment: Environment,
+        target: PresentTarget,
+    ) -> Result<Self, EngineError> {
+        Ok(Self::with_render(
+            RenderThread::spawn_windowed(config, target)?,
+            environment,
+        ))
+    }
+
+    fn with_render(render: RenderThread, environment: Environment) -> Self {
+        Self {
             world: World::new(),
             upkeep: Upkeep::new(),
             camera: environment.default_camera,
             environment,
             clock: FixedClock::default(),
             extractor: Extractor::new(),
-            render: RenderThread::spawn(config)?,
+            render,
             frame: 0,
             cut: true,
             capture_next: false,
-        })
+            present_next: None,
+        }
     }
 
     /// The view used while no entity carries a camera.
@@ -103,6 +125,12 @@ impl Engine {
     /// Asks the render thread to send the converged film back after the next frame.
     pub fn capture_next(&mut self) {
         self.capture_next = true;
+    }
+
+    /// How the next frame is to be shown in the window (the window runner sets it every
+    /// frame). A headless render thread presents nothing but follows the surface size.
+    pub fn present_next(&mut self, request: PresentRequest) {
+        self.present_next = Some(request);
     }
 
     /// Runs one frame: `frame_seconds` of simulated time in fixed steps of game rules
@@ -154,8 +182,14 @@ impl Engine {
             upkeep,
             capture: std::mem::take(&mut self.capture_next),
             update_seconds,
+            present: self.present_next.take(),
         };
         let commit_bytes = commit.bytes();
+        let overlay_bytes = commit
+            .present
+            .as_ref()
+            .and_then(|p| p.overlay.as_ref())
+            .map_or(0, |o| o.bytes());
         let started = Instant::now();
         self.render.submit(commit)?;
         let handoff_seconds = started.elapsed().as_secs_f64();
@@ -166,6 +200,7 @@ impl Engine {
             upkeep_seconds,
             handoff_seconds,
             commit_bytes,
+            overlay_bytes,
         };
         self.frame += 1;
         Ok(report)

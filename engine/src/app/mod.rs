@@ -1,9 +1,13 @@
 //! The runner: the frame loop that drives the world, the upkeep and the render thread, headless
-//! or (later) in a window, the fixed-step clock, and capture scripts (RON) that drive it for a
-//! fixed number of frames.
+//! ([`Engine`]) or in a window ([`run_window`]); the fixed-step clock; input mapped to actions;
+//! the fly camera; the stats overlay; capture scripts (RON) that drive the loop for a fixed
+//! number of frames.
 
 mod clock;
 mod engine;
+mod fly_camera;
+mod frame_limiter;
+mod input;
 mod level;
 mod script;
 mod script_bind;
@@ -11,10 +15,17 @@ mod script_check;
 mod script_error;
 mod script_motion;
 mod script_run;
+mod stats;
+mod stats_overlay;
 mod waves;
+mod window;
+mod window_app;
 
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
+pub use fly_camera::{FlyCamera, fly_camera_system};
+pub use frame_limiter::FrameLimiter;
+pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
 pub use script::{
     CameraKey, Interpolation, LightSwitch, Motion, MotionEntry, ObjectKey, Screenshot, Script,
@@ -23,4 +34,14 @@ pub use script::{
 pub use script_bind::{BoundScript, matches};
 pub use script_motion::{apply_motion, camera_at, camera_transform, cut_at};
 pub use script_run::{FrameTiming, RunOptions, ScriptReport, ShotResult, run_script};
+pub use stats::FrameStats;
+pub use stats_overlay::StatsOverlay;
 pub use waves::{Waves, waves_system};
+pub use window::{
+    WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport, display_problem, run_window,
+};
+
+/// Action names of the fly camera.
+pub mod fly_actions {
+    pub use super::fly_camera::actions::*;
+}

@@ -2,7 +2,9 @@
 //! on the main thread, and the hand-off between the two threads.
 
 mod handoff;
+mod present;
 mod sealed;
 
 pub use handoff::{CommitReceiver, CommitSender, commit_channel};
+pub use present::{Overlay, PresentRequest};
 pub use sealed::{Commit, Motion};

@@ -2,10 +2,11 @@
 //!
 //! Owns: the sealed frame — buffer writes (instances, refitted or rebuilt BLAS data, deformed
 //! vertices, materials, light table, TLAS) with the header they leave behind, the view, sun, sky
-//! and render settings, and how much moved (for converging). Static data travels once, in the
-//! first commit after it is loaded. Must not: reference the ECS (the render thread never sees
+//! and render settings, how much moved (for converging), and in a window what to present (with
+//! the stats overlay). Static data travels once, in the first commit after it is loaded. Must not: reference the ECS (the render thread never sees
 //! game state).
 
+use super::present::PresentRequest;
 use crate::accel::UpkeepStats;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
 use crate::render::scene_writes::{SceneHeader, SceneWrite};
@@ -38,6 +39,8 @@ pub struct Commit {
     pub capture: bool,
     /// Seconds the main thread spent on game update (fixed steps) for this frame.
     pub update_seconds: f64,
+    /// What to show in the window after rendering (`None` headless: nothing is presented).
+    pub present: Option<PresentRequest>,
 }
 
 impl Commit {

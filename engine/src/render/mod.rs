@@ -1,5 +1,5 @@
 //! Rendering: the render-side scene, lights, camera, the `Tracer` trait with its GPU and CPU
-//! implementations, and the film.
+//! implementations, the film, and presenting it in a window.
 
 pub mod camera;
 pub mod cpu;
@@ -7,6 +7,7 @@ pub mod film;
 pub mod gpu;
 pub mod lights;
 pub mod materials;
+pub mod present;
 pub mod scaling;
 pub mod scene;
 pub mod scene_writes;
@@ -17,4 +18,4 @@ pub use camera::{FrameSettings, frame_uniforms};
 pub use scene::RenderScene;
 pub use scene_writes::{SceneHeader, SceneWrite};
 pub use thread::{RenderConfig, RenderThread, Rendered, TracerChoice};
-pub use tracer::{RenderError, RenderStats, Tracer};
+pub use tracer::{FilmView, RenderError, RenderStats, Tracer};

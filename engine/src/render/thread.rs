@@ -1,17 +1,21 @@
 //! The render thread (Brigade §4.2, Figure 7): receive commit → apply → trace → converge →
-//! report.
+//! present → report.
 //!
 //! Owns: the tracer (and with it the wgpu device for the GPU tracer), the render side's copy of
-//! the flattened scene, the converging state and workload scaling. It never reads game state:
-//! all it sees are sealed commits. Results (statistics, and the film when a commit asks for it)
-//! go back on a channel. Dropping the sender side ends the thread cleanly.
-//! Must not: touch the ECS or the main thread's upkeep.
+//! the flattened scene, the converging state and workload scaling, and in a window the
+//! presenter (the device is then opened for the window's surface and shared with the GPU
+//! tracer). It never reads game state: all it sees are sealed commits. Results (statistics,
+//! the film or a screenshot when a commit asks for it) go back on a channel. Dropping the
+//! sender side ends the thread cleanly. Headless, it opens no surface and presents nothing; a
+//! present request's surface size still sets the render size, as a window's would.
+//! Must not: touch the ECS, the main thread's upkeep or the window's events.
 
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::thread::JoinHandle;
 use std::time::Instant;
 
 use super::film::{Converge, ConvergePolicy, Film};
+use super::present::{PresentTarget, Presenter, Screenshot};
 use super::scaling::{Scaling, ScalingTarget};
 use super::scene::RenderScene;
 use super::tracer::{RenderError, RenderStats, Tracer};
@@ -29,7 +33,8 @@ pub enum TracerChoice {
 #[derive(Clone, Copy, Debug)]
 pub struct RenderConfig {
     pub tracer: TracerChoice,
-    /// Output size in pixels (the film may be smaller when scaling lowers the resolution).
+    /// Output size in pixels (the film may be smaller when scaling lowers the resolution). In a
+    /// window the output follows the window's size from the first commit on.
     pub width: u32,
     pub height: u32,
     /// Samples per pixel per frame (the starting point when scaling is on).
@@ -62,6 +67,12 @@ pub struct Rendered {
     pub upkeep: crate::accel::UpkeepStats,
     /// The converged film, when the commit asked for it.
     pub film: Option<Film>,
+    /// Seconds spent presenting (tonemap, overlay, copy, present, readback); 0 headless.
+    pub present_seconds: f64,
+    /// Why the window was not updated this frame (occluded, minimised…), if it was not.
+    pub present_skipped: Option<&'static str>,
+    /// What the window showed, when the commit's present request asked for it.
+    pub screenshot: Option<Screenshot>,
 }
 
 /// A running render thread.
@@ -71,18 +82,37 @@ pub struct RenderThread {
     handle: Option<JoinHandle<()>>,
 }
 
-fn open_tracer(choice: TracerChoice, scene: &RenderScene) -> Result<Box<dyn Tracer>, RenderError> {
-    Ok(match choice {
+type Opened = (Box<dyn Tracer>, Option<Presenter>);
+
+/// The tracer, and in a window the presenter on the same device.
+fn open(
+    choice: TracerChoice,
+    target: Option<&PresentTarget>,
+    scene: &RenderScene,
+) -> Result<Opened, RenderError> {
+    let (presenter, context) = match target {
+        Some(target) => {
+            let (presenter, context) = Presenter::open(target)?;
+            (Some(presenter), Some(context))
+        }
+        None => (None, None),
+    };
+    let tracer: Box<dyn Tracer> = match choice {
         TracerChoice::Cpu => Box::new(super::cpu::CpuTracer::new()),
         TracerChoice::Gpu => {
-            let context = super::gpu::GpuContext::headless()?;
+            let context = match context {
+                Some(context) => context,
+                None => super::gpu::GpuContext::headless()?,
+            };
             Box::new(super::gpu::GpuTracer::new(context, scene)?)
         }
-    })
+    };
+    Ok((tracer, presenter))
 }
 
 fn render_one(
     commit: Commit,
+    output: (u32, u32),
     config: &RenderConfig,
     scene: &mut RenderScene,
     tracer: &mut dyn Tracer,
@@ -94,7 +124,7 @@ fn render_one(
     tracer.update(scene, &commit.writes)?;
     let apply_seconds = started.elapsed().as_secs_f64();
     let work = scaling.current();
-    let (width, height) = work.film_size(config.width, config.height);
+    let (width, height) = work.film_size(output.0, output.1);
     if scaling.resized() {
         converge.reset();
     }
@@ -134,17 +164,21 @@ fn render_one(
         update_seconds: commit.update_seconds,
         upkeep: commit.upkeep,
         film,
+        present_seconds: 0.0,
+        present_skipped: None,
+        screenshot: None,
     })
 }
 
 fn run(
     config: RenderConfig,
+    target: Option<PresentTarget>,
     commits: CommitReceiver,
     results: Sender<Result<Rendered, RenderError>>,
 ) {
     let mut scene = RenderScene::empty();
-    let mut tracer = match open_tracer(config.tracer, &scene) {
-        Ok(t) => t,
+    let (mut tracer, mut presenter) = match open(config.tracer, target.as_ref(), &scene) {
+        Ok(opened) => opened,
         Err(e) => {
             let _ = results.send(Err(e));
             return;
@@ -152,15 +186,39 @@ fn run(
     };
     let mut converge = Converge::new(config.converge);
     let mut scaling = Scaling::new(config.spp, config.scaling);
-    while let Ok(commit) = commits.recv() {
-        let outcome = render_one(
+    let mut output = (config.width, config.height);
+    while let Ok(mut commit) = commits.recv() {
+        let mut request = commit.present.take();
+        if let Some(r) = &request
+            && r.surface_size.0 > 0
+            && r.surface_size.1 > 0
+            && r.surface_size != output
+        {
+            // The window was resized: the film restarts at the new size.
+            output = r.surface_size;
+            converge.reset();
+        }
+        let mut outcome = render_one(
             commit,
+            output,
             &config,
             &mut scene,
             tracer.as_mut(),
             &mut converge,
             &mut scaling,
         );
+        if let (Ok(rendered), Some(presenter), Some(request)) =
+            (&mut outcome, presenter.as_mut(), request.as_mut())
+        {
+            match presenter.present(tracer.film_view(), request) {
+                Ok(presented) => {
+                    rendered.present_seconds = presented.seconds;
+                    rendered.present_skipped = presented.skipped;
+                    rendered.screenshot = presented.screenshot;
+                }
+                Err(e) => outcome = Err(e),
+            }
+        }
         let failed = outcome.is_err();
         if results.send(outcome).is_err() || failed {
             return;
@@ -169,14 +227,24 @@ fn run(
 }
 
 impl RenderThread {
-    /// Starts the render thread. Tracer set-up happens on it; a failure there arrives as the
-    /// first result.
+    /// Starts the render thread, headless. Tracer set-up happens on it; a failure there
+    /// arrives as the first result.
     pub fn spawn(config: RenderConfig) -> Result<Self, RenderError> {
+        Self::start(config, None)
+    }
+
+    /// Starts the render thread presenting into `target`'s window: the device is opened for
+    /// the window's surface (a failure arrives as the first result).
+    pub fn spawn_windowed(config: RenderConfig, target: PresentTarget) -> Result<Self, RenderError> {
+        Self::start(config, Some(target))
+    }
+
+    fn start(config: RenderConfig, target: Option<PresentTarget>) -> Result<Self, RenderError> {
         let (sender, receiver) = commit_channel();
         let (result_tx, results) = channel();
         let handle = std::thread::Builder::new()
             .name("candela-render".into())
-            .spawn(move || run(config, receiver, result_tx))
+            .spawn(move || run(config, target, receiver, result_tx))
             .map_err(|e| RenderError::Device(format!("cannot start the render thread: {e}")))?;
         Ok(Self {
             sender: Some(sender),

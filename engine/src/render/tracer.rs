@@ -46,6 +46,20 @@ pub enum RenderError {
     },
 }
 
+/// Where a tracer's film lies, for the presenter to read without a round trip.
+#[derive(Clone, Copy, Debug)]
+pub enum FilmView<'a> {
+    /// On the tracer's device: one `vec4<f32>` per pixel (xyz = mean radiance), rows top to
+    /// bottom. The presenter must use the same device.
+    Device {
+        buffer: &'a wgpu::Buffer,
+        width: u32,
+        height: u32,
+    },
+    /// In host memory (the CPU tracer): the presenter uploads it.
+    Host(&'a Film),
+}
+
 /// A path tracer that accumulates samples into its film.
 pub trait Tracer {
     /// "gpu" or "cpu".
@@ -66,6 +80,8 @@ pub trait Tracer {
     fn update(&mut self, scene: &RenderScene, writes: &[SceneWrite]) -> Result<(), RenderError>;
     /// The converged image so far (mean radiance per pixel).
     fn film(&mut self) -> Result<Film, RenderError>;
+    /// The film in place (no copy, no readback); `None` before the first render.
+    fn film_view(&self) -> Option<FilmView<'_>>;
     /// Forgets every accumulated sample.
     fn clear(&mut self);
 }

@@ -10,12 +10,17 @@ use std::process::Command;
 /// that wgpu finds an adapter on a machine with no GPU.
 pub const RENDER: &[&str] = &["libvulkan1", "mesa-vulkan-drivers"];
 
-/// Everything the tests need: rendering, plus a C toolchain and pkg-config for -sys crates.
+/// Everything the tests need: rendering, a C toolchain and pkg-config for -sys crates, and for
+/// the window test an X virtual framebuffer (`Xvfb`), `xwd` to grab its root window and
+/// ImageMagick to decode the grab.
 pub const ALL: &[&str] = &[
     "libvulkan1",
     "mesa-vulkan-drivers",
     "build-essential",
     "pkg-config",
+    "xvfb",
+    "x11-apps",
+    "imagemagick",
 ];
 
 fn installed(package: &str) -> bool {

@@ -14,7 +14,7 @@ use super::integrator::{RayCounts, radiance};
 use crate::layout::GpuFrameUniforms;
 use crate::render::film::Film;
 use crate::render::scene::RenderScene;
-use crate::render::tracer::{RenderError, RenderStats, Tracer};
+use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
 
 /// Tile edge in pixels.
 const TILE: u32 = 16;
@@ -120,6 +120,10 @@ impl Tracer for CpuTracer {
 
     fn film(&mut self) -> Result<Film, RenderError> {
         Ok(self.film.clone())
+    }
+
+    fn film_view(&self) -> Option<FilmView<'_>> {
+        (self.film.width > 0 && self.film.height > 0).then_some(FilmView::Host(&self.film))
     }
 
     fn clear(&mut self) {

@@ -1,6 +1,6 @@
 //! Image files: PNG (tonemapped 8-bit sRGB) and OpenEXR (linear float radiance).
 //!
-//! Owns: writing films as PNG or EXR, and reading linear RGB EXR images (reference renders).
+//! Owns: writing films as PNG or EXR (and screenshots, already 8-bit, as PNG), and reading linear RGB EXR images (reference renders).
 //! Files are written atomically: to a temporary name beside the target, then renamed.
 //! Must not: know tracers.
 
@@ -63,6 +63,26 @@ pub fn write_png(
     image::save_buffer_with_format(
         &temp,
         &bytes,
+        width,
+        height,
+        image::ExtendedColorType::Rgb8,
+        image::ImageFormat::Png,
+    )
+    .map_err(|e| ImageIoError::Write {
+        path: path.to_path_buf(),
+        message: e.to_string(),
+    })?;
+    finish(&temp, path)
+}
+
+/// Writes already encoded 8-bit sRGB RGB pixels (`width × height × 3` bytes, rows top to
+/// bottom) as a PNG: screenshots of what a window showed.
+pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageIoError> {
+    ensure_parent(path)?;
+    let temp = temp_beside(path);
+    image::save_buffer_with_format(
+        &temp,
+        rgb,
         width,
         height,
         image::ExtendedColorType::Rgb8,

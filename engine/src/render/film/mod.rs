@@ -7,5 +7,5 @@ mod tonemap;
 
 pub use accumulate::Film;
 pub use converge::{Converge, ConvergePolicy};
-pub use image_io::{ImageIoError, read_exr, write_exr, write_png};
+pub use image_io::{ImageIoError, read_exr, write_exr, write_png, write_png_rgb8};
 pub use tonemap::{TonemapSettings, linear_to_srgb8};

@@ -1,9 +1,10 @@
-//! The wgpu device the GPU tracer runs on (render thread only).
+//! The wgpu device the GPU tracer and the presenter run on (render thread only).
 //!
-//! Owns: creating a headless instance, adapter and device with the adapter's own limits (wgpu's
-//! defaults are lower than what lavapipe offers: 128 MiB per storage binding), and routing
-//! uncaptured wgpu errors to the log instead of a panic. Without a GPU, Mesa's lavapipe
-//! (software Vulkan) runs the same WGSL on the CPU.
+//! Owns: creating the instance, adapter and device — headless, or for a window's surface (the
+//! adapter must be able to present to it) — with the adapter's own limits (wgpu's defaults are
+//! lower than what lavapipe offers: 128 MiB per storage binding), and routing uncaptured wgpu
+//! errors to the log instead of a panic. Without a GPU, Mesa's lavapipe (software Vulkan) runs
+//! the same WGSL on the CPU.
 //! Must not: know scenes or shaders.
 
 use std::sync::Arc;
@@ -12,6 +13,7 @@ use crate::render::tracer::RenderError;
 
 /// A device and its queue.
 pub struct GpuContext {
+    pub adapter: wgpu::Adapter,
     pub device: wgpu::Device,
     pub queue: wgpu::Queue,
     pub info: wgpu::AdapterInfo,
@@ -24,8 +26,25 @@ impl GpuContext {
     pub fn headless() -> Result<Arc<Self>, RenderError> {
         let instance =
             wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        Self::open(&instance, None)
+    }
+
+    /// Opens the best adapter that can present to `surface`, made by `instance` (which must
+    /// have been created with the window system's display handle).
+    pub fn for_surface(
+        instance: &wgpu::Instance,
+        surface: &wgpu::Surface<'_>,
+    ) -> Result<Arc<Self>, RenderError> {
+        Self::open(instance, Some(surface))
+    }
+
+    fn open(
+        instance: &wgpu::Instance,
+        surface: Option<&wgpu::Surface<'_>>,
+    ) -> Result<Arc<Self>, RenderError> {
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
             power_preference: wgpu::PowerPreference::HighPerformance,
+            compatible_surface: surface,
             ..Default::default()
         }))
         .map_err(|_| RenderError::NoAdapter)?;
@@ -50,6 +69,7 @@ impl GpuContext {
             info.driver_info
         );
         Ok(Arc::new(Self {
+            adapter,
             device,
             queue,
             info,

@@ -7,5 +7,5 @@ mod tracer;
 mod upload;
 
 pub use context::GpuContext;
-pub use shaders::{SHARED, ShaderSource, compose};
+pub use shaders::{PRESENT, PRESENT_SHARED, SHARED, ShaderSource, compose, compose_with};
 pub use tracer::GpuTracer;

@@ -39,10 +39,22 @@ pub const TRACE: ShaderSource = shader!("trace.wgsl");
 /// Batch ray tracing (entry point `ray_batch_main`).
 pub const RAY_BATCH: ShaderSource = shader!("ray_batch.wgsl");
 
+/// Tonemapping the film into the window's frame (entry points `present_vs`, `present_fs`).
+/// It needs only the struct twins: compose it with [`compose_with`]`(PRESENT_SHARED, PRESENT)`.
+pub const PRESENT: ShaderSource = shader!("present.wgsl");
+
+/// The shared pieces the present pass needs (the tracing bindings would clash with its own).
+pub const PRESENT_SHARED: &[ShaderSource] = &[shader!("shared/types.wgsl")];
+
 /// The shared pieces followed by `pass`, as one WGSL module.
 pub fn compose(pass: ShaderSource) -> String {
+    compose_with(SHARED, pass)
+}
+
+/// `shared` (in order) followed by `pass`, as one WGSL module.
+pub fn compose_with(shared: &[ShaderSource], pass: ShaderSource) -> String {
     let mut text = String::new();
-    for part in SHARED.iter().chain(std::iter::once(&pass)) {
+    for part in shared.iter().chain(std::iter::once(&pass)) {
         text.push_str(&format!("// ---- {} ----\n", part.name));
         text.push_str(part.text);
         text.push('\n');
@@ -58,16 +70,20 @@ mod tests {
     /// WGSL error fails `cargo test` before any GPU is involved.
     #[test]
     fn trace_pass_validates() {
-        validates(TRACE);
+        validates(compose(TRACE));
     }
 
     #[test]
     fn ray_batch_pass_validates() {
-        validates(RAY_BATCH);
+        validates(compose(RAY_BATCH));
     }
 
-    fn validates(pass: ShaderSource) {
-        let source = compose(pass);
+    #[test]
+    fn present_pass_validates() {
+        validates(compose_with(PRESENT_SHARED, PRESENT));
+    }
+
+    fn validates(source: String) {
         let module = match naga::front::wgsl::parse_str(&source) {
             Ok(m) => m,
             Err(e) => panic!("{}", e.emit_to_string(&source)),

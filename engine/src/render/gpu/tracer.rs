@@ -3,7 +3,8 @@
 //! Owns: uploading a `RenderScene` once (storage buffers in `layout` form, bound as in
 //! `shaders/shared/bindings.wgsl`), the film and ray-counter buffers, dispatching the tracing
 //! pass, and reading results back.
-//! Must not: modify the scene on the CPU side or know about windows.
+//! Must not: modify the scene on the CPU side or know about windows (the presenter reads the
+//! film buffer through `Tracer::film_view`).
 
 use std::sync::Arc;
 use std::time::Instant;
@@ -16,7 +17,7 @@ use super::shaders::{TRACE, compose};
 use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
 use crate::render::scene::RenderScene;
-use crate::render::tracer::{RayCounts, RenderError, RenderStats, Tracer};
+use crate::render::tracer::{FilmView, RayCounts, RenderError, RenderStats, Tracer};
 
 /// Workgroup edge of `trace_main` (8×8 invocations).
 const WORKGROUP: u32 = 8;
@@ -357,6 +358,14 @@ impl Tracer for GpuTracer {
             height: film.height,
             mean: texels.iter().map(|t| Vec3::new(t[0], t[1], t[2])).collect(),
             samples: self.samples,
+        })
+    }
+
+    fn film_view(&self) -> Option<FilmView<'_>> {
+        self.film.as_ref().map(|f| FilmView::Device {
+            buffer: &f.film,
+            width: f.width,
+            height: f.height,
         })
     }
 
