@@ -54,6 +54,20 @@ fn shadow_ray(x: vec3<f32>, ng: vec3<f32>, direction: vec3<f32>, distance: f32) 
     return Ray(offset_origin(x, side), 0.0, direction, distance);
 }
 
+// Visibility of light point `p` (light normal `ln`) from `x`: both ends offset off their own
+// surfaces, so neither can block at any magnitude of coordinates (mirrors the CPU's shadow_to).
+fn shadow_ray_to(x: vec3<f32>, ng: vec3<f32>, p: vec3<f32>, ln: vec3<f32>) -> Ray {
+    let to = p - x;
+    let origin = offset_origin(x, select(-ng, ng, dot(to, ng) >= 0.0));
+    let end = offset_origin(p, select(-ln, ln, dot(ln, -to) >= 0.0));
+    let span = end - origin;
+    let len = length(span);
+    if (!(len > 0.0)) {
+        return Ray(origin, 0.0, vec3<f32>(0.0, 1.0, 0.0), 0.0);
+    }
+    return Ray(origin, 0.0, span / len, len);
+}
+
 struct LightEmission {
     radiance: vec3<f32>,
     two_sided: bool,
@@ -124,7 +138,7 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
                     if (mis) {
                         w = power_heuristic(light_pdf, e.pdf);
                     }
-                    out.rays[out.count] = shadow_ray(x, ng, wi, dist * (1.0 - 1e-4));
+                    out.rays[out.count] = shadow_ray_to(x, ng, p, cr / (2.0 * area));
                     out.contribution[out.count] = throughput * e.value * emitter.radiance * (w / light_pdf);
                     out.count += 1u;
                 }

@@ -300,9 +300,21 @@ fn thin_lens_rays_meet_on_the_focal_plane() {
     cam.aperture_radius = 0.2;
     cam.focus_distance = Some(4.0);
     let settings = FrameSettings::new(64, 48, 1, 0, &Default::default());
-    let lens = frame_uniforms(&cam, None, &SkyDesc::default(), &settings, 0, 0.0, 0);
+    let lens = frame_uniforms(
+        &cam,
+        None,
+        &SkyDesc::default(),
+        &settings,
+        &Default::default(),
+    );
     cam.aperture_radius = 0.0;
-    let pinhole = frame_uniforms(&cam, None, &SkyDesc::default(), &settings, 0, 0.0, 0);
+    let pinhole = frame_uniforms(
+        &cam,
+        None,
+        &SkyDesc::default(),
+        &settings,
+        &Default::default(),
+    );
     let forward = Vec3::from(lens.camera_forward);
     let mut spread = 0.0f32;
     for sample in 0..256 {

@@ -126,12 +126,16 @@ fn a_smaller_film_is_upscaled_bilinearly_with_clamped_edges() {
     let (fw, fh) = (3u32, 2u32);
     let mut film = Film::new(fw, fh);
     for (i, p) in film.mean.iter_mut().enumerate() {
-        *p = Vec3::new(0.1 * i as f32, 0.9 - 0.15 * i as f32, if i % 2 == 0 { 0.8 } else { 0.05 });
+        *p = Vec3::new(
+            0.1 * i as f32,
+            0.9 - 0.15 * i as f32,
+            if i % 2 == 0 { 0.8 } else { 0.05 },
+        );
     }
     let (tw, th) = (12u32, 7u32);
     let texel = |x: i32, y: i32| {
-        film.mean[(y.clamp(0, fh as i32 - 1) as u32 * fw + x.clamp(0, fw as i32 - 1) as u32)
-            as usize]
+        film.mean
+            [(y.clamp(0, fh as i32 - 1) as u32 * fw + x.clamp(0, fw as i32 - 1) as u32) as usize]
     };
     let tonemap = TonemapSettings::default();
     let mut composer = composer(wgpu::TextureFormat::Rgba8UnormSrgb);
@@ -150,7 +154,11 @@ fn a_smaller_film_is_upscaled_bilinearly_with_clamped_edges() {
     });
     assert!(worst <= 1, "upscaled pixels differ by up to {worst}");
     // Corners show the corner texels (clamped edges, no wrap), within the same rounding.
-    for ((x, y), (fx, fy)) in [((0, 0), (0, 0)), ((tw - 1, th - 1), (2, 1)), ((0, th - 1), (0, 1))] {
+    for ((x, y), (fx, fy)) in [
+        ((0, 0), (0, 0)),
+        ((tw - 1, th - 1), (2, 1)),
+        ((0, th - 1), (0, 1)),
+    ] {
         let got = shot.rgb(x, y).expect("inside");
         let want = linear_to_srgb8(texel(fx, fy), &tonemap);
         assert!(
@@ -212,11 +220,22 @@ fn the_overlay_draws_over_the_frame_inside_its_rectangle_only() {
     let tonemap = TonemapSettings::default();
     let mut composer = composer(wgpu::TextureFormat::Bgra8UnormSrgb);
     let (mut overlay, bounds) = overlay(size);
-    assert!(bounds.width() > 20.0 && bounds.height() > 20.0, "{bounds:?}");
+    assert!(
+        bounds.width() > 20.0 && bounds.height() > 20.0,
+        "{bounds:?}"
+    );
     let with = composer
-        .compose_offscreen(Some(FilmView::Host(&film)), size, &tonemap, Some(&mut overlay))
+        .compose_offscreen(
+            Some(FilmView::Host(&film)),
+            size,
+            &tonemap,
+            Some(&mut overlay),
+        )
         .expect("compose with overlay");
-    assert!(overlay.textures_delta.is_empty(), "texture changes were applied");
+    assert!(
+        overlay.textures_delta.is_empty(),
+        "texture changes were applied"
+    );
     let without = composer
         .compose_offscreen(Some(FilmView::Host(&film)), size, &tonemap, None)
         .expect("compose without overlay");

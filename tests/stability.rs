@@ -265,9 +265,7 @@ fn no_nan(which: Which) {
             desc.sun.as_ref(),
             &desc.sky,
             &s,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
+            &scene.header(),
         );
         dropped += tracer.render(&scene, &u).expect("render").counts.dropped;
         if frame % 100 == 99 {

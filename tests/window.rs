@@ -327,7 +327,9 @@ fn view_shows_the_headless_frame_in_an_xvfb_window() {
     );
 
     // (c) The X server shows the same picture where the window is.
-    let (x0, y0) = report.inner_position.expect("X11 reports the window's position");
+    let (x0, y0) = report
+        .inner_position
+        .expect("X11 reports the window's position");
     let (x0, y0) = (x0.max(0) as u32, y0.max(0) as u32);
     let matches = roots
         .iter()

@@ -40,9 +40,7 @@ fn main() -> anyhow::Result<()> {
             desc.sun.as_ref(),
             &desc.sky,
             &settings,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
+            &scene.header(),
         );
         let s = tracer.render(&scene, &u)?;
         println!(

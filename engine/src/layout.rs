@@ -109,7 +109,8 @@ impl GpuTri4 {
 
 /// One placed copy of a mesh. Affine transforms are stored as the three rows of a 3×4 matrix
 /// (the fourth row is implicitly `0 0 0 1`). Shading normals go to world space with the
-/// transpose of `object_from_world`'s 3×3 part.
+/// transpose of `object_from_world`'s 3×3 part. "World" here is render space: world minus
+/// the scene's origin (`RenderScene::origin`, camera-relative rendering; see `accel::origin`).
 /// 128 bytes.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Pod, Zeroable)]

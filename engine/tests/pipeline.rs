@@ -315,15 +315,7 @@ fn candela_direct_mean(desc: &candela::assets::SceneDesc, size: u32, spp: u32) -
     for b in 0..8 {
         let mut s = FrameSettings::new(size, size, spp / 8, 1000 + b, &desc.render);
         s.film_blend = 1.0;
-        let u = frame_uniforms(
-            &desc.camera,
-            None,
-            &desc.sky,
-            &s,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
-        );
+        let u = frame_uniforms(&desc.camera, None, &desc.sky, &s, &scene.header());
         tracer.render(&scene, &u).expect("render");
         let film = tracer.film().expect("film");
         means.push(film.mean.iter().map(|p| p.x as f64).sum::<f64>() / film.mean.len() as f64);

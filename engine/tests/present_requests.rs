@@ -83,7 +83,12 @@ fn headless_engines_follow_the_surface_size_and_present_nothing() {
     );
     let mut rendered = Vec::new();
     while rendered.len() < 6 {
-        rendered.push(engine.wait_rendered().expect("a result").expect("render ok"));
+        rendered.push(
+            engine
+                .wait_rendered()
+                .expect("a result")
+                .expect("render ok"),
+        );
     }
     for r in &rendered {
         assert!(r.screenshot.is_none(), "nothing is presented headless");

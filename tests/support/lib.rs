@@ -85,7 +85,42 @@ pub fn render_batches_with(
     method: u32,
 ) -> anyhow::Result<Batches> {
     let scene = RenderScene::build(desc);
-    let mut tracer = open(which, &scene)?;
+    render_scene_batches_with(
+        which, desc, &scene, width, height, spp, batches, seed, method,
+    )
+}
+
+/// [`render_batches`] of an already built `scene` (camera, sun, sky and settings from `desc`).
+#[allow(clippy::too_many_arguments)]
+pub fn render_scene_batches(
+    which: Which,
+    desc: &SceneDesc,
+    scene: &RenderScene,
+    width: u32,
+    height: u32,
+    spp: u32,
+    batches: u32,
+    seed: u32,
+) -> anyhow::Result<Batches> {
+    let method = candela::layout::METHOD_DEFAULT;
+    render_scene_batches_with(
+        which, desc, scene, width, height, spp, batches, seed, method,
+    )
+}
+
+#[allow(clippy::too_many_arguments)]
+fn render_scene_batches_with(
+    which: Which,
+    desc: &SceneDesc,
+    scene: &RenderScene,
+    width: u32,
+    height: u32,
+    spp: u32,
+    batches: u32,
+    seed: u32,
+    method: u32,
+) -> anyhow::Result<Batches> {
+    let mut tracer = open(which, scene)?;
     let mut out = Vec::new();
     for b in 0..batches {
         let mut settings = FrameSettings::new(width, height, spp, seed, &desc.render);
@@ -96,11 +131,9 @@ pub fn render_batches_with(
             desc.sun.as_ref(),
             &desc.sky,
             &settings,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
+            &scene.header(),
         );
-        tracer.render(&scene, &uniforms)?;
+        tracer.render(scene, &uniforms)?;
         out.push(tracer.film()?.mean);
     }
     Ok(Batches {

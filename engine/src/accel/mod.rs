@@ -51,6 +51,7 @@ pub mod blas;
 pub mod bounds;
 mod bvh2;
 mod collapse;
+pub mod origin;
 pub mod refit;
 pub mod tlas;
 mod upkeep;

@@ -92,6 +92,8 @@ pub struct Upkeep {
     pub(super) tlas_dirty: bool,
     pub(super) lights_dirty: bool,
     pub(super) stats: UpkeepStats,
+    /// The far-from-origin warning was given (see `origin.rs`).
+    pub(super) precision_warned: bool,
 }
 
 impl Default for Upkeep {
@@ -114,6 +116,7 @@ impl Upkeep {
             texels: Vec::new(),
             lights: build_lights(&[], &[], &[], &[], &[]),
             tlas_root: 0,
+            origin: Vec3::ZERO,
             bounds: Aabb::EMPTY,
             stats: SceneStats::default(),
         };
@@ -133,6 +136,7 @@ impl Upkeep {
             tlas_dirty: true,
             lights_dirty: true,
             stats: UpkeepStats::default(),
+            precision_warned: false,
         }
     }
 

@@ -29,20 +29,12 @@ impl Upkeep {
     ) -> GpuInstance {
         let mesh = &self.meshes[slot];
         let mut flags = 0;
-        if world_from_object == Mat4::IDENTITY {
-            flags |= INSTANCE_FLAG_IDENTITY;
-        }
         if group.is_some_and(|g| self.groups_off.contains(&g)) {
             flags |= INSTANCE_FLAG_EMISSION_OFF;
         }
-        let inverse = world_from_object.inverse();
-        GpuInstance {
-            world_from_object: affine_rows(world_from_object),
-            object_from_world: affine_rows(if inverse.is_finite() {
-                inverse
-            } else {
-                Mat4::ZERO
-            }),
+        let row = GpuInstance {
+            world_from_object: [[0.0; 4]; 3],
+            object_from_world: [[0.0; 4]; 3],
             node_base: mesh.node_base,
             block_base: mesh.block_base,
             triangle_base: mesh.triangle_base,
@@ -52,7 +44,27 @@ impl Upkeep {
                 .unwrap_or(INVALID),
             flags,
             _padding: [0; 2],
+        };
+        // Render space = world − origin (see `origin.rs`); exact for nearby translations.
+        let render_from_object = Mat4::from_translation(-self.scene.origin) * world_from_object;
+        self.placed_row(row, render_from_object)
+    }
+
+    /// `row` with its transforms set to `render_from_object` (render space, see `origin.rs`)
+    /// and its identity flag kept in step.
+    pub(super) fn placed_row(&self, mut row: GpuInstance, render_from_object: Mat4) -> GpuInstance {
+        row.flags &= !INSTANCE_FLAG_IDENTITY;
+        if render_from_object == Mat4::IDENTITY {
+            row.flags |= INSTANCE_FLAG_IDENTITY;
         }
+        let inverse = render_from_object.inverse();
+        row.world_from_object = affine_rows(render_from_object);
+        row.object_from_world = affine_rows(if inverse.is_finite() {
+            inverse
+        } else {
+            Mat4::ZERO
+        });
+        row
     }
 
     /// Places (or moves) `entity` showing `model` at `world_from_model`, with an optional level
@@ -203,7 +215,7 @@ impl Upkeep {
         }
     }
 
-    /// World bounds of row `i`.
+    /// Render-space bounds of row `i`.
     pub(super) fn row_bounds(&self, i: usize) -> Aabb {
         let slot = self.rows[i].1;
         let r = &self.scene.instances[i].world_from_object;

@@ -156,10 +156,13 @@ impl Engine {
         let extracted = self.extractor.extract(&mut self.world);
         let objects = !extracted.changes.is_empty();
         self.upkeep.apply_changes(extracted.changes);
-        let (writes, header, upkeep) = self.upkeep.finish_frame();
         if let Some(camera) = extracted.camera {
             self.camera = camera;
         }
+        // Camera-relative rendering: keep render space's origin near the camera.
+        self.upkeep
+            .follow_camera(glam::Vec3::from(self.camera.position));
+        let (writes, header, upkeep) = self.upkeep.finish_frame();
         let upkeep_seconds = started.elapsed().as_secs_f64();
 
         let commit = Commit {

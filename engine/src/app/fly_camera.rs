@@ -62,7 +62,11 @@ impl FlyCamera {
             fast_factor: 5.0,
             look_radians_per_count: 0.002,
             yaw: (-forward.x).atan2(-forward.z),
-            pitch: forward.y.clamp(-1.0, 1.0).asin().clamp(-MAX_PITCH, MAX_PITCH),
+            pitch: forward
+                .y
+                .clamp(-1.0, 1.0)
+                .asin()
+                .clamp(-MAX_PITCH, MAX_PITCH),
         };
         let transform = Transform {
             translation: position,
@@ -72,10 +76,7 @@ impl FlyCamera {
         let rig = CameraRig {
             vertical_fov: desc.vertical_fov_deg.to_radians(),
             aperture_radius: desc.aperture_radius,
-            focus_distance: desc
-                .focus_distance
-                .unwrap_or(to_target.length())
-                .max(1e-4),
+            focus_distance: desc.focus_distance.unwrap_or(to_target.length()).max(1e-4),
         };
         (camera, transform, rig)
     }
@@ -94,7 +95,12 @@ pub fn fly_camera_system(world: &mut World, input: &InputState, frame_seconds: f
         let direction = forward * input.axis(FORWARD, BACK)
             + right * input.axis(RIGHT, LEFT)
             + Vec3::Y * input.axis(UP, DOWN);
-        let speed = camera.speed * if input.held(FAST) { camera.fast_factor } else { 1.0 };
+        let speed = camera.speed
+            * if input.held(FAST) {
+                camera.fast_factor
+            } else {
+                1.0
+            };
         transform.translation += direction.normalize_or_zero() * speed * frame_seconds;
         transform.rotation = rotation;
     }
@@ -145,7 +151,10 @@ mod tests {
         fly_camera_system(&mut world, &input, 0.1);
         let t2 = *world.get::<&Transform>(entity).expect("transform");
         let step = t2.translation - t.translation;
-        assert!((step.length() - 1.0).abs() < 1e-5, "2 m/s × 5 × 0.1 s: {step}");
+        assert!(
+            (step.length() - 1.0).abs() < 1e-5,
+            "2 m/s × 5 × 0.1 s: {step}"
+        );
         assert!(step.x > 0.0 && step.z < 0.0, "forward and right: {step}");
         input.release_all();
         // A quarter turn to the left: mouse moves left by π/2 / 0.002 counts.

@@ -69,13 +69,25 @@ impl InputMap {
             (actions::TOGGLE_VSYNC, vec![Key(KeyCode::F4)]),
             (actions::CAPTURE_MOUSE, vec![Mouse(MouseButton::Left)]),
             (actions::RELEASE_MOUSE, vec![Key(KeyCode::Escape)]),
-            (fly::FORWARD, vec![Key(KeyCode::KeyW), Key(KeyCode::ArrowUp)]),
+            (
+                fly::FORWARD,
+                vec![Key(KeyCode::KeyW), Key(KeyCode::ArrowUp)],
+            ),
             (fly::BACK, vec![Key(KeyCode::KeyS), Key(KeyCode::ArrowDown)]),
             (fly::LEFT, vec![Key(KeyCode::KeyA), Key(KeyCode::ArrowLeft)]),
-            (fly::RIGHT, vec![Key(KeyCode::KeyD), Key(KeyCode::ArrowRight)]),
+            (
+                fly::RIGHT,
+                vec![Key(KeyCode::KeyD), Key(KeyCode::ArrowRight)],
+            ),
             (fly::UP, vec![Key(KeyCode::KeyE), Key(KeyCode::Space)]),
-            (fly::DOWN, vec![Key(KeyCode::KeyQ), Key(KeyCode::ControlLeft)]),
-            (fly::FAST, vec![Key(KeyCode::ShiftLeft), Key(KeyCode::ShiftRight)]),
+            (
+                fly::DOWN,
+                vec![Key(KeyCode::KeyQ), Key(KeyCode::ControlLeft)],
+            ),
+            (
+                fly::FAST,
+                vec![Key(KeyCode::ShiftLeft), Key(KeyCode::ShiftRight)],
+            ),
             (fly::LOOK_X, vec![MouseX]),
             (fly::LOOK_Y, vec![MouseY]),
         ];
@@ -248,7 +260,10 @@ mod tests {
             .expect("hand-written RON parses");
         assert_eq!(
             custom.actions["jump"],
-            vec![Binding::Key(KeyCode::Space), Binding::Mouse(MouseButton::Right)]
+            vec![
+                Binding::Key(KeyCode::Space),
+                Binding::Mouse(MouseButton::Right)
+            ]
         );
         assert!(InputMap::from_ron("(actions: {\"jump\": [Key(NoSuchKey)]})").is_err());
     }

@@ -58,13 +58,16 @@ impl StatsOverlay {
                 .resizable(false)
                 .show(context, |ui| {
                     ui.style_mut().override_text_style = Some(egui::TextStyle::Small);
-                    egui::Grid::new("stats").num_columns(2).spacing([8.0, 1.0]).show(ui, |ui| {
-                        for (label, value) in stats.lines() {
-                            ui.label(label);
-                            ui.label(egui::RichText::new(value).monospace().small());
-                            ui.end_row();
-                        }
-                    });
+                    egui::Grid::new("stats")
+                        .num_columns(2)
+                        .spacing([8.0, 1.0])
+                        .show(ui, |ui| {
+                            for (label, value) in stats.lines() {
+                                ui.label(label);
+                                ui.label(egui::RichText::new(value).monospace().small());
+                                ui.end_row();
+                            }
+                        });
                 });
         });
         self.state

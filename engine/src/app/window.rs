@@ -194,7 +194,10 @@ mod tests {
             let message = display_problem(display).map(|e| e.to_string());
             let message = message.unwrap_or_default();
             assert!(message.starts_with("no display"), "{message}");
-            assert!(message.contains("capture") && message.contains("Xvfb"), "{message}");
+            assert!(
+                message.contains("capture") && message.contains("Xvfb"),
+                "{message}"
+            );
         }
         assert!(display_problem(Some(OsStr::new(":99"))).is_none());
     }

@@ -166,8 +166,7 @@ impl<'g> WindowApp<'g> {
                 if let Some(running) = self.running.as_mut() {
                     running.stats.observe_rendered(&rendered);
                 }
-                if let (Some(shot), Some(path)) = (&rendered.screenshot, &self.config.screenshot)
-                {
+                if let (Some(shot), Some(path)) = (&rendered.screenshot, &self.config.screenshot) {
                     match shot.save_png(path) {
                         Ok(()) => self.screenshot = Some(path.clone()),
                         Err(e) => self.fail(e.into()),

@@ -114,9 +114,11 @@ pub fn city_model(entry: &CityEntry, walls: Material, roofs: Material) -> Model 
                     let height = low + (high - low) * fh * fh * towers;
                     let mut half = Vec3::new(0.3 + 0.15 * fx, 0.0, 0.3 + 0.15 * fz) * lot;
                     let mut base = 0.0;
-                    let levels = 1 + (tiers * 3.0 * height / high.max(1e-3)) as u32;
-                    for level in 0..levels.min(3) {
-                        let h = height / (level as f32 + 1.0);
+                    let levels = (1 + (tiers * 3.0 * height / high.max(1e-3)) as u32).min(3);
+                    // Tier k is 1/(k+1) as tall as the first; together they make `height`.
+                    let parts: f32 = (0..levels).map(|k| 1.0 / (k as f32 + 1.0)).sum();
+                    for level in 0..levels {
+                        let h = height / (level as f32 + 1.0) / parts;
                         let min = Vec3::new(centre.x - half.x, base, centre.z - half.z);
                         let max = Vec3::new(centre.x + half.x, base + h, centre.z + half.z);
                         push_box(&mut mesh, min, max, false, 0, 1);

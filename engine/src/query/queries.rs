@@ -48,9 +48,18 @@ impl Upkeep {
 }
 
 impl Queries<'_> {
-    /// The closest hit of `ray` (`t_min < t < t_max`).
+    /// `ray` (world space) in render space (world − the scene's origin, see `accel::origin`).
+    fn to_render(&self, ray: &Ray) -> Ray {
+        Ray {
+            origin: ray.origin - self.upkeep.scene().origin,
+            ..*ray
+        }
+    }
+
+    /// The closest hit of `ray` (world space; `t_min < t < t_max`).
     pub fn closest(&self, ray: &Ray) -> Option<QueryHit> {
         let scene = self.upkeep.scene();
+        let ray = &self.to_render(ray);
         let hit = scene.trace_scene().closest(ray)?;
         let surface = resolve(scene, &hit, ray.direction);
         Some(QueryHit {
@@ -59,7 +68,7 @@ impl Queries<'_> {
             triangle: hit.triangle,
             material: surface.material,
             t: hit.t,
-            position: surface.position,
+            position: surface.position + scene.origin,
             geometric_normal: surface.geometric_normal,
             shading_normal: surface.shading_normal,
             uv: surface.uv,
@@ -68,7 +77,10 @@ impl Queries<'_> {
 
     /// Whether anything blocks `ray` within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray) -> bool {
-        self.upkeep.scene().trace_scene().occluded(ray)
+        self.upkeep
+            .scene()
+            .trace_scene()
+            .occluded(&self.to_render(ray))
     }
 
     /// [`Queries::closest`] for many rays at once, on all cores.

@@ -11,6 +11,7 @@
 use glam::Vec3;
 
 use super::lights::fill_sun_and_sky;
+use super::scene_writes::SceneHeader;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
 use crate::layout::GpuFrameUniforms;
 
@@ -60,18 +61,20 @@ impl FrameSettings {
     }
 }
 
-/// Builds the uniforms of one render call. Light totals and the TLAS root come from the scene.
+/// Builds the uniforms of one render call. Light totals, the TLAS root and the render-space
+/// origin come from the scene's header: the camera (world metres) is placed in render space
+/// (world − origin, see `accel::origin`) here, so tracers only ever see render space.
 pub fn frame_uniforms(
     camera: &CameraDesc,
     sun: Option<&SunDesc>,
     sky: &SkyDesc,
     frame: &FrameSettings,
-    light_count: u32,
-    light_weight_total: f32,
-    tlas_root: u32,
+    scene: &SceneHeader,
 ) -> GpuFrameUniforms {
-    let position = Vec3::from(camera.position);
-    let look_at = Vec3::from(camera.look_at);
+    let (light_count, light_weight_total, tlas_root) =
+        (scene.light_count, scene.light_weight_total, scene.tlas_root);
+    let position = Vec3::from(camera.position) - scene.origin;
+    let look_at = Vec3::from(camera.look_at) - scene.origin;
     let forward = (look_at - position).try_normalize().unwrap_or(Vec3::NEG_Z);
     let up_hint = Vec3::from(camera.up);
     let right = forward

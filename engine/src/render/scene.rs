@@ -45,7 +45,11 @@ pub struct RenderScene {
     pub texels: Vec<[u32; 2]>,
     pub lights: LightTable,
     pub tlas_root: u32,
-    /// World-space bounds of everything.
+    /// Where render space's origin lies in world space (metres). Instances, lights and bounds
+    /// are stored in render space = world − `origin`, so that coordinates near the camera stay
+    /// small and keep f32 precision far from the world origin (see `accel::origin`).
+    pub origin: Vec3,
+    /// Render-space bounds of everything.
     pub bounds: Aabb,
     pub stats: SceneStats,
 }
@@ -53,9 +57,19 @@ pub struct RenderScene {
 impl RenderScene {
     /// Flattens `desc` in one go, through the same [`Upkeep`](crate::accel::Upkeep) path a
     /// running game uses frame by frame (so a one-shot build and an incremental one agree).
+    /// Render space's origin is snapped near the camera (camera-relative rendering, see
+    /// `accel::origin`).
     pub fn build(desc: &SceneDesc) -> RenderScene {
+        let origin = crate::accel::origin::snap_origin(Vec3::from(desc.camera.position));
+        Self::build_with_origin(desc, origin)
+    }
+
+    /// [`RenderScene::build`] with render space's origin at `origin` (world metres, snapped to
+    /// `accel::origin::ORIGIN_GRID`); `Vec3::ZERO` renders in world space as it is.
+    pub fn build_with_origin(desc: &SceneDesc, origin: Vec3) -> RenderScene {
         let started = std::time::Instant::now();
         let mut upkeep = crate::accel::Upkeep::new();
+        upkeep.set_origin(origin);
         upkeep.add_level_materials(&desc.level_materials);
         let handles: Vec<_> = desc.models.iter().map(|m| upkeep.add_model(m)).collect();
         let blas_build_seconds = started.elapsed().as_secs_f64();
@@ -113,6 +127,7 @@ impl RenderScene {
             texels: Vec::new(),
             lights: LightTable::default(),
             tlas_root: 0,
+            origin: Vec3::ZERO,
             bounds: Aabb::EMPTY,
             stats: SceneStats::default(),
         }

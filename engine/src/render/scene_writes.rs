@@ -86,6 +86,8 @@ pub struct SceneHeader {
     pub tlas_root: u32,
     pub light_count: u32,
     pub light_weight_total: f32,
+    /// World position of render space's origin (metres; see `RenderScene::origin`).
+    pub origin: glam::Vec3,
 }
 
 fn write_range<T: Copy + bytemuck::Zeroable>(target: &mut Vec<T>, first: u32, data: &[T]) {
@@ -104,6 +106,7 @@ impl RenderScene {
             tlas_root: self.tlas_root,
             light_count: self.lights.count,
             light_weight_total: self.lights.weight_total,
+            origin: self.origin,
         }
     }
 
@@ -136,6 +139,7 @@ impl RenderScene {
             }
         }
         self.tlas_root = header.tlas_root;
+        self.origin = header.origin;
         self.lights = LightTable {
             lights: std::mem::take(&mut self.lights.lights),
             count: header.light_count,

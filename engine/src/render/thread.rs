@@ -138,9 +138,7 @@ fn render_one(
         commit.sun.as_ref(),
         &commit.sky,
         &settings,
-        scene.lights.count,
-        scene.lights.weight_total,
-        scene.tlas_root,
+        &scene.header(),
     );
     let started = Instant::now();
     let stats = tracer.render(scene, &uniforms)?;
@@ -235,7 +233,10 @@ impl RenderThread {
 
     /// Starts the render thread presenting into `target`'s window: the device is opened for
     /// the window's surface (a failure arrives as the first result).
-    pub fn spawn_windowed(config: RenderConfig, target: PresentTarget) -> Result<Self, RenderError> {
+    pub fn spawn_windowed(
+        config: RenderConfig,
+        target: PresentTarget,
+    ) -> Result<Self, RenderError> {
         Self::start(config, Some(target))
     }
 

@@ -221,15 +221,7 @@ fn run_curve(
         let mut s = FrameSettings::new(size, size, batch, 7, &render).continuing(done);
         s.method = method.method;
         s.roulette_scale = method.roulette_scale;
-        let u = frame_uniforms(
-            &desc.camera,
-            None,
-            &desc.sky,
-            &s,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
-        );
+        let u = frame_uniforms(&desc.camera, None, &desc.sky, &s, &scene.header());
         let started = Instant::now();
         let stats = tracer.render(scene, &u)?;
         seconds += started.elapsed().as_secs_f64();
@@ -291,15 +283,7 @@ pub fn measure(args: &ChartArgs) -> anyhow::Result<Vec<Point>> {
             };
             // Warm-up (the GPU compiles its shader on the first dispatch).
             let warm = FrameSettings::new(size, size, 1, 99, &desc.render);
-            let u = frame_uniforms(
-                &desc.camera,
-                None,
-                &desc.sky,
-                &warm,
-                scene.lights.count,
-                scene.lights.weight_total,
-                scene.tlas_root,
-            );
+            let u = frame_uniforms(&desc.camera, None, &desc.sky, &warm, &scene.header());
             tracer.render(&scene, &u)?;
             for method in METHODS {
                 progress.set_message(format!("{scene_name} {tracer_name} {}", method.name));

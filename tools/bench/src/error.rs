@@ -86,15 +86,7 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
     for tracer in &mut tracers {
         // Warm-up (shader compile on the GPU), then the measured render in batches of 8 spp.
         let warm = FrameSettings::new(256, 256, 1, 99, &desc.render);
-        let u = frame_uniforms(
-            &desc.camera,
-            None,
-            &desc.sky,
-            &warm,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
-        );
+        let u = frame_uniforms(&desc.camera, None, &desc.sky, &warm, &scene.header());
         tracer.render(&scene, &u)?;
         tracer.clear();
         let mut seconds = 0.0;
@@ -102,15 +94,7 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
         while done < args.spp {
             let batch = 8.min(args.spp - done);
             let s = FrameSettings::new(256, 256, batch, 1, &desc.render).continuing(done);
-            let u = frame_uniforms(
-                &desc.camera,
-                None,
-                &desc.sky,
-                &s,
-                scene.lights.count,
-                scene.lights.weight_total,
-                scene.tlas_root,
-            );
+            let u = frame_uniforms(&desc.camera, None, &desc.sky, &s, &scene.header());
             seconds += tracer.render(&scene, &u)?.seconds;
             done += batch;
         }

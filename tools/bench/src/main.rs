@@ -19,11 +19,11 @@ mod build;
 mod chart;
 mod error;
 mod machine;
-mod plot;
 mod pipeline;
 mod pipeline_overlap;
 mod pipeline_queries;
 mod pipeline_refit;
+mod plot;
 mod rays;
 mod report;
 

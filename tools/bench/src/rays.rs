@@ -64,9 +64,11 @@ fn make_rays(
         None,
         &Default::default(),
         &settings,
-        0,
-        0.0,
-        scene.tlas_root,
+        &candela::render::SceneHeader {
+            light_count: 0,
+            light_weight_total: 0.0,
+            ..scene.header()
+        },
     );
     let (w, h) = (args.width, args.height);
     let primary: Vec<Ray> = (0..w * h)

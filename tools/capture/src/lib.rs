@@ -176,9 +176,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
             desc.sun.as_ref(),
             &desc.sky,
             &settings,
-            scene.lights.count,
-            scene.lights.weight_total,
-            scene.tlas_root,
+            &scene.header(),
         );
         let stats = tracer.render(&scene, &uniforms)?;
         rays += stats.rays();

@@ -121,7 +121,11 @@ pub fn level_extent(desc: &SceneDesc) -> f32 {
             }
         }
     }
-    if lo.x <= hi.x { (hi - lo).length() } else { 0.0 }
+    if lo.x <= hi.x {
+        (hi - lo).length()
+    } else {
+        0.0
+    }
 }
 
 /// The game `view` plays: the level and a fly camera.

@@ -260,6 +260,28 @@ fn next_event(
         };
         !tracer.occluded(&ray)
     };
+    // Visibility of the light point `p` (light normal `ln`): from x offset off its surface to p
+    // offset off the light's, so neither end's own surface can block at any magnitude of
+    // coordinates (a fixed fraction of the distance cannot: the offsets grow with |x|).
+    let shadow_to = |p: Vec3, ln: Vec3, counts: &mut RayCounts| {
+        counts.shadow += 1;
+        let to = p - x;
+        let side = if to.dot(ng) >= 0.0 { ng } else { -ng };
+        let origin = offset_origin(x, side);
+        let target = offset_origin(p, if ln.dot(-to) >= 0.0 { ln } else { -ln });
+        let span = target - origin;
+        let length = span.length();
+        if !(length > 0.0) {
+            return false;
+        }
+        let ray = Ray {
+            origin,
+            t_min: 0.0,
+            direction: span / length,
+            t_max: length,
+        };
+        !tracer.occluded(&ray)
+    };
 
     let nee = u.method & METHOD_NEE != 0;
     let mis = u.method & METHOD_MIS != 0;
@@ -298,7 +320,7 @@ fn next_event(
                     1.0 / n_lights as f32
                 };
                 let light_pdf = select * dist2 / (cos_light * area);
-                if f != Vec3::ZERO && shadow(wi, dist * (1.0 - 1e-4), counts) {
+                if f != Vec3::ZERO && shadow_to(p, cross / (2.0 * area), counts) {
                     let w = if mis {
                         power_heuristic(light_pdf, bsdf_pdf)
                     } else {

@@ -77,7 +77,12 @@ pub fn write_png(
 
 /// Writes already encoded 8-bit sRGB RGB pixels (`width × height × 3` bytes, rows top to
 /// bottom) as a PNG: screenshots of what a window showed.
-pub fn write_png_rgb8(path: &Path, width: u32, height: u32, rgb: &[u8]) -> Result<(), ImageIoError> {
+pub fn write_png_rgb8(
+    path: &Path,
+    width: u32,
+    height: u32,
+    rgb: &[u8],
+) -> Result<(), ImageIoError> {
     ensure_parent(path)?;
     let temp = temp_beside(path);
     image::save_buffer_with_format(

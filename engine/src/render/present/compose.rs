@@ -127,20 +127,23 @@ impl FrameComposer {
         {
             return frame.clone();
         }
-        let texture = self.context.device.create_texture(&wgpu::TextureDescriptor {
-            label: Some("frame"),
-            size: wgpu::Extent3d {
-                width: size.0.max(1),
-                height: size.1.max(1),
-                depth_or_array_layers: 1,
-            },
-            mip_level_count: 1,
-            sample_count: 1,
-            dimension: wgpu::TextureDimension::D2,
-            format: self.format,
-            usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-            view_formats: &[],
-        });
+        let texture = self
+            .context
+            .device
+            .create_texture(&wgpu::TextureDescriptor {
+                label: Some("frame"),
+                size: wgpu::Extent3d {
+                    width: size.0.max(1),
+                    height: size.1.max(1),
+                    depth_or_array_layers: 1,
+                },
+                mip_level_count: 1,
+                sample_count: 1,
+                dimension: wgpu::TextureDimension::D2,
+                format: self.format,
+                usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
+                view_formats: &[],
+            });
         let view = texture.create_view(&Default::default());
         let frame = FrameTarget {
             texture,
@@ -269,14 +272,13 @@ impl FrameComposer {
                     });
                 }
                 if self.host_film.as_ref().is_none_or(|b| b.size() < needed) {
-                    self.host_film = Some(self.context.device.create_buffer(
-                        &wgpu::BufferDescriptor {
+                    self.host_film =
+                        Some(self.context.device.create_buffer(&wgpu::BufferDescriptor {
                             label: Some("host film"),
                             size: needed,
                             usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
                             mapped_at_creation: false,
-                        },
-                    ));
+                        }));
                 }
                 let Some(buffer) = self.host_film.clone() else {
                     return Ok(None);

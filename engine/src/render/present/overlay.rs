@@ -79,7 +79,8 @@ impl OverlayPainter {
                 multiview_mask: None,
             })
             .forget_lifetime();
-        self.renderer.render(&mut pass, &overlay.primitives, &screen);
+        self.renderer
+            .render(&mut pass, &overlay.primitives, &screen);
         extra
     }
 

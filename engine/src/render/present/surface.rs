@@ -54,11 +54,10 @@ impl WindowSurface {
     /// Creates the instance with the window system's display, the surface, and a device
     /// that can present to it.
     pub fn open(target: &PresentTarget) -> Result<(Self, Arc<GpuContext>), RenderError> {
-        let instance = wgpu::Instance::new(
-            wgpu::InstanceDescriptor::new_with_display_handle_from_env(Box::new(
-                target.display.clone(),
-            )),
-        );
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_with_display_handle_from_env(
+                Box::new(target.display.clone()),
+            ));
         let surface = instance
             .create_surface(Arc::clone(&target.window))
             .map_err(|e| RenderError::Device(format!("cannot create a window surface: {e}")))?;
@@ -174,7 +173,9 @@ impl WindowSurface {
                     self.surface = self
                         .instance
                         .create_surface(Arc::clone(&self.window))
-                        .map_err(|e| RenderError::Device(format!("cannot recreate the surface: {e}")))?;
+                        .map_err(|e| {
+                            RenderError::Device(format!("cannot recreate the surface: {e}"))
+                        })?;
                     self.configure(context);
                 }
                 wgpu::CurrentSurfaceTexture::Validation => {
