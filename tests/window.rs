@@ -25,66 +25,18 @@
 //!   grabs over 1.5 s are taken and one must match.
 
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
 use candela::app::WindowEnd;
 use candela::assets::{AssetRoot, load_level};
+use candela_tests::xvfb::{set_environment, start_xvfb};
 use candela_tests::{Which, region_stat, render_batches, repo};
 use clap::Parser;
 
 const WIDTH: u32 = 160;
 const HEIGHT: u32 = 120;
-
-/// An Xvfb server, killed when dropped.
-struct Xvfb {
-    child: Child,
-    display: String,
-}
-
-impl Drop for Xvfb {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-fn start_xvfb() -> Xvfb {
-    for n in 90..190 {
-        if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
-            || Path::new(&format!("/tmp/.X{n}-lock")).exists()
-        {
-            continue;
-        }
-        let display = format!(":{n}");
-        let spawned = Command::new("Xvfb")
-            .args([&display, "-screen", "0", "1280x720x24", "-nolisten", "tcp"])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn();
-        let mut child = match spawned {
-            Ok(child) => child,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => panic!(
-                "Xvfb is not installed: `cargo xtask test` installs it (Debian package xvfb)"
-            ),
-            Err(e) => panic!("cannot start Xvfb: {e}"),
-        };
-        let started = Instant::now();
-        while started.elapsed() < Duration::from_secs(10) {
-            if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists() {
-                return Xvfb { child, display };
-            }
-            if let Ok(Some(_)) = child.try_wait() {
-                break; // the display was taken meanwhile: try the next one
-            }
-            std::thread::sleep(Duration::from_millis(50));
-        }
-        let _ = child.kill();
-        let _ = child.wait();
-    }
-    panic!("no free X display number in :90..:190");
-}
 
 /// The X root window as an RGB image (`xwd -root` through ImageMagick's real `convert`).
 fn grab_root(display: &str) -> image::RgbImage {
@@ -124,26 +76,6 @@ fn srgb_to_linear(s: u8) -> f64 {
 /// Half the linear width of ±1 sRGB step around `s`.
 fn quantisation(s: u8) -> f64 {
     (srgb_to_linear(s.saturating_add(1)) - srgb_to_linear(s.saturating_sub(1))) / 2.0
-}
-
-fn set_environment(display: &str, scratch: &Path) {
-    let runtime = scratch.join("xdg");
-    std::fs::create_dir_all(&runtime).expect("runtime dir");
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::PermissionsExt;
-        std::fs::set_permissions(&runtime, std::fs::Permissions::from_mode(0o700))
-            .expect("runtime dir mode");
-    }
-    // SAFETY: this test binary holds only this test; no other thread reads the environment yet.
-    unsafe {
-        std::env::set_var("DISPLAY", display);
-        std::env::remove_var("WAYLAND_DISPLAY");
-        std::env::set_var("XDG_RUNTIME_DIR", &runtime);
-        if std::env::var_os("WGPU_BACKEND").is_none() {
-            std::env::set_var("WGPU_BACKEND", "vulkan");
-        }
-    }
 }
 
 #[test]

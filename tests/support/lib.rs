@@ -6,6 +6,8 @@
 //! standard error of any region mean then follows from summing those variances, with thousands
 //! of pixels × (batches − 1) degrees of freedom, so the error estimate itself is precise.
 
+pub mod xvfb;
+
 use std::path::PathBuf;
 
 use candela::assets::{CameraDesc, Material, Mesh, Model, Placement, SceneDesc};
