@@ -16,6 +16,7 @@
 //! - InterpolationTest `0_Step_Scale` samples at 0.25 d (exactly on a STEP key: takes it) and
 //!   at 0.75 d (3e-8 s before a key: keeps the previous one), which a float64 clock against
 //!   float32 key times reproduces; the test passes the manifest's exact float64 times.
+//!
 //! Node world matrices are compared too (1e-5 relative to each column's size, or to the model
 //! size for the translation column), and the sampled local TRS of animated nodes (1e-5, a few
 //! float32 ulps of unit-range values).

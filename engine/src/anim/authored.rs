@@ -111,7 +111,7 @@ impl AuthoredClipSet {
                     let mut value = key.value.clone();
                     if track.property == Property::Rotation && value.len() == 4 {
                         let length = value.iter().map(|c| c * c).sum::<f32>().sqrt();
-                        if !(length > 0.0) {
+                        if length.is_nan() || length <= 0.0 {
                             return Err(bad(format!("key {k}: the rotation is zero")));
                         }
                         value.iter_mut().for_each(|c| *c /= length);

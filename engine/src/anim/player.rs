@@ -77,12 +77,12 @@ impl Playback {
         let Some(clip) = clips.get(self.clip) else {
             return;
         };
-        if self.paused || self.finished || !(dt_seconds > 0.0) {
+        if self.paused || self.finished || dt_seconds.is_nan() || dt_seconds <= 0.0 {
             return;
         }
         let duration = clip.duration_seconds;
         let mut first = std::mem::take(&mut self.fresh);
-        if !(duration > 0.0) {
+        if duration.is_nan() || duration <= 0.0 {
             if first {
                 fire(clip, self.clip, 0.0, 0.0, true, fired);
             }
