@@ -275,3 +275,47 @@ fn authored_clip_errors_name_the_file_and_item() {
         Err(AnimError::BadRon { .. })
     ));
 }
+
+#[test]
+fn example_level_clips_load_and_play() -> TestResult {
+    let file = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../assets/test_scenes/anim/door_and_lift.ron"
+    ));
+    let set = AuthoredClipSet::load(file)?;
+    let clips = set.to_clips(file)?;
+    let lift = clips
+        .iter()
+        .position(|c| c.name == "lift_cycle")
+        .ok_or("no lift_cycle clip")?;
+    let target = set
+        .targets
+        .iter()
+        .position(|t| t == "lift")
+        .ok_or("no lift target")?;
+    let mut player = AnimationPlayer::new();
+    player.play(Playback::new(lift, PlayMode::PingPong));
+    // Up the shaft and back: the platform never leaves [0, 6] m and ends where it started.
+    let mut arrivals = 0;
+    for _ in 0..(12 * 60) {
+        let fired = player.tick(&clips, 1.0 / 60.0);
+        arrivals += fired.iter().filter(|e| e.name == "lift_arrived").count();
+        let y = player
+            .pose(&clips, &Pose::identity(set.targets.len()))
+            .translation[target]
+            .y;
+        assert!((-EPS..=6.0 + EPS).contains(&y), "{y}");
+    }
+    // 12 s of ping-pong over a 6 s clip passes the 5 s mark once up and once down.
+    assert_eq!(arrivals, 2);
+    let y = player
+        .pose(&clips, &Pose::identity(set.targets.len()))
+        .translation[target]
+        .y;
+    assert!(y.abs() < 1e-3, "{y}");
+    assert!(matches!(
+        AuthoredClipSet::load(Path::new("no/such/clips.ron")),
+        Err(AnimError::Asset(_))
+    ));
+    Ok(())
+}

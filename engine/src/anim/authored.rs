@@ -1,9 +1,11 @@
 //! Clips authored by hand in level files (doors, elevators, moving platforms): a RON
 //! description of named targets and keyframe tracks, checked and turned into [`Clip`]s.
 //!
-//! Owns: [`AuthoredClipSet`] and its parts (serde), [`AuthoredClipSet::from_ron`],
+//! Owns: [`AuthoredClipSet`] and its parts (serde), [`AuthoredClipSet::load`] / `from_ron`,
 //! [`AuthoredClipSet::to_clips`]. Must not: know what the targets are (the level or the ECS
-//! binds target names to entities), or read files other than the one it is given.
+//! binds target names to entities), or read files other than the one it is given. Level
+//! files can embed an `AuthoredClipSet` (targets = instance names) once triggers drive doors;
+//! `assets/test_scenes/anim/door_and_lift.ron` is an example.
 //! Units: seconds; translation in metres; rotation as a quaternion (x, y, z, w), normalised
 //! here (authored by hand, so never trusted to be unit length); scale factors; weights.
 //!
@@ -26,6 +28,7 @@ use serde::{Deserialize, Serialize};
 
 use super::clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 use super::error::{AnimError, AnimResult};
+use crate::assets::AssetError;
 
 /// Targets and the clips that animate them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -70,6 +73,23 @@ pub struct AuthoredKey {
 }
 
 impl AuthoredClipSet {
+    /// Reads and parses the RON file at `path`.
+    pub fn load(path: &Path) -> AnimResult<Self> {
+        let text = std::fs::read_to_string(path).map_err(|source| {
+            if source.kind() == std::io::ErrorKind::NotFound {
+                AssetError::NotFound {
+                    path: path.to_path_buf(),
+                }
+            } else {
+                AssetError::Io {
+                    path: path.to_path_buf(),
+                    source,
+                }
+            }
+        })?;
+        Self::from_ron(path, &text)
+    }
+
     /// Parses RON `text` read from `file` (named in errors).
     pub fn from_ron(file: &Path, text: &str) -> AnimResult<Self> {
         ron::from_str(text).map_err(|e| AnimError::BadRon {
