@@ -19,7 +19,7 @@
 //!
 //! Node world matrices are compared too (1e-5 relative to each column's size, or to the model
 //! size for the translation column), and the sampled local TRS of animated nodes (1e-5, a few
-//! float32 ulps of unit-range values).
+//! float32 ulps of unit-range values), and morph weights (1e-6).
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -73,6 +73,7 @@ struct Report {
     max_matrix_error: f32,
     max_trs_error: f32,
     poses: usize,
+    morph_weights: usize,
     failures: Vec<String>,
 }
 
@@ -118,6 +119,7 @@ fn check_pose(
             actual[worst], expected[worst]
         ));
     }
+    let primitives = scene_primitives(model);
     let world = model.world_matrices(pose);
     if let Some(matrices) = sample["node_world_matrices"].as_array() {
         for (node, m) in matrices.iter().enumerate() {
@@ -175,6 +177,28 @@ fn check_pose(
                 }
             }
         }
+    }
+    // three's morph influences per primitive; ours are per node (all primitives of a mesh
+    // share them). Weights are unit-range: 1e-6 is a few float32 ulps.
+    for entry in sample["morph_weights"].as_array().into_iter().flatten() {
+        let prim = entry["prim"].as_u64().ok_or("morph entry without prim")? as usize;
+        let node = primitives
+            .get(prim)
+            .map(|p| p.node)
+            .ok_or("morph entry names no primitive")?;
+        let reference = floats(&entry["weights"]);
+        let mine = &pose.weights[node];
+        let error = reference
+            .iter()
+            .zip(mine)
+            .map(|(r, m)| (r - m).abs())
+            .fold(0.0f32, f32::max);
+        if reference.len() != mine.len() || error > 1e-6 {
+            report.failures.push(format!(
+                "{label}: node {node} morph weights {mine:?} vs {reference:?}"
+            ));
+        }
+        report.morph_weights += 1;
     }
     report.poses += 1;
     Ok(())
@@ -241,6 +265,7 @@ fn every_model_and_time_matches_three_js() -> TestResult {
     let models: BTreeMap<String, Value> = serde_json::from_value(index["models"].clone())?;
     assert!(!models.is_empty(), "the reference index lists no models");
     let mut failures = Vec::new();
+    let mut morph_weight_checks = 0;
     println!(
         "{:<22} {:>6} {:>12} {:>12} {:>12} {:>12}",
         "model", "poses", "max pos err", "tolerance", "max mat err", "max TRS err"
@@ -255,8 +280,13 @@ fn every_model_and_time_matches_three_js() -> TestResult {
             report.max_matrix_error,
             report.max_trs_error
         );
+        morph_weight_checks += report.morph_weights;
         failures.extend(report.failures.into_iter().map(|f| format!("{name}: {f}")));
     }
+    assert!(
+        morph_weight_checks > 0,
+        "no morph weights compared (the reference has morphed models)"
+    );
     assert!(
         failures.is_empty(),
         "{} mismatches:\n{}",
