@@ -8,9 +8,9 @@
 
 mod bump;
 mod city;
-mod context;
+pub(crate) mod context;
 mod error;
-mod gltf;
+pub(crate) mod gltf;
 mod grid;
 mod limits;
 mod load;

@@ -7,8 +7,9 @@
 //! 64-bit arithmetic, `count` is bounded by [`MAX_ACCESSOR_ELEMENTS`] before allocating, and
 //! a sparse index must lie below `count`.
 //! Values: floats as they are; integers as their value, or mapped to [0, 1] / [-1, 1] when
-//! `normalized` (glTF 2.0 §3.11). Matrix accessors are not read (nothing the engine loads uses
-//! them). Output is flat: `count × components` values.
+//! `normalized` (glTF 2.0 §3.11). Of the matrix types only MAT4 is read (skins' inverse bind
+//! matrices), column-major as stored: its columns never need the padding glTF 2.0 §3.6.2.4
+//! asks of MAT2/MAT3 with small components. Output is flat: `count × components` values.
 //! Must not: interpret what the values mean (`mesh` does).
 
 use gltf::json;
@@ -146,7 +147,7 @@ impl Reader<'_> {
             self.error(
                 index,
                 what,
-                "is a matrix, which is not read here".to_string(),
+                "is a MAT2 or MAT3, which is not read here".to_string(),
             )
         })?;
         let count = accessor.count.0;
@@ -268,14 +269,15 @@ impl Reader<'_> {
     }
 }
 
-/// Components per element of a non-matrix type.
+/// Components per element of a type the reader supports (MAT2 and MAT3 are not).
 fn components_of(kind: Type) -> Option<usize> {
     match kind {
         Type::Scalar => Some(1),
         Type::Vec2 => Some(2),
         Type::Vec3 => Some(3),
         Type::Vec4 => Some(4),
-        Type::Mat2 | Type::Mat3 | Type::Mat4 => None,
+        Type::Mat4 => Some(16),
+        Type::Mat2 | Type::Mat3 => None,
     }
 }
 

@@ -1,0 +1,41 @@
+//! Animation: rigid keyframe clips (from glTF or authored in level files), skeletal skinning
+//! and morph targets, and a player that turns time into poses.
+//!
+//! Flow: `gltf_anim` (with `gltf_anim_mesh`, `gltf_anim_clips`) loads an [`AnimatedModel`],
+//! or `authored` reads RON clips → [`Clip`]s (`clip`) are sampled (`sample`) into a
+//! [`Pose`] of local transforms and weights (`pose`), driven by an [`AnimationPlayer`]
+//! (`player`: play, pause, loop, ping-pong, reverse, events, crossfades) → `pose` gives world
+//! matrices → `deform` morphs (`morph`) and skins (`skin`) vertices, as world-space positions
+//! or as mesh-space `Vec<Vec3>` for the deforming-mesh refit in `accel::Upkeep::deform`.
+//!
+//! Runs on the main thread (game update). Must not: touch the renderer, BVHs or the ECS
+//! (systems that move entities call this library). Units: seconds (float64 clocks, float32
+//! key times as glTF stores them), metres, radians; right-handed, +Y up.
+
+mod authored;
+mod clip;
+mod deform;
+mod error;
+mod gltf_anim;
+mod gltf_anim_clips;
+mod gltf_anim_mesh;
+mod model;
+mod morph;
+mod player;
+mod pose;
+mod sample;
+mod skin;
+
+pub use authored::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
+pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
+pub use deform::{
+    Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,
+};
+pub use error::{AnimError, AnimResult};
+pub use gltf_anim::{load_animation, load_animation_file};
+pub use model::{AnimMesh, AnimPrimitive, AnimatedModel};
+pub use morph::{MorphTarget, morph_normals, morph_positions, morph_tangents};
+pub use player::{AnimationPlayer, FiredEvent, PlayMode, Playback};
+pub use pose::{NodeRest, NodeTree, Pose};
+pub use sample::{sample_channel, slerp};
+pub use skin::{Influence, Skin, SkinnedVertices, joint_matrices, skin_vertices};
