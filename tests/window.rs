@@ -24,7 +24,6 @@
 //!   bytes; 24-bit Xvfb keeps 8 bits per channel). Presentation is asynchronous, so three
 //!   grabs over 1.5 s are taken and one must match.
 
-use std::path::Path;
 use std::process::{Command, Stdio};
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};

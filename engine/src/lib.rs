@@ -14,7 +14,7 @@ pub mod assets;
 
 pub mod ecs;
 
-pub mod anim;
+pub mod sim;
 
 pub mod extract;
 

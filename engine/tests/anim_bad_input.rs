@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use candela::anim::{AnimError, AnimatedModel, load_animation_file};
+use candela::sim::animation::{AnimError, AnimatedModel, load_animation_file};
 
 type TestResult = Result<(), Box<dyn std::error::Error>>;
 
@@ -347,7 +347,7 @@ fn in_range_joints_load_and_skin() -> TestResult {
     let dir = TempDir::new("joints_ok")?;
     let path = skinned(&dir, &[0, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0])?;
     let model = load(&path)?;
-    let positions = candela::anim::world_positions(&model, &model.rest_pose());
+    let positions = candela::sim::animation::world_positions(&model, &model.rest_pose());
     // Vertex 0 follows joint node 1 (identity); vertices 1 and 2 follow node 2 (up by 1 m).
     assert_eq!(positions[0], glam::Vec3::ZERO);
     assert_eq!(positions[1], glam::Vec3::new(1.0, 1.0, 0.0));

@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use candela::anim::{
+use candela::sim::animation::{
     AnimError, AnimationPlayer, AuthoredClipSet, Channel, Clip, ClipEvent, Interpolation, PlayMode,
     Playback, Pose, Property, sample_channel,
 };
@@ -62,7 +62,7 @@ fn clips() -> Vec<Clip> {
     vec![rise, hold]
 }
 
-fn names(events: &[candela::anim::FiredEvent]) -> Vec<&str> {
+fn names(events: &[candela::sim::animation::FiredEvent]) -> Vec<&str> {
     events.iter().map(|e| e.name.as_str()).collect()
 }
 

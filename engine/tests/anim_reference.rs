@@ -24,7 +24,9 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use candela::anim::{AnimatedModel, load_animation_file, scene_primitives, world_positions};
+use candela::sim::animation::{
+    AnimatedModel, load_animation_file, scene_primitives, world_positions,
+};
 use glam::{Mat4, Vec3};
 use serde_json::Value;
 
@@ -82,7 +84,7 @@ fn check_pose(
     model: &AnimatedModel,
     dir: &Path,
     label: &str,
-    pose: &candela::anim::Pose,
+    pose: &candela::sim::animation::Pose,
     sample: &Value,
     report: &mut Report,
 ) -> TestResult {

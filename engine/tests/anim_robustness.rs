@@ -15,7 +15,7 @@ use std::path::{Path, PathBuf};
 use std::sync::mpsc;
 use std::time::Duration;
 
-use candela::anim::{AnimError, load_animation_file, world_positions};
+use candela::sim::animation::{AnimError, load_animation_file, world_positions};
 
 /// A load plus evaluation longer than this is a failure (the largest sample model takes well
 /// under a second in release builds).

@@ -9,12 +9,12 @@
 use std::path::{Path, PathBuf};
 
 use candela::accel::Upkeep;
-use candela::anim::{
+use candela::assets::load_model_file;
+use candela::render::SceneWrite;
+use candela::sim::animation::{
     Influence, MorphTarget, deform_mesh, load_animation_file, morph_normals, skin_vertices,
     world_positions,
 };
-use candela::assets::load_model_file;
-use candela::render::SceneWrite;
 use glam::{Mat4, Vec3, Vec4};
 
 type TestResult = Result<(), Box<dyn std::error::Error>>;

@@ -6,7 +6,7 @@ use std::io::Write;
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use candela::anim::{AnimatedModel, world_positions};
+use candela::sim::animation::{AnimatedModel, world_positions};
 
 /// Evaluates `clip` (the rest pose when `None`) at `time_seconds` and writes every vertex
 /// of the default scene to `out`; returns the vertex count.

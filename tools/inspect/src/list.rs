@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use candela::anim::{AnimatedModel, Interpolation};
+use candela::sim::animation::{AnimatedModel, Interpolation};
 
 fn name(name: Option<&str>) -> String {
     name.map_or_else(|| "(unnamed)".to_string(), |n| format!("{n:?}"))

@@ -36,7 +36,7 @@ struct Args {
 
 fn main() -> Result<()> {
     let args = Args::parse();
-    let model = candela::anim::load_animation_file(&args.file)
+    let model = candela::sim::animation::load_animation_file(&args.file)
         .with_context(|| format!("loading {}", args.file.display()))?;
     if args.time.is_some() && args.clip.is_none() {
         bail!("--time needs --clip");

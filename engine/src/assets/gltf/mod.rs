@@ -6,7 +6,7 @@
 //! decodes URIs) → `material` converts materials (`texture` loads their images) → `nodes`
 //! expands the scene → `mesh` converts the meshes (`accessor` reads their data) →
 //! `instancing` expands `EXT_mesh_gpu_instancing` nodes.
-//! `anim::gltf_anim` reuses `document` and `accessor` to read clips, skins and morph targets.
+//! `sim::animation::gltf_anim` reuses `document` and `accessor` to read clips, skins and morph targets.
 
 pub(crate) mod accessor;
 pub(crate) mod document;
