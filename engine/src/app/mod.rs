@@ -20,6 +20,7 @@ mod stats_overlay;
 mod waves;
 mod window;
 mod window_app;
+mod work;
 
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
@@ -40,6 +41,7 @@ pub use waves::{Waves, waves_system};
 pub use window::{
     WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport, display_problem, run_window,
 };
+pub use work::{FrameWork, WorkTotals};
 
 /// Action names of the fly camera.
 pub mod fly_actions {

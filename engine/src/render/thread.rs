@@ -62,6 +62,9 @@ pub struct Rendered {
     pub film_size: (u32, u32),
     /// Bytes of scene data the commit carried.
     pub commit_bytes: usize,
+    /// Emissive triangles in the render side's light sampling distribution (its alias table)
+    /// this frame.
+    pub lights: u32,
     /// Main-thread figures carried through for the stats overlay.
     pub update_seconds: f64,
     pub upkeep: crate::accel::UpkeepStats,
@@ -161,6 +164,7 @@ fn render_one(
         roulette_scale: work.roulette_scale,
         film_size: (width, height),
         commit_bytes: commit.bytes(),
+        lights: scene.lights.count,
         update_seconds: commit.update_seconds,
         upkeep: commit.upkeep,
         film,
@@ -235,7 +239,10 @@ impl RenderThread {
 
     /// Starts the render thread presenting into `target`'s window: the device is opened for
     /// the window's surface (a failure arrives as the first result).
-    pub fn spawn_windowed(config: RenderConfig, target: PresentTarget) -> Result<Self, RenderError> {
+    pub fn spawn_windowed(
+        config: RenderConfig,
+        target: PresentTarget,
+    ) -> Result<Self, RenderError> {
         Self::start(config, Some(target))
     }
 
