@@ -7,6 +7,7 @@ mod clock;
 mod engine;
 mod fly_camera;
 mod frame_limiter;
+mod ghosting;
 mod input;
 mod level;
 mod script;
@@ -26,6 +27,7 @@ pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
 pub use fly_camera::{FlyCamera, fly_camera_system};
 pub use frame_limiter::FrameLimiter;
+pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
 pub use script::{
