@@ -16,7 +16,7 @@
 //!
 //! So B is what the policy promises: its ghost plus its share of the noise. The test asserts
 //! that the engine's default policy stays within 1.15 × its B — the 15 % covers the model's
-//! centre-coverage approximation of edge pixels (it over-predicts by 1–7 % here) and the sampling
+//! centre-coverage approximation of edge pixels (it over-predicts by 1–8 % here) and the sampling
 //! error of an RMS over ~120 pixels (1/√(2·120) ≈ 6.5 %, two of them) — and that pure
 //! accumulation (floor 0) does not (the test has power). It does not claim that the default
 //! reaches noise level: under this motion it leaves about 3× a fresh frame's error (see
