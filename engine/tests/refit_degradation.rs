@@ -10,6 +10,7 @@
 //!   with brute force on random rays: same triangle, same distance bit for bit;
 //! * the animation really degrades refits (the policy rebuilds at least twice), so the bound
 //!   above is exercised rather than trivially met.
+//!
 //! No rendering; CPU BVH only.
 
 use candela::accel::{REBUILD_RATIO, Upkeep, build_blas, sah_cost};

@@ -145,8 +145,8 @@ impl GhostSetup {
         }
     }
 
-    /// Centre of the square at `frame` (metres, world space): it starts left of the view's
-    /// centre and moves right so that it is near the middle at the measured frame.
+    /// x of the square's centre at `frame` (metres, world space): it moves along +X and is 1 m
+    /// right of the view's centre at the measured (last) frame.
     pub fn object_x(&self, frame: u32) -> f32 {
         (frame as f32 - (self.frames as f32 - 1.0)) * self.metres_per_frame + 1.0
     }

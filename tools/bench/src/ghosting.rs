@@ -74,7 +74,7 @@ pub fn run(args: &GhostingArgs) -> anyhow::Result<()> {
         let label = match policy.moving_floor {
             f if f >= 1.0 => format!("{f} (reset on motion)"),
             f if f == engine_floor => format!("{f} (engine default)"),
-            f if f == 0.0 => "0 (pure accumulation)".to_string(),
+            0.0 => "0 (pure accumulation)".to_string(),
             f => format!("{f}"),
         };
         println!(
