@@ -56,13 +56,15 @@ pub mod refit;
 pub mod tlas;
 mod upkeep;
 mod upkeep_instances;
+mod upkeep_report;
 
 pub use blas::{Blas, build_blas, build_blas_with};
 pub use bounds::Aabb;
 pub use bvh2::BuildQuality;
-pub use refit::{refit_blas, sah_cost};
+pub use refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 pub use tlas::build_tlas;
 pub use upkeep::{REBUILD_RATIO, Upkeep, UpkeepStats};
+pub use upkeep_report::MeshCost;
 
 /// Deepest tree (levels of 8-wide nodes) the builders emit and the tracers' fixed stacks hold.
 /// A traversal pushes at most 7 entries per level plus 8 at the deepest node, so

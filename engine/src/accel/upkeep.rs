@@ -5,7 +5,8 @@
 //! queries read it), per-mesh slots in the node/block/vertex buffers, the instance table and
 //! which entity owns which instance, light groups, and the policy: rigid movers change only
 //! their instance rows; a deforming mesh is refitted every frame it changes and rebuilt when its
-//! SAH cost exceeds [`REBUILD_RATIO`] × its cost at the last build; the TLAS is rebuilt every
+//! SAH cost exceeds [`REBUILD_RATIO`] × the estimated cost of a fresh build of its current
+//! shape (at most its cost at the last build; see `refit::rebuild_bound`); the TLAS is rebuilt every
 //! frame an instance changed; the light table every frame an emitter changed. Only what changed
 //! is written. Main thread. Must not: talk to the GPU or the render thread (the commit carries
 //! the writes).
@@ -19,7 +20,7 @@ use rayon::prelude::*;
 
 use super::blas::{Blas, build_blas};
 use super::bounds::Aabb;
-use super::refit::{refit_blas, sah_cost};
+use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 use super::tlas::build_tlas;
 use crate::assets::{Material, Model};
 use crate::ecs::ModelHandle;
@@ -30,9 +31,10 @@ use crate::render::scene::{RenderScene, SceneStats, mesh_vertices};
 use crate::render::scene_writes::{SceneHeader, SceneWrite};
 
 /// Rebuild a deforming mesh's BLAS when its SAH cost after refitting exceeds this multiple of
-/// its cost right after its last build. Chosen by measurement: see `docs/PERFORMANCE.md`
-/// ("BVH upkeep"); a refit is 10–30× cheaper than a rebuild, and traversal slows roughly in
-/// proportion to the SAH cost.
+/// the estimated cost of a fresh build (`refit::rebuild_bound`). Chosen by measurement: see
+/// `docs/PERFORMANCE.md` ("The frame pipeline on the demo level", rebuild threshold; `bench
+/// pipeline --only refit`); a refit is 15–20× cheaper than a rebuild, and traversal slows
+/// roughly in proportion to the SAH cost.
 pub const REBUILD_RATIO: f32 = 1.5;
 
 /// Where one mesh lives in the flattened buffers.
@@ -49,6 +51,8 @@ pub(super) struct MeshSlot {
     pub(super) triangles: Vec<[u32; 3]>,
     /// SAH cost right after the last (re)build.
     pub(super) built_cost: f32,
+    /// [`triangle_area_ratio`] right after the last (re)build.
+    pub(super) built_area: f32,
     /// Any of its triangles' materials emits.
     pub(super) emissive: bool,
 }
@@ -71,6 +75,9 @@ pub struct UpkeepStats {
     pub light_table_builds: u32,
     /// Bytes of all writes of the frame.
     pub bytes: usize,
+    /// Bytes of the frame's geometry writes (BVH nodes and triangle blocks, vertices,
+    /// triangles): zero in a frame where nothing moved or deformed.
+    pub geometry_bytes: usize,
     /// Seconds spent in refits, rebuilds and the TLAS.
     pub seconds: f64,
 }
@@ -243,6 +250,7 @@ impl Upkeep {
                 .iter()
                 .any(|&m| emissive.get(m as usize).copied().unwrap_or(false));
             let built_cost = sah_cost(&blas.nodes, &blas.blocks);
+            let built_area = triangle_area_ratio(&blas);
             let mut slot = MeshSlot {
                 node_base: 0,
                 node_capacity: blas.nodes.len() as u32,
@@ -253,6 +261,7 @@ impl Upkeep {
                 vertex_count,
                 triangles: mesh.triangles.clone(),
                 built_cost,
+                built_area,
                 emissive: slot_emissive,
                 blas,
             };
@@ -337,9 +346,11 @@ impl Upkeep {
             data: vertices,
         });
         let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
-        if cost > REBUILD_RATIO * slot.built_cost {
+        let area = triangle_area_ratio(&slot.blas);
+        if cost > rebuild_bound(REBUILD_RATIO, slot.built_cost, slot.built_area, area) {
             slot.blas = build_blas(positions, &slot.triangles);
             slot.built_cost = sah_cost(&slot.blas.nodes, &slot.blas.blocks);
+            slot.built_area = triangle_area_ratio(&slot.blas);
             self.stats.blas_rebuilds += 1;
             self.place_blas(&mut slot, false);
             self.rewrite_rows_of_slot(slot_index, &slot);
@@ -415,6 +426,11 @@ impl Upkeep {
         let writes = std::mem::take(&mut self.pending);
         let mut stats = std::mem::take(&mut self.stats);
         stats.bytes = writes.iter().map(SceneWrite::bytes).sum();
+        stats.geometry_bytes = writes
+            .iter()
+            .filter(|w| w.is_geometry())
+            .map(SceneWrite::bytes)
+            .sum();
         (writes, self.scene.header(), stats)
     }
 

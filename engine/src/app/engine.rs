@@ -13,6 +13,7 @@ use std::time::Instant;
 use hecs::World;
 
 use super::clock::FixedClock;
+use super::work::FrameWork;
 use crate::accel::Upkeep;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
 use crate::commit::{Commit, Motion, PresentRequest};
@@ -53,6 +54,8 @@ pub struct FrameReport {
     pub commit_bytes: usize,
     /// Bytes of overlay (egui vertices, indices, texture updates) the commit carried.
     pub overlay_bytes: usize,
+    /// What was computed: instances, BVH refits/rebuilds, TLAS builds, lights, bounces.
+    pub work: FrameWork,
 }
 
 /// The engine's frame loop.
@@ -163,6 +166,7 @@ impl Engine {
         self.upkeep
             .follow_camera(glam::Vec3::from(self.camera.position));
         let (writes, header, upkeep) = self.upkeep.finish_frame();
+        let work = FrameWork::of(&self.world, &self.upkeep, &upkeep, &self.environment.render);
         let upkeep_seconds = started.elapsed().as_secs_f64();
 
         let commit = Commit {
@@ -204,6 +208,7 @@ impl Engine {
             handoff_seconds,
             commit_bytes,
             overlay_bytes,
+            work,
         };
         self.frame += 1;
         Ok(report)

@@ -7,6 +7,7 @@ mod clock;
 mod engine;
 mod fly_camera;
 mod frame_limiter;
+mod ghosting;
 mod input;
 mod level;
 mod script;
@@ -20,11 +21,13 @@ mod stats_overlay;
 mod waves;
 mod window;
 mod window_app;
+mod work;
 
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment, FrameReport};
 pub use fly_camera::{FlyCamera, fly_camera_system};
 pub use frame_limiter::FrameLimiter;
+pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
 pub use script::{
@@ -40,6 +43,7 @@ pub use waves::{Waves, waves_system};
 pub use window::{
     WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport, display_problem, run_window,
 };
+pub use work::{FrameWork, WorkTotals};
 
 /// Action names of the fly camera.
 pub mod fly_actions {

@@ -38,8 +38,9 @@ use super::engine::{Engine, Environment, FrameReport};
 use super::script::{Script, ScriptError, ScriptTracer};
 use super::script_motion::{apply_motion, camera_at, camera_transform, cut_at};
 use super::waves::waves_system;
+use super::work::FrameWork;
 use crate::accel::UpkeepStats;
-use crate::assets::SceneDesc;
+use crate::assets::{Needs, SceneDesc};
 use crate::ecs::{CameraRig, Transform};
 use crate::render::film::{ConvergePolicy, Film, TonemapSettings, write_exr, write_png};
 use crate::render::{RenderConfig, RenderError, Rendered, TracerChoice};
@@ -74,6 +75,8 @@ pub struct FrameTiming {
     pub render_seconds: f64,
     pub commit_bytes: usize,
     pub upkeep: UpkeepStats,
+    /// What the engine computed this frame (instances, BVH work, lights, bounces).
+    pub work: FrameWork,
 }
 
 /// A screenshot taken.
@@ -96,6 +99,8 @@ pub struct ScriptReport {
     pub wall_seconds: f64,
     /// The tracer that rendered.
     pub tracer: ScriptTracer,
+    /// Renderer features the level's content uses.
+    pub needs: Needs,
 }
 
 /// Collects the render thread's results into the report, writing screenshots as films arrive.
@@ -227,6 +232,7 @@ pub fn run_script(
         report: ScriptReport {
             frames: Vec::with_capacity(script.frames as usize),
             tracer,
+            needs: Needs::of_scene(desc),
             ..Default::default()
         },
     };
@@ -295,6 +301,7 @@ pub fn run_script(
             upkeep_seconds: report.upkeep_seconds,
             handoff_seconds: report.handoff_seconds,
             commit_bytes: report.commit_bytes,
+            work: report.work,
             ..Default::default()
         });
         for r in engine.rendered() {

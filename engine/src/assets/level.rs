@@ -14,6 +14,7 @@
 //!     camera: (position: (0, 1, 3.8), look_at: (0, 1, 0), vertical_fov_deg: 40),
 //!     sky: Constant((0, 0, 0)),
 //!     render: (max_bounces: 7),
+//!     needs: (emitters: true),
 //! )
 //! ```
 
@@ -59,6 +60,9 @@ pub struct Level {
     pub sky: SkyDesc,
     #[serde(default)]
     pub render: RenderSettings,
+    /// Renderer features the level may use (see [`super::Needs`]); absent: derived from content.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub needs: Option<super::Needs>,
 }
 
 /// A model file under a name.

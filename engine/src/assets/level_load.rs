@@ -14,6 +14,7 @@ use rayon::prelude::*;
 use super::error::{AssetError, AssetResult};
 use super::level::{Level, LevelMaterial};
 use super::model::Material;
+use super::needs::Needs;
 use super::root::AssetRoot;
 use super::scene_desc::{SceneDesc, SceneInstance};
 
@@ -144,7 +145,7 @@ pub fn scene_from_level(
         }
     }
     models.extend(grids);
-    Ok(SceneDesc {
+    let desc = SceneDesc {
         source: level_path.to_path_buf(),
         models,
         level_materials: level.materials.iter().map(level_material).collect(),
@@ -153,7 +154,25 @@ pub fn scene_from_level(
         sun: level.sun,
         sky: level.sky,
         render: level.render,
-    })
+    };
+    let used = Needs::of_scene(&desc);
+    match level.needs {
+        Some(declared) => {
+            let missing = declared.undeclared(&used);
+            if !missing.is_empty() {
+                return Err(level_error(format!(
+                    "the level uses {} but its `needs` does not declare {}",
+                    missing.join(", "),
+                    if missing.len() == 1 { "it" } else { "them" }
+                )));
+            }
+        }
+        None => log::info!(
+            "{}: declares no `needs`; its content uses: {used}",
+            level_path.display()
+        ),
+    }
+    Ok(desc)
 }
 
 fn level_material(m: &LevelMaterial) -> Material {

@@ -44,4 +44,6 @@ pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_load;
 mod level_shapes;
+mod needs;
 pub use level_load::{load_level, scene_from_level};
+pub use needs::Needs;

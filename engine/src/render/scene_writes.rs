@@ -78,6 +78,18 @@ impl SceneWrite {
             SceneWrite::TruncateInstances { .. } => 0,
         }
     }
+
+    /// Whether this write carries geometry: BVH nodes (BLAS or TLAS), triangle blocks,
+    /// triangles or vertices.
+    pub fn is_geometry(&self) -> bool {
+        matches!(
+            self,
+            SceneWrite::Nodes { .. }
+                | SceneWrite::Blocks { .. }
+                | SceneWrite::Triangles { .. }
+                | SceneWrite::Vertices { .. }
+        )
+    }
 }
 
 /// The scalars of a scene that change together with its buffers.

@@ -62,6 +62,9 @@ pub struct Rendered {
     pub film_size: (u32, u32),
     /// Bytes of scene data the commit carried.
     pub commit_bytes: usize,
+    /// Emissive triangles in the render side's light sampling distribution (its alias table)
+    /// this frame.
+    pub lights: u32,
     /// Main-thread figures carried through for the stats overlay.
     pub update_seconds: f64,
     pub upkeep: crate::accel::UpkeepStats,
@@ -159,6 +162,7 @@ fn render_one(
         roulette_scale: work.roulette_scale,
         film_size: (width, height),
         commit_bytes: commit.bytes(),
+        lights: scene.lights.count,
         update_seconds: commit.update_seconds,
         upkeep: commit.upkeep,
         film,

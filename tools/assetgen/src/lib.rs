@@ -11,7 +11,7 @@
 
 use candela::assets::{
     BoxEntry, CameraDesc, CityEntry, GridEntry, InstanceEntry, Level, LevelMaterial, MaterialKind,
-    RenderSettings, SkyDesc, SunDesc, TerrainEntry, TransformDesc, WaveDesc,
+    Needs, RenderSettings, SkyDesc, SunDesc, TerrainEntry, TransformDesc, WaveDesc,
 };
 
 /// Light groups of the demo.
@@ -286,6 +286,15 @@ pub fn demo_level() -> Level {
             max_bounces: 4,
             roulette_start: 2,
         },
+        // What the demo shows off; loading refuses content that needs anything else.
+        needs: Some(Needs {
+            glass: true,
+            emitters: true,
+            sun: true,
+            sky: true,
+            deforming: true,
+            ..Default::default()
+        }),
     }
 }
 

@@ -14,10 +14,13 @@
 //! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
 //!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
 //!   of game update and render (CSV files beside the tables).
+//! * `bench ghosting` — error on a fast-moving object and its trail per converging policy
+//!   (`ghosting.csv` beside the table; figures in `docs/ACCURACY.md`).
 
 mod build;
 mod chart;
 mod error;
+mod ghosting;
 mod machine;
 mod pipeline;
 mod pipeline_overlap;
@@ -49,6 +52,8 @@ enum Command {
     Chart(chart::ChartArgs),
     /// The frame pipeline on the demo level: upkeep, refit threshold, queries, overlap.
     Pipeline(pipeline::PipelineArgs),
+    /// Error on a fast-moving object and its trail per converging policy.
+    Ghosting(ghosting::GhostingArgs),
 }
 
 fn main() -> anyhow::Result<()> {
@@ -64,5 +69,6 @@ fn main() -> anyhow::Result<()> {
             report::write(&a, &points, &machine)
         }
         Command::Pipeline(a) => pipeline::run(&a),
+        Command::Ghosting(a) => ghosting::run(&a),
     }
 }

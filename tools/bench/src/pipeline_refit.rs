@@ -5,8 +5,9 @@
 //! vertical motion only) and `swirl` (the same waves turned about the centre by
 //! `0.8 rad/s · t / (1 + r / 3 m)`: a whirlpool whose shear stretches triangles across the tree,
 //! the hard case for refitting). Policies, all run in lockstep on the same frames: rebuild every
-//! frame (ratio 0), refit and rebuild when SAH cost > ratio × cost at the last build for ratios
-//! 1.05 … 3, and refit only (∞). Every 10th frame each policy's tree (and a fresh build, the
+//! frame (ratio 0), refit and rebuild when SAH cost > `rebuild_bound(ratio, …)` (ratio × the
+//! estimated cost of a fresh build, at most ratio × the cost at the last build: the engine's
+//! policy) for ratios 1.05 … 3, and refit only (∞). Every 10th frame each policy's tree (and a fresh build, the
 //! ideal) traces the same 20,000 rays on one thread — 10,000 camera-like rays from one point
 //! above the pool, 10,000 incoherent rays between random points above it and on it — in
 //! rotating order, median of 3 passes; hit counts must agree (same geometry, same hits).
@@ -14,7 +15,7 @@
 
 use std::time::Instant;
 
-use candela::accel::{Blas, build_blas, refit_blas, sah_cost};
+use candela::accel::{Blas, build_blas, rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 use candela::app::{Waves, waves_system};
 use candela::assets::SceneDesc;
 use candela::ecs::Deformable;
@@ -33,6 +34,7 @@ struct Policy {
     ratio: f32,
     blas: Blas,
     built_cost: f32,
+    built_area: f32,
     rebuilds: u32,
     upkeep: Vec<f64>,
     ray_seconds: Vec<f64>,
@@ -133,6 +135,7 @@ fn one(desc: &SceneDesc, args: &PipelineArgs, swirl: bool) -> anyhow::Result<()>
             Policy {
                 ratio,
                 built_cost: sah_cost(&blas.nodes, &blas.blocks),
+                built_area: triangle_area_ratio(&blas),
                 blas,
                 rebuilds: 0,
                 upkeep: Vec::new(),
@@ -153,10 +156,12 @@ fn one(desc: &SceneDesc, args: &PipelineArgs, swirl: bool) -> anyhow::Result<()>
             let started = Instant::now();
             let cost = refit_blas(&mut p.blas, &positions, triangles);
             let refit = started.elapsed().as_secs_f64();
-            if cost > p.ratio * p.built_cost {
+            let area = triangle_area_ratio(&p.blas);
+            if cost > rebuild_bound(p.ratio, p.built_cost, p.built_area, area) {
                 let started = Instant::now();
                 p.blas = build_blas(&positions, triangles);
                 p.built_cost = sah_cost(&p.blas.nodes, &p.blas.blocks);
+                p.built_area = triangle_area_ratio(&p.blas);
                 p.rebuilds += 1;
                 build_seconds.push(started.elapsed().as_secs_f64());
             }

@@ -1,6 +1,7 @@
 //! `capture --script file.ron [--out-dir DIR]`: runs a capture script on the engine with a
 //! progress bar over frames, writes its screenshots and `frames.csv` (one row per frame: time
-//! split and commit bytes) into the output folder, and prints where the time per frame went.
+//! split and commit bytes) into the output folder, and prints where the time per frame went and
+//! what the engine computed over the run (the level's features, instances, BVH work, lights).
 //!
 //! Owns: the command-line side of a script run (overrides, progress, summary). Must not: run
 //! frames itself (`candela::app::run_script` does).
@@ -9,7 +10,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use anyhow::Context;
-use candela::app::{FrameTiming, RunOptions, Script, ScriptReport, ScriptTracer, run_script};
+use candela::app::{
+    FrameTiming, RunOptions, Script, ScriptReport, ScriptTracer, WorkTotals, run_script,
+};
 
 use super::{CaptureArgs, TracerKind};
 
@@ -75,6 +78,12 @@ impl std::fmt::Display for ScriptSummary {
             median(steady.clone()),
             steady.iter().copied().fold(0.0, f64::max)
         )?;
+        writeln!(f, "level needs: {}", self.report.needs)?;
+        writeln!(
+            f,
+            "{}",
+            WorkTotals::of(self.report.frames.iter().map(|t| &t.work))
+        )?;
         for shot in &self.report.screenshots {
             for file in shot.png.iter().chain(&shot.exr) {
                 writeln!(f, "wrote {} (frame {})", file.display(), shot.frame)?;
@@ -91,12 +100,13 @@ impl std::fmt::Display for ScriptSummary {
 pub fn frames_csv(frames: &[FrameTiming]) -> String {
     let mut out = String::from(
         "frame,update_ms,upkeep_ms,handoff_ms,apply_ms,render_ms,commit_bytes,instances_written,\
-         blas_refits,blas_rebuilds,tlas_builds,light_table_builds,upkeep_bvh_ms\n",
+         blas_refits,blas_rebuilds,tlas_builds,light_table_builds,upkeep_bvh_ms,static_instances,\
+         dynamic_instances,geometry_bytes,lights,max_bounces,awake_bodies\n",
     );
     for t in frames {
         let _ = writeln!(
             out,
-            "{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{},{:.4}",
+            "{},{:.4},{:.4},{:.4},{:.4},{:.4},{},{},{},{},{},{},{:.4},{},{},{},{},{},{}",
             t.frame,
             t.update_seconds * 1e3,
             t.upkeep_seconds * 1e3,
@@ -109,7 +119,13 @@ pub fn frames_csv(frames: &[FrameTiming]) -> String {
             t.upkeep.blas_rebuilds,
             t.upkeep.tlas_builds,
             t.upkeep.light_table_builds,
-            t.upkeep.seconds * 1e3
+            t.upkeep.seconds * 1e3,
+            t.work.static_instances,
+            t.work.dynamic_instances,
+            t.work.geometry_bytes,
+            t.work.lights,
+            t.work.max_bounces,
+            t.work.awake_bodies
         );
     }
     out
