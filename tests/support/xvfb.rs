@@ -7,7 +7,7 @@
 
 use std::path::Path;
 use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// An Xvfb server, killed when dropped.
 pub struct Xvfb {
@@ -23,41 +23,49 @@ impl Drop for Xvfb {
     }
 }
 
-/// Starts Xvfb (1280×720×24) on the first free display in :90..:190.
+/// Starts Xvfb (1280×720×24) on a display it picks itself (`-displayfd`: the server takes the
+/// first free number atomically and reports it once it accepts connections, so window tests
+/// running side by side never share a server).
 pub fn start_xvfb() -> Xvfb {
-    for n in 90..190 {
-        if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists()
-            || Path::new(&format!("/tmp/.X{n}-lock")).exists()
-        {
-            continue;
+    use std::io::{BufRead, BufReader};
+    let spawned = Command::new("Xvfb")
+        .args([
+            "-displayfd",
+            "1",
+            "-screen",
+            "0",
+            "1280x720x24",
+            "-nolisten",
+            "tcp",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::null())
+        .spawn();
+    let mut child = match spawned {
+        Ok(child) => child,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            panic!("Xvfb is not installed: `cargo xtask test` installs it (Debian package xvfb)")
         }
-        let display = format!(":{n}");
-        let spawned = Command::new("Xvfb")
-            .args([&display, "-screen", "0", "1280x720x24", "-nolisten", "tcp"])
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn();
-        let mut child = match spawned {
-            Ok(child) => child,
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => panic!(
-                "Xvfb is not installed: `cargo xtask test` installs it (Debian package xvfb)"
-            ),
-            Err(e) => panic!("cannot start Xvfb: {e}"),
-        };
-        let started = Instant::now();
-        while started.elapsed() < Duration::from_secs(10) {
-            if Path::new(&format!("/tmp/.X11-unix/X{n}")).exists() {
-                return Xvfb { child, display };
-            }
-            if let Ok(Some(_)) = child.try_wait() {
-                break; // the display was taken meanwhile: try the next one
-            }
-            std::thread::sleep(Duration::from_millis(50));
+        Err(e) => panic!("cannot start Xvfb: {e}"),
+    };
+    let stdout = child.stdout.take().expect("Xvfb's stdout is piped");
+    let (sender, receiver) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        let mut line = String::new();
+        let _ = BufReader::new(stdout).read_line(&mut line);
+        let _ = sender.send(line);
+    });
+    match receiver.recv_timeout(Duration::from_secs(30)) {
+        Ok(line) if line.trim().parse::<u32>().is_ok() => Xvfb {
+            child,
+            display: format!(":{}", line.trim()),
+        },
+        other => {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("Xvfb did not report a display within 30 s: {other:?}");
         }
-        let _ = child.kill();
-        let _ = child.wait();
     }
-    panic!("no free X display number in :90..:190");
 }
 
 /// Points this process at `display`, with a private runtime folder under `scratch`.

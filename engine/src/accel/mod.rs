@@ -55,6 +55,7 @@ pub mod origin;
 pub mod refit;
 pub mod tlas;
 mod upkeep;
+mod upkeep_deform;
 mod upkeep_instances;
 mod upkeep_report;
 

@@ -75,3 +75,20 @@ pub enum AssetError {
 
 /// Result of asset functions.
 pub type AssetResult<T> = Result<T, AssetError>;
+
+impl AssetError {
+    /// An I/O failure on `path`: [`AssetError::NotFound`] when it does not exist, otherwise
+    /// [`AssetError::Io`].
+    pub fn io(path: &std::path::Path, source: std::io::Error) -> Self {
+        if source.kind() == std::io::ErrorKind::NotFound {
+            AssetError::NotFound {
+                path: path.to_path_buf(),
+            }
+        } else {
+            AssetError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+        }
+    }
+}

@@ -300,18 +300,7 @@ impl Level {
 
     /// Reads and parses a level file.
     pub fn read(path: &Path) -> AssetResult<Level> {
-        let text = std::fs::read_to_string(path).map_err(|source| {
-            if source.kind() == std::io::ErrorKind::NotFound {
-                AssetError::NotFound {
-                    path: path.to_path_buf(),
-                }
-            } else {
-                AssetError::Io {
-                    path: path.to_path_buf(),
-                    source,
-                }
-            }
-        })?;
+        let text = std::fs::read_to_string(path).map_err(|source| AssetError::io(path, source))?;
         Level::parse(path, &text)
     }
 

@@ -50,18 +50,9 @@ pub fn load_model(root: &AssetRoot, referrer: &Path, path: &str) -> AssetResult<
 
 /// Loads the model file at `path` with its own folder as the asset root (for tools and tests).
 pub fn load_model_file(path: &Path) -> AssetResult<Model> {
-    let file = path.canonicalize().map_err(|source| {
-        if source.kind() == std::io::ErrorKind::NotFound {
-            AssetError::NotFound {
-                path: path.to_path_buf(),
-            }
-        } else {
-            AssetError::Io {
-                path: path.to_path_buf(),
-                source,
-            }
-        }
-    })?;
+    let file = path
+        .canonicalize()
+        .map_err(|source| AssetError::io(path, source))?;
     let (Some(folder), Some(name)) = (file.parent(), file.file_name()) else {
         return Err(AssetError::Unsupported {
             path: path.to_path_buf(),

@@ -18,18 +18,9 @@ impl AssetRoot {
     /// Opens `root`, which must be an existing directory.
     pub fn new(root: impl AsRef<Path>) -> AssetResult<Self> {
         let given = root.as_ref();
-        let root = given.canonicalize().map_err(|source| {
-            if source.kind() == std::io::ErrorKind::NotFound {
-                AssetError::NotFound {
-                    path: given.to_path_buf(),
-                }
-            } else {
-                AssetError::Io {
-                    path: given.to_path_buf(),
-                    source,
-                }
-            }
-        })?;
+        let root = given
+            .canonicalize()
+            .map_err(|source| AssetError::io(given, source))?;
         Ok(Self { root })
     }
 
@@ -79,18 +70,9 @@ impl AssetRoot {
             return Err(outside());
         }
         // Then the real check, which also catches symbolic links that point out of the root.
-        let real = lexical.canonicalize().map_err(|source| {
-            if source.kind() == std::io::ErrorKind::NotFound {
-                AssetError::NotFound {
-                    path: lexical.clone(),
-                }
-            } else {
-                AssetError::Io {
-                    path: lexical.clone(),
-                    source,
-                }
-            }
-        })?;
+        let real = lexical
+            .canonicalize()
+            .map_err(|source| AssetError::io(&lexical, source))?;
         if !real.starts_with(&self.root) {
             return Err(outside());
         }

@@ -75,18 +75,7 @@ pub struct AuthoredKey {
 impl AuthoredClipSet {
     /// Reads and parses the RON file at `path`.
     pub fn load(path: &Path) -> AnimResult<Self> {
-        let text = std::fs::read_to_string(path).map_err(|source| {
-            if source.kind() == std::io::ErrorKind::NotFound {
-                AssetError::NotFound {
-                    path: path.to_path_buf(),
-                }
-            } else {
-                AssetError::Io {
-                    path: path.to_path_buf(),
-                    source,
-                }
-            }
-        })?;
+        let text = std::fs::read_to_string(path).map_err(|source| AssetError::io(path, source))?;
         Self::from_ron(path, &text)
     }
 

@@ -49,18 +49,9 @@ pub fn load_animation(root: &AssetRoot, referrer: &Path, path: &str) -> AnimResu
 /// Loads the animation data of the glTF/GLB file at `path`, with its folder as the asset
 /// root (for tools and tests).
 pub fn load_animation_file(path: &Path) -> AnimResult<AnimatedModel> {
-    let file = path.canonicalize().map_err(|source| {
-        if source.kind() == std::io::ErrorKind::NotFound {
-            AssetError::NotFound {
-                path: path.to_path_buf(),
-            }
-        } else {
-            AssetError::Io {
-                path: path.to_path_buf(),
-                source,
-            }
-        }
-    })?;
+    let file = path
+        .canonicalize()
+        .map_err(|source| AssetError::io(path, source))?;
     let (Some(folder), Some(name)) = (file.parent(), file.file_name().and_then(|n| n.to_str()))
     else {
         return Err(AssetError::Unsupported {

@@ -1,0 +1,71 @@
+//! Deforming meshes of the [`Upkeep`]: new vertex positions each frame, the BLAS refitted, or
+//! rebuilt when refitting has degraded it past the policy's bound (`REBUILD_RATIO` × the
+//! estimated cost of a fresh build, see `refit.rs`).
+//!
+//! Owns: the per-frame deform path (vertex writes, refit or rebuild, the rows of a rebuilt
+//! mesh). Main thread. Must not: touch instance placement (see `upkeep_instances.rs`).
+
+use glam::Vec3;
+
+use super::blas::build_blas;
+use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
+use super::upkeep::{REBUILD_RATIO, Upkeep};
+use crate::ecs::ModelHandle;
+use crate::render::scene_writes::SceneWrite;
+
+impl Upkeep {
+    /// New object-space positions (and optionally normals) for mesh `mesh` of `model`: refits
+    /// its BLAS, or rebuilds it when the refit has degraded past [`REBUILD_RATIO`]. Every
+    /// placement of the model shows the new shape. Wrong vertex counts are ignored (logged).
+    pub fn deform(
+        &mut self,
+        model: ModelHandle,
+        mesh: usize,
+        positions: &[Vec3],
+        normals: Option<&[Vec3]>,
+    ) {
+        let Some(&slot_index) = self
+            .models
+            .get(model.0 as usize)
+            .and_then(|m| m.meshes.get(mesh))
+        else {
+            log::warn!("deform: model {} has no mesh {mesh}", model.0);
+            return;
+        };
+        let started = std::time::Instant::now();
+        let mut slot = self.meshes[slot_index].clone();
+        let first = slot.vertex_base as usize;
+        let count = slot.vertex_count as usize;
+        if positions.len() != count || normals.is_some_and(|n| n.len() != count) {
+            log::warn!("deform: mesh has {count} vertices, got {}", positions.len());
+            return;
+        }
+        let mut vertices = self.scene.vertices[first..first + count].to_vec();
+        for (i, v) in vertices.iter_mut().enumerate() {
+            v.position = positions[i].to_array();
+            if let Some(n) = normals {
+                v.normal = n[i].to_array();
+            }
+        }
+        self.push(SceneWrite::Vertices {
+            first: first as u32,
+            data: vertices,
+        });
+        let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
+        let area = triangle_area_ratio(&slot.blas);
+        if cost > rebuild_bound(REBUILD_RATIO, slot.built_cost, slot.built_area, area) {
+            slot.blas = build_blas(positions, &slot.triangles);
+            slot.built_cost = sah_cost(&slot.blas.nodes, &slot.blas.blocks);
+            slot.built_area = triangle_area_ratio(&slot.blas);
+            self.stats.blas_rebuilds += 1;
+            self.place_blas(&mut slot, false);
+            self.rewrite_rows_of_slot(slot_index, &slot);
+        } else {
+            self.stats.blas_refits += 1;
+            self.place_blas(&mut slot, false);
+        }
+        self.meshes[slot_index] = slot;
+        self.refresh_bounds_of_slot(slot_index);
+        self.stats.seconds += started.elapsed().as_secs_f64();
+    }
+}
