@@ -186,3 +186,31 @@ fn rust_and_wgsl_layouts_agree() {
         );
     }
 }
+
+/// The constants both sides use to read the layout (sentinels, leaf payload encoding, flags) have
+/// the same values in Rust and in `types.wgsl`.
+#[test]
+fn rust_and_wgsl_constants_agree() {
+    let path = candela_tests::repo().join("shaders/shared/types.wgsl");
+    let source = std::fs::read_to_string(&path).expect("shaders/shared/types.wgsl is readable");
+    let module = naga::front::wgsl::parse_str(&source)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+    let wgsl: HashMap<String, u32> = module
+        .constants
+        .iter()
+        .filter_map(|(_, c)| match module.global_expressions[c.init] {
+            naga::Expression::Literal(naga::Literal::U32(v)) => Some((c.name.clone()?, v)),
+            _ => None,
+        })
+        .collect();
+    for (name, value) in [
+        ("INVALID", INVALID),
+        ("LEAF_BIT", LEAF_BIT),
+        ("LEAF_COUNT_SHIFT", LEAF_COUNT_SHIFT),
+        ("LEAF_INDEX_MASK", LEAF_INDEX_MASK),
+        ("MAX_LEAF_BLOCKS", MAX_LEAF_BLOCKS),
+        ("INSTANCE_FLAG_IDENTITY", INSTANCE_FLAG_IDENTITY),
+    ] {
+        assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
+    }
+}

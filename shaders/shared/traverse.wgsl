@@ -181,11 +181,16 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
         if ((entry & LEAF_BIT) != 0u) {
             let payload = entry & ~LEAF_BIT;
             if (in_blas) {
-                let b = intersect_block(block_base + payload, tri, ray.t_min, hit.t);
-                if (b.found) {
-                    hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
-                    if (any_hit) {
-                        return hit;
+                // The leaf's consecutive blocks, in order (engine/src/trace/scalar.rs, leaf_blocks).
+                let first = block_base + (payload & LEAF_INDEX_MASK);
+                let count = (payload >> LEAF_COUNT_SHIFT) + 1u;
+                for (var k = 0u; k < count; k++) {
+                    let b = intersect_block(first + k, tri, ray.t_min, hit.t);
+                    if (b.found) {
+                        hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
+                        if (any_hit) {
+                            return hit;
+                        }
                     }
                 }
                 continue;

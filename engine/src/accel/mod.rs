@@ -56,7 +56,7 @@ pub mod tlas;
 mod upkeep;
 mod upkeep_instances;
 
-pub use blas::{Blas, build_blas, build_blas_with};
+pub use blas::{Blas, BlasParams, build_blas, build_blas_with, build_blas_with_params};
 pub use bounds::Aabb;
 pub use bvh2::BuildQuality;
 pub use refit::{refit_blas, sah_cost};
