@@ -272,7 +272,8 @@ fn instance_transform_keeps_world_t() {
 }
 
 /// Rays exactly through the shared diagonal of a quad must hit one of its two triangles (the
-/// cracks that `EDGE_SLACK` closes). Tilted quads at a distance, so the rounding is not trivial.
+/// cracks that the slack of `triangle.rs` closes). Tilted quads at a distance, so the rounding
+/// is not trivial. `tests/watertight.rs` does the same on a closed mesh with both tracers.
 #[test]
 fn shared_edges_have_no_cracks() {
     let mut rng = Rng::new(77);

@@ -18,7 +18,7 @@ use super::ray::Ray;
 use super::scalar::{BlasHit, Leaf, leaf_blocks};
 use super::simd::{NodeRay, walk};
 use super::simd_lanes::Lanes;
-use super::triangle::{DEGENERATE_RATIO, EDGE_SLACK, TriRay};
+use super::triangle::{DEGENERATE_RATIO, EDGE_SLACK, SLACK_SCALE, TriRay};
 use crate::layout::{GpuBvh8Node, GpuTri4};
 
 /// Per-ray constants of the triangle test (see `triangle.rs`), kept scalar: each block test
@@ -80,13 +80,22 @@ unsafe fn block_test<L: Lanes>(block: *const GpuTri4, r: &BlockRay, t_max: f32) 
         let u = w1.mul(inv_det);
         let v = w2.mul(inv_det);
         let t = v.fmadd(e2z, u.fmadd(e1z, a2)).mul(sz);
-        let slack = L::splat(-EDGE_SLACK);
+        // The rounding-error slack per edge, in `triangle::intersect_permuted`'s order.
+        let m = ax.andnot(sign).add(ay.andnot(sign)).add(a2.andnot(sign));
+        let c = m.mul(inv_det.andnot(sign).mul(L::splat(SLACK_SCALE)));
+        let len1 = e1x.andnot(sign).add(e1y.andnot(sign)).add(e1z.andnot(sign));
+        let len2 = e2x.andnot(sign).add(e2y.andnot(sign)).add(e2z.andnot(sign));
+        let base = L::splat(EDGE_SLACK);
+        let zero = L::splat(0.0);
+        let neg_slack_u = zero.sub(c.fmadd(len2, base));
+        let neg_slack_v = zero.sub(c.fmadd(len1, base));
+        let slack_w = c.fmadd(len1.add(len2), base);
         let ok = det
             .andnot(sign)
             .gt(bound)
-            .and(u.ge(slack))
-            .and(v.ge(slack))
-            .and(u.add(v).le(L::splat(1.0 + EDGE_SLACK)))
+            .and(u.ge(neg_slack_u))
+            .and(v.ge(neg_slack_v))
+            .and(u.add(v).le(L::splat(1.0).add(slack_w)))
             .and(t.gt(L::splat(r.t_min)))
             .and(t.lt(L::splat(t_max)));
         (ok.mask(), t, u, v)
