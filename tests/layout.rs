@@ -186,3 +186,57 @@ fn rust_and_wgsl_layouts_agree() {
         );
     }
 }
+
+/// The constants both sides use to read the layout (sentinels, leaf payload encoding, flags) have
+/// the same values in Rust and in `types.wgsl`.
+#[test]
+fn rust_and_wgsl_constants_agree() {
+    let path = candela_tests::repo().join("shaders/shared/types.wgsl");
+    let source = std::fs::read_to_string(&path).expect("shaders/shared/types.wgsl is readable");
+    let module = naga::front::wgsl::parse_str(&source)
+        .unwrap_or_else(|e| panic!("{}", e.emit_to_string(&source)));
+    let wgsl: HashMap<String, u32> = module
+        .constants
+        .iter()
+        .filter_map(|(_, c)| match module.global_expressions[c.init] {
+            naga::Expression::Literal(naga::Literal::U32(v)) => Some((c.name.clone()?, v)),
+            _ => None,
+        })
+        .collect();
+    for (name, value) in [
+        ("INVALID", INVALID),
+        ("LEAF_BIT", LEAF_BIT),
+        ("LEAF_COUNT_SHIFT", LEAF_COUNT_SHIFT),
+        ("LEAF_INDEX_MASK", LEAF_INDEX_MASK),
+        ("MAX_LEAF_BLOCKS", MAX_LEAF_BLOCKS),
+        ("INSTANCE_FLAG_IDENTITY", INSTANCE_FLAG_IDENTITY),
+    ] {
+        assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
+    }
+}
+
+/// The triangle test's f32 constants in `shaders/shared/traverse.wgsl` equal Rust's bit for bit
+/// (the tracers must make the same hit decisions).
+#[test]
+fn triangle_test_constants_agree() {
+    use candela::trace::triangle::{DEGENERATE_RATIO, EDGE_SLACK, SLACK_SCALE};
+    let path = candela_tests::repo().join("shaders/shared/traverse.wgsl");
+    let source = std::fs::read_to_string(&path).expect("shaders/shared/traverse.wgsl is readable");
+    for (name, value) in [
+        ("DEGENERATE_RATIO", DEGENERATE_RATIO),
+        ("SLACK_SCALE", SLACK_SCALE),
+        ("EDGE_SLACK", EDGE_SLACK),
+    ] {
+        let prefix = format!("const {name}: f32 = ");
+        let wgsl: f32 = source
+            .lines()
+            .find_map(|l| l.trim().strip_prefix(&prefix))
+            .and_then(|rest| rest.trim_end_matches(';').parse().ok())
+            .unwrap_or_else(|| panic!("{name} not found as an f32 literal in traverse.wgsl"));
+        assert_eq!(
+            wgsl.to_bits(),
+            value.to_bits(),
+            "{name}: WGSL {wgsl} vs Rust {value}"
+        );
+    }
+}

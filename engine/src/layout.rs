@@ -22,9 +22,21 @@ use bytemuck::{Pod, Zeroable};
 pub const INVALID: u32 = u32::MAX;
 
 /// Set in a [`GpuBvh8Node::child`] entry when the child is a leaf. The low 31 bits then hold the
-/// leaf payload: a [`GpuTri4`] block index (relative to the mesh's `block_base`) in a BLAS, or an
-/// instance index in the TLAS.
+/// leaf payload: a run of [`GpuTri4`] blocks (relative to the mesh's `block_base`, see
+/// [`LEAF_COUNT_SHIFT`]) in a BLAS, or an instance index in the TLAS.
 pub const LEAF_BIT: u32 = 1 << 31;
+
+/// A BLAS leaf payload is `(blocks - 1) << LEAF_COUNT_SHIFT | first_block`: the leaf's
+/// triangles fill `blocks` (1 to [`MAX_LEAF_BLOCKS`]) consecutive [`GpuTri4`] blocks from
+/// `first_block` (relative to the mesh's `block_base`), every block but the last one full.
+/// A TLAS leaf payload is the instance index (all 31 bits; TLAS leaves hold one instance).
+pub const LEAF_COUNT_SHIFT: u32 = 29;
+
+/// The low bits of a BLAS leaf payload: its first block.
+pub const LEAF_INDEX_MASK: u32 = (1 << LEAF_COUNT_SHIFT) - 1;
+
+/// Most consecutive blocks one BLAS leaf may reference (two bits of the payload).
+pub const MAX_LEAF_BLOCKS: u32 = 4;
 
 /// One node of an 8-wide BVH, shared by every BLAS (one per mesh) and the TLAS.
 ///

@@ -4,8 +4,15 @@
 
 mod common;
 
-use candela::accel::{Aabb, BuildQuality, MAX_DEPTH, build_blas, build_blas_with, build_tlas};
-use candela::layout::{GpuBvh8Node, INVALID, LEAF_BIT};
+use std::ops::Range;
+
+use candela::accel::{
+    Aabb, BlasParams, BuildQuality, MAX_DEPTH, build_blas, build_blas_with, build_blas_with_params,
+    build_tlas,
+};
+use candela::layout::{
+    GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT, LEAF_COUNT_SHIFT, LEAF_INDEX_MASK, MAX_LEAF_BLOCKS,
+};
 use common::*;
 use glam::Vec3;
 
@@ -14,6 +21,25 @@ fn slot_box(node: &GpuBvh8Node, s: usize) -> Aabb {
         Vec3::new(node.min_x[s], node.min_y[s], node.min_z[s]),
         Vec3::new(node.max_x[s], node.max_y[s], node.max_z[s]),
     )
+}
+
+/// The blocks a BLAS leaf payload names.
+fn leaf_range(payload: u32) -> Range<usize> {
+    let first = (payload & LEAF_INDEX_MASK) as usize;
+    first..first + (payload >> LEAF_COUNT_SHIFT) as usize + 1
+}
+
+/// Triangles held by the leaves of a BLAS.
+fn triangle_count(nodes: &[GpuBvh8Node], blocks: &[GpuTri4]) -> usize {
+    let mut count = 0;
+    walk(nodes, |p, _| {
+        count += blocks[leaf_range(p)]
+            .iter()
+            .flat_map(|b| b.prim)
+            .filter(|&q| q != INVALID)
+            .count();
+    });
+    count
 }
 
 fn contains(outer: Aabb, inner: Aabb) -> bool {
@@ -94,32 +120,54 @@ fn blas_holds_every_triangle_once_in_bounded_blocks() {
         soup(&mut rng, 5000, 10.0),
         grid(40, 5.0, true),
     ];
+    let mut variants: Vec<BlasParams> = [BuildQuality::Fastest, BuildQuality::Medium]
+        .map(|quality| BlasParams {
+            quality,
+            ..BlasParams::default()
+        })
+        .to_vec();
+    for (block_cost, max_leaf_blocks) in [(0.25, MAX_LEAF_BLOCKS), (1.0, 1), (0.05, 2), (0.02, 9)] {
+        variants.push(BlasParams {
+            block_cost,
+            max_leaf_blocks,
+            ..BlasParams::default()
+        });
+    }
     for mesh in &meshes {
-        for quality in [BuildQuality::Fastest, BuildQuality::Medium] {
-            let blas = build_blas_with(&mesh.positions, &mesh.triangles, quality);
+        let mut largest_leaf = 0;
+        for params in &variants {
+            let blas = build_blas_with_params(&mesh.positions, &mesh.triangles, *params);
             let mut seen = vec![0u32; mesh.triangles.len()];
             let mut blocks_seen = vec![0u32; blas.blocks.len()];
             let depth = walk(&blas.nodes, |payload, b| {
-                let block = &blas.blocks[payload as usize];
-                blocks_seen[payload as usize] += 1;
-                for lane in 0..4 {
-                    let p = block.prim[lane];
-                    if p == INVALID {
-                        assert_eq!(block.e1_x[lane], 0.0);
-                        assert_eq!(block.e2_y[lane], 0.0);
-                        continue;
+                let range = leaf_range(payload);
+                let count = range.len() as u32;
+                assert!(count <= params.max_leaf_blocks.clamp(1, MAX_LEAF_BLOCKS));
+                largest_leaf = largest_leaf.max(count);
+                for (k, block) in blas.blocks[range.clone()].iter().enumerate() {
+                    blocks_seen[range.start + k] += 1;
+                    let used = block.prim.iter().filter(|&&p| p != INVALID).count();
+                    // Every block of a leaf full but the last, which holds at least one.
+                    assert!(used == 4 || (k + 1 == range.len() && used > 0));
+                    for lane in 0..4 {
+                        let p = block.prim[lane];
+                        if p == INVALID {
+                            assert_eq!(block.e1_x[lane], 0.0);
+                            assert_eq!(block.e2_y[lane], 0.0);
+                            continue;
+                        }
+                        seen[p as usize] += 1;
+                        let t = mesh.triangles[p as usize].map(|i| mesh.positions[i as usize]);
+                        assert!(
+                            contains(b, Aabb::from_points(t)),
+                            "triangle {p} outside its leaf box"
+                        );
                     }
-                    seen[p as usize] += 1;
-                    let t = mesh.triangles[p as usize].map(|i| mesh.positions[i as usize]);
-                    assert!(
-                        contains(b, Aabb::from_points(t)),
-                        "triangle {p} outside its leaf box"
-                    );
                 }
             });
             assert!(
                 seen.iter().all(|&c| c == 1),
-                "{quality:?}: a triangle missing or repeated"
+                "{params:?}: a triangle missing or repeated"
             );
             assert!(
                 blocks_seen.iter().all(|&c| c == 1),
@@ -129,6 +177,8 @@ fn blas_holds_every_triangle_once_in_bounded_blocks() {
             assert!(blas.sah_cost.is_finite() && blas.sah_cost > 0.0);
             assert_eq!(blas.bounds, mesh.bounds());
         }
+        // The cheap-block variants do build multi-block leaves.
+        assert!(largest_leaf >= 2, "no multi-block leaf");
     }
 }
 
@@ -145,15 +195,8 @@ fn deep_input_falls_back_to_a_bounded_tree() {
         );
     }
     let blas = build_blas(&mesh.positions, &mesh.triangles);
-    let mut count = 0;
-    let depth = walk(&blas.nodes, |p, _| {
-        count += blas.blocks[p as usize]
-            .prim
-            .iter()
-            .filter(|&&q| q != INVALID)
-            .count();
-    });
-    assert_eq!(count, 400);
+    let depth = walk(&blas.nodes, |_, _| {});
+    assert_eq!(triangle_count(&blas.nodes, &blas.blocks), 400);
     assert!(depth <= MAX_DEPTH, "depth {depth}");
 }
 
@@ -214,15 +257,11 @@ fn huge_coordinates_build_without_panicking() {
     }
     for quality in BuildQuality::ALL {
         let blas = build_blas_with(&mesh.positions, &mesh.triangles, quality);
-        let mut count = 0;
-        walk(&blas.nodes, |p, _| {
-            count += blas.blocks[p as usize]
-                .prim
-                .iter()
-                .filter(|&&q| q != INVALID)
-                .count();
-        });
-        assert_eq!(count, mesh.triangles.len(), "{quality:?}");
+        assert_eq!(
+            triangle_count(&blas.nodes, &blas.blocks),
+            mesh.triangles.len(),
+            "{quality:?}"
+        );
     }
     let boxes: Vec<Aabb> = (0..100)
         .map(|i| Aabb::new(Vec3::splat(-big + i as f32), Vec3::splat(big)))

@@ -5,7 +5,8 @@
 
 mod common;
 
-use candela::accel::build_blas;
+use candela::accel::{BlasParams, build_blas, build_blas_with_params};
+use candela::layout::{INVALID, LEAF_BIT, LEAF_COUNT_SHIFT};
 use candela::trace::Ray;
 use common::*;
 use glam::{Mat4, Vec3};
@@ -50,6 +51,31 @@ fn procedural_meshes_agree_with_brute_force() {
             hits > RAYS / 5,
             "{name}: only {hits} of {RAYS} rays hit; the test is too easy"
         );
+    }
+}
+
+/// Leaves of one to four blocks (each kernel tests two blocks at a time where it can, so even and
+/// odd block counts take different paths).
+#[test]
+fn every_leaf_size_agrees_with_brute_force() {
+    let mut rng = Rng::new(21);
+    let meshes = [
+        ("sphere", sphere(Vec3::new(0.5, -1.0, 2.0), 1.5, 20, 40)),
+        ("soup", soup(&mut rng, 2000, 4.0)),
+    ];
+    for (name, mesh) in &meshes {
+        for (block_cost, max_leaf_blocks) in [(1.0, 1), (0.1, 2), (0.05, 3), (0.02, 4)] {
+            let params = BlasParams {
+                block_cost,
+                max_leaf_blocks,
+                ..BlasParams::default()
+            };
+            let blas = build_blas_with_params(&mesh.positions, &mesh.triangles, params);
+            let rays = rays(&mut rng, mesh.bounds(), RAYS / 4, false);
+            let hits = check_blas(&blas, mesh, &rays)
+                .unwrap_or_else(|e| panic!("{name}, {params:?}: {e}"));
+            assert!(hits > RAYS / 40, "{name}: only {hits} hits");
+        }
     }
 }
 
@@ -193,6 +219,33 @@ fn agreement_check_detects_a_broken_tree() {
     assert!(check_blas(&blas, &mesh, &rays).is_err());
 }
 
+/// The kernels must test every block a leaf names: cutting each multi-block leaf down to its
+/// first block loses hits.
+#[test]
+fn agreement_check_detects_ignored_leaf_blocks() {
+    let mesh = sphere(Vec3::ZERO, 1.0, 16, 32);
+    let params = BlasParams {
+        block_cost: 0.05,
+        ..BlasParams::default()
+    };
+    let mut blas = build_blas_with_params(&mesh.positions, &mesh.triangles, params);
+    let mut rng = Rng::new(2);
+    let rays = rays(&mut rng, mesh.bounds(), 2000, false);
+    assert!(check_blas(&blas, &mesh, &rays).is_ok());
+    let mut cut = 0;
+    for node in &mut blas.nodes {
+        for child in &mut node.child {
+            if *child != INVALID && *child & LEAF_BIT != 0 && (*child >> LEAF_COUNT_SHIFT) & 3 != 0
+            {
+                *child &= !(3 << LEAF_COUNT_SHIFT);
+                cut += 1;
+            }
+        }
+    }
+    assert!(cut > 10, "only {cut} multi-block leaves");
+    assert!(check_blas(&blas, &mesh, &rays).is_err());
+}
+
 #[test]
 fn instance_transform_keeps_world_t() {
     // A unit quad scaled ×3 in x and moved: the world t of the hit equals the analytic one.
@@ -219,7 +272,8 @@ fn instance_transform_keeps_world_t() {
 }
 
 /// Rays exactly through the shared diagonal of a quad must hit one of its two triangles (the
-/// cracks that `EDGE_SLACK` closes). Tilted quads at a distance, so the rounding is not trivial.
+/// cracks that the slack of `triangle.rs` closes). Tilted quads at a distance, so the rounding
+/// is not trivial. `tests/watertight.rs` does the same on a closed mesh with both tracers.
 #[test]
 fn shared_edges_have_no_cracks() {
     let mut rng = Rng::new(77);

@@ -10,8 +10,9 @@ const STACK_SIZE: u32 = 256u;
 // engine/src/trace/ray.rs: RCP_MIN_ABS, ROBUST_FAR (1 + 2^-21).
 const RCP_MIN_ABS: f32 = 1e-30;
 const ROBUST_FAR: f32 = 1.000000476837158;
-// engine/src/trace/triangle.rs: DEGENERATE_RATIO (2^-18), EDGE_SLACK (2^-20).
+// engine/src/trace/triangle.rs: DEGENERATE_RATIO (2^-18), SLACK_SCALE (2^-21), EDGE_SLACK (2^-20).
 const DEGENERATE_RATIO: f32 = 3.814697265625e-6;
+const SLACK_SCALE: f32 = 4.76837158203125e-7;
 const EDGE_SLACK: f32 = 9.5367431640625e-7;
 
 struct Ray {
@@ -135,7 +136,14 @@ fn intersect_block(block_index: u32, r: TriRay, t_min: f32, t_max: f32) -> BlasH
         let u = w1 * inv_det;
         let v = w2 * inv_det;
         let t = fma(v, e2.z, fma(u, e1.z, a.z)) * r.shear.z;
-        if (abs(det) > bound && u >= -EDGE_SLACK && v >= -EDGE_SLACK && u + v <= 1.0 + EDGE_SLACK && t > t_min && t < best.t) {
+        // The watertight rounding-error slack per edge, in triangle.rs's order.
+        let c = (abs(ax) + abs(ay) + abs(a.z)) * (abs(inv_det) * SLACK_SCALE);
+        let len1 = abs(e1x) + abs(e1y) + abs(e1.z);
+        let len2 = abs(e2x) + abs(e2y) + abs(e2.z);
+        let slack_u = fma(c, len2, EDGE_SLACK);
+        let slack_v = fma(c, len1, EDGE_SLACK);
+        let slack_w = fma(c, len1 + len2, EDGE_SLACK);
+        if (abs(det) > bound && u >= -slack_u && v >= -slack_v && u + v <= 1.0 + slack_w && t > t_min && t < best.t) {
             best = BlasHit(t, u, v, b.prim[lane], true);
         }
     }
@@ -181,11 +189,16 @@ fn trace_ray(ray: Ray, any_hit: bool) -> Hit {
         if ((entry & LEAF_BIT) != 0u) {
             let payload = entry & ~LEAF_BIT;
             if (in_blas) {
-                let b = intersect_block(block_base + payload, tri, ray.t_min, hit.t);
-                if (b.found) {
-                    hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
-                    if (any_hit) {
-                        return hit;
+                // The leaf's consecutive blocks, in order (engine/src/trace/scalar.rs, leaf_blocks).
+                let first = block_base + (payload & LEAF_INDEX_MASK);
+                let count = (payload >> LEAF_COUNT_SHIFT) + 1u;
+                for (var k = 0u; k < count; k++) {
+                    let b = intersect_block(first + k, tri, ray.t_min, hit.t);
+                    if (b.found) {
+                        hit = Hit(b.t, b.u, b.v, instance, b.prim, true);
+                        if (any_hit) {
+                            return hit;
+                        }
                     }
                 }
                 continue;

@@ -4,6 +4,10 @@
 
 const INVALID: u32 = 0xffffffffu;
 const LEAF_BIT: u32 = 0x80000000u;
+// A BLAS leaf payload is (blocks - 1) << LEAF_COUNT_SHIFT | first block (engine/src/layout.rs).
+const LEAF_COUNT_SHIFT: u32 = 29u;
+const LEAF_INDEX_MASK: u32 = 0x1fffffffu;
+const MAX_LEAF_BLOCKS: u32 = 4u;
 
 const INSTANCE_FLAG_IDENTITY: u32 = 1u;
 const INSTANCE_FLAG_EMISSION_OFF: u32 = 2u;

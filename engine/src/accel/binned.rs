@@ -7,8 +7,9 @@
 //! `primitive_indices`). Calling thread; O(n log n). Must not: know the GPU layout.
 //!
 //! Per node: centroid bounds; on each axis `BINS` bins of boxes and counts; a sweep gives the
-//! SAH cost `A(left)·n(left) + A(right)·n(right)` of every bin boundary; the cheapest split over
-//! all axes wins. Where all centroids coincide (or a split would leave one side empty), and for
+//! SAH cost `A(left)·⌈n(left)/b⌉ + A(right)·⌈n(right)/b⌉` of every bin boundary, with `b` the
+//! primitives per leaf block (4 for triangles, as Embree's `sahBlockSize`: counts that fill whole
+//! blocks are cheaper); the cheapest split over all axes wins. Where all centroids coincide (or a split would leave one side empty), and for
 //! ranges of four or fewer primitives, the node is split at the median of its primitives
 //! instead, so depth stays bounded.
 
@@ -33,7 +34,8 @@ struct Range {
 }
 
 /// Builds the tree (see the module docs). `boxes` must be non-empty and finite.
-pub(crate) fn build_binned(boxes: &[ObAabb]) -> Bvh2 {
+pub(crate) fn build_binned(boxes: &[ObAabb], prims_per_block: u32) -> Bvh2 {
+    let prims_per_block = prims_per_block.max(1);
     let n = boxes.len();
     if n == 0 {
         return Bvh2::default();
@@ -64,7 +66,7 @@ pub(crate) fn build_binned(boxes: &[ObAabb]) -> Bvh2 {
         let range = r.start..r.end;
         // Four or fewer primitives usually end up in one leaf anyway: skip the binning.
         let binned = if r.end - r.start > SMALL {
-            best_split(&prims[range.clone()], &r.centroids)
+            best_split(&prims[range.clone()], &r.centroids, prims_per_block)
         } else {
             None
         };
@@ -117,7 +119,11 @@ fn bins_of(center: Vec3A, centroids: &ObAabb, scale: Vec3A) -> [usize; 3] {
 
 /// The cheapest binned SAH split `(axis, first bin of the right side)` over all three axes,
 /// binned in one pass; `None` when no bin boundary separates the centroids.
-fn best_split(prims: &[ObAabb], centroids: &ObAabb) -> Option<(usize, usize)> {
+fn best_split(
+    prims: &[ObAabb],
+    centroids: &ObAabb,
+    prims_per_block: u32,
+) -> Option<(usize, usize)> {
     let extent = centroids.diagonal();
     let scale = Vec3A::from_array(
         extent
@@ -135,6 +141,7 @@ fn best_split(prims: &[ObAabb], centroids: &ObAabb) -> Option<(usize, usize)> {
         }
     }
     let total = prims.len() as u32;
+    let weight = |count: u32| count.div_ceil(prims_per_block) as f32;
     let mut best = (f32::INFINITY, 0usize, 0usize); // cost, axis, boundary
     for axis in 0..3 {
         if extent[axis].partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
@@ -147,7 +154,7 @@ fn best_split(prims: &[ObAabb], centroids: &ObAabb) -> Option<(usize, usize)> {
             acc = acc.union(&bin_box[axis][b]);
             count += bin_count[axis][b];
             right_cost[b] = if count > 0 {
-                acc.half_area() * count as f32
+                acc.half_area() * weight(count)
             } else {
                 0.0
             };
@@ -159,7 +166,7 @@ fn best_split(prims: &[ObAabb], centroids: &ObAabb) -> Option<(usize, usize)> {
             if count == 0 || count == total {
                 continue;
             }
-            let cost = acc.half_area() * count as f32 + right_cost[b];
+            let cost = acc.half_area() * weight(count) + right_cost[b];
             if cost < best.0 {
                 best = (cost, axis, b);
             }
@@ -235,7 +242,7 @@ mod tests {
             ObAabb::new(Vec3A::ZERO, Vec3A::ONE),
             300,
         ));
-        let bvh = build_binned(&boxes);
+        let bvh = build_binned(&boxes, 4);
         let mut seen = vec![0u32; boxes.len()];
         let mut stack = vec![0usize];
         while let Some(i) = stack.pop() {

@@ -69,14 +69,16 @@ impl BuildQuality {
     }
 }
 
-/// The binary tree of the chosen preset over `boxes` (one per primitive, all finite).
+/// The binary tree of the chosen preset over `boxes` (one per primitive, all finite);
+/// `prims_per_block` is the leaf block size the binned SAH rounds counts up to.
 pub(crate) fn build_bvh2(
     boxes: &[ObAabb],
     triangles: Option<&[Triangle]>,
     quality: BuildQuality,
+    prims_per_block: u32,
 ) -> Bvh2 {
     match quality {
-        BuildQuality::BinnedSah => super::binned::build_binned(boxes),
+        BuildQuality::BinnedSah => super::binned::build_binned(boxes, prims_per_block),
         _ => build_ploc(boxes, triangles, quality),
     }
 }

@@ -29,15 +29,25 @@ use super::bounds::Aabb;
 use crate::layout::{GpuBvh8Node, INVALID, LEAF_BIT};
 
 /// Relative costs the collapse minimises (units: one 8-wide node test). Also the constants of the
-/// reported SAH cost: `sah = Σ_nodes A(node)/A(root)·node + Σ_leaves A(leaf)/A(root)·leaf`.
+/// reported SAH cost: `sah = Σ_nodes A(node)/A(root)·node + Σ_leaves A(leaf)/A(root)·leaf·blocks`.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Costs {
     /// Cost of visiting an 8-wide node: load it, eight slab tests, order and push the hits.
     pub node: f32,
-    /// Cost of visiting one leaf: a 4-lane triangle block (BLAS) or an instance (TLAS).
+    /// Cost of one block of a leaf: a 4-lane triangle block (BLAS) or an instance (TLAS).
     pub leaf: f32,
-    /// Most primitive references in one leaf (4 for a `GpuTri4`, 1 for a TLAS instance).
+    /// Most primitive references in one leaf (a few `GpuTri4` blocks, 1 for a TLAS instance).
     pub max_leaf_prims: u32,
+    /// Primitives per block: a leaf of `n` primitives costs `leaf · ceil(n / prims_per_block)`
+    /// (4 for `GpuTri4` blocks, 1 for instances).
+    pub prims_per_block: u32,
+}
+
+impl Costs {
+    /// Cost of a leaf of `count` primitives per unit of surface area.
+    fn leaf_cost(&self, count: u32) -> f32 {
+        self.leaf * count.div_ceil(self.prims_per_block.max(1)) as f32
+    }
 }
 
 /// The 8-wide tree before its leaves are turned into triangle blocks or instance indices.
@@ -101,7 +111,7 @@ fn plan(bvh: &Bvh2, costs: Costs) -> Vec<Decision> {
         let area = half_area_of(bvh, n);
         if node.is_leaf() {
             let leaf = if node.prim_count <= costs.max_leaf_prims {
-                area * costs.leaf
+                area * costs.leaf_cost(node.prim_count)
             } else {
                 f32::INFINITY
             };
@@ -133,7 +143,7 @@ fn plan(bvh: &Bvh2, costs: Costs) -> Vec<Decision> {
             bits |= (best_k as u32) << (3 * (j - 2));
         }
         let as_node = area * costs.node + split[8];
-        let as_leaf = area * costs.leaf;
+        let as_leaf = area * costs.leaf_cost(count);
         let leaf_ok = count <= costs.max_leaf_prims && (as_leaf <= as_node || as_node.is_nan());
         let single = if leaf_ok {
             bits |= Decision::SINGLE_IS_LEAF;
@@ -218,7 +228,7 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
         sah_cost: 0.0,
         depth: 1,
     };
-    let (mut node_area, mut leaf_area) = (0.0f64, 0.0f64);
+    let (mut node_area, mut leaf_area, mut leaf_blocks) = (0.0f64, 0.0f64, 0.0f64);
     let mut slots = Vec::with_capacity(8);
     let mut work = vec![(0usize, 0usize, 1u32)];
     let mut root_box = Aabb::EMPTY;
@@ -242,7 +252,9 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
                     collect_prims(bvh, b as usize, &mut wide.leaf_prims);
                     let count = wide.leaf_prims.len() - start;
                     wide.leaf_ranges.push((start as u32, count as u32));
-                    leaf_area += half_area_of(bvh, b as usize) as f64;
+                    let blocks = (count as u32).div_ceil(costs.prims_per_block.max(1));
+                    leaf_area += half_area_of(bvh, b as usize) as f64 * blocks as f64;
+                    leaf_blocks += blocks as f64;
                     LEAF_BIT | (wide.leaf_ranges.len() as u32 - 1)
                 }
                 Slot::Node(b) => {
@@ -262,14 +274,13 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
             work.push((first_child + c, b, depth + 1));
         }
     }
-    let leaves = wide.leaf_ranges.len() as f64;
     let root_area = f64::from(root_box.surface_area() * 0.5);
     wide.sah_cost = if root_area > 0.0 && root_area.is_finite() {
         (costs.node as f64 * (1.0 + node_area / root_area)
             + costs.leaf as f64 * leaf_area / root_area) as f32
     } else {
         // All geometry on a line or a point: every box is hit with the same probability.
-        (costs.node as f64 * wide.nodes.len() as f64 + costs.leaf as f64 * leaves) as f32
+        (costs.node as f64 * wide.nodes.len() as f64 + costs.leaf as f64 * leaf_blocks) as f32
     };
     wide
 }

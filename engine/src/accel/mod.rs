@@ -59,7 +59,7 @@ mod upkeep_deform;
 mod upkeep_instances;
 mod upkeep_report;
 
-pub use blas::{Blas, build_blas, build_blas_with};
+pub use blas::{Blas, BlasParams, build_blas, build_blas_with, build_blas_with_params};
 pub use bounds::Aabb;
 pub use bvh2::BuildQuality;
 pub use refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};

@@ -9,10 +9,11 @@
 
 use glam::Vec3;
 
-use super::blas::{BLAS_LEAF_COST, BLAS_NODE_COST, Blas, tri_lane};
+use super::blas::{Blas, BlasParams, tri_lane};
 use super::bounds::Aabb;
 use super::collapse::octant_orders;
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
+use crate::trace::leaf_blocks;
 
 /// Bounds of the valid lanes of a block.
 fn block_bounds(block: &GpuTri4) -> Aabb {
@@ -106,10 +107,9 @@ pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -
                 continue;
             }
             let b = if child & LEAF_BIT != 0 {
-                blas.blocks
-                    .get((child & !LEAF_BIT) as usize)
-                    .map(block_bounds)
-                    .unwrap_or(Aabb::EMPTY)
+                leaf_blocks(&blas.blocks, child & !LEAF_BIT)
+                    .iter()
+                    .fold(Aabb::EMPTY, |acc, b| acc.union(block_bounds(b)))
             } else {
                 subtree.get(child as usize).copied().unwrap_or(Aabb::EMPTY)
             };
@@ -124,24 +124,32 @@ pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -
     blas.sah_cost
 }
 
-/// SAH cost of a tree: Σ over nodes of A(node)/A(root)·`BLAS_NODE_COST` + Σ over blocks of
-/// A(block)/A(root)·`BLAS_LEAF_COST`, A = surface area of the node's or block's box. Falls back
-/// to the plain count when the root has no area.
+/// SAH cost of a tree with the default [`BlasParams`] costs, the same sum the build reports in
+/// [`Blas::sah_cost`]: Σ over nodes of A(node)/A(root)·`node_cost` + Σ over leaves of
+/// A(leaf)/A(root)·blocks(leaf)·`block_cost`, A = surface area of the node's or leaf's box.
+/// Falls back to the plain count `nodes·node_cost + blocks·block_cost` when the root has no area.
 pub fn sah_cost(nodes: &[GpuBvh8Node], blocks: &[GpuTri4]) -> f32 {
+    let BlasParams {
+        node_cost,
+        block_cost,
+        ..
+    } = BlasParams::default();
     let Some(root) = nodes.first() else {
         return 0.0;
     };
     let root_area = node_bounds(root).surface_area();
     if !(root_area > 0.0 && root_area.is_finite()) {
-        return nodes.len() as f32 * BLAS_NODE_COST + blocks.len() as f32 * BLAS_LEAF_COST;
+        return nodes.len() as f32 * node_cost + blocks.len() as f32 * block_cost;
     }
     let mut cost = 0.0f64;
     for node in nodes {
-        cost += (node_bounds(node).surface_area() / root_area) as f64 * BLAS_NODE_COST as f64;
+        cost += (node_bounds(node).surface_area() / root_area) as f64 * node_cost as f64;
         for slot in 0..8 {
-            if node.child[slot] != INVALID && node.child[slot] & LEAF_BIT != 0 {
+            let child = node.child[slot];
+            if child != INVALID && child & LEAF_BIT != 0 {
+                let count = leaf_blocks(blocks, child & !LEAF_BIT).len();
                 cost += (slot_bounds(node, slot).surface_area() / root_area) as f64
-                    * BLAS_LEAF_COST as f64;
+                    * (block_cost as f64 * count as f64);
             }
         }
     }

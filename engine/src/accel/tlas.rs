@@ -19,6 +19,7 @@ const TLAS_COSTS: Costs = Costs {
     node: 1.0,
     leaf: 2.0,
     max_leaf_prims: 1,
+    prims_per_block: 1,
 };
 
 /// The binary preset of the per-frame TLAS build (fast build; the tree is small).

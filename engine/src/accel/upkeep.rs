@@ -29,6 +29,7 @@ use crate::render::lights::{LightTable, build_lights};
 use crate::render::materials::{pack_textures, to_gpu_material};
 use crate::render::scene::{RenderScene, SceneStats, mesh_vertices};
 use crate::render::scene_writes::{SceneHeader, SceneWrite};
+use crate::trace::TraceBuffer;
 
 /// Rebuild a deforming mesh's BLAS when its SAH cost after refitting exceeds this multiple of
 /// the estimated cost of a fresh build (`refit::rebuild_bound`). Chosen by measurement: see
@@ -113,8 +114,8 @@ impl Upkeep {
     /// An empty scene.
     pub fn new() -> Self {
         let scene = RenderScene {
-            nodes: vec![GpuBvh8Node::EMPTY],
-            blocks: Vec::new(),
+            nodes: TraceBuffer::from_slice(&[GpuBvh8Node::EMPTY]),
+            blocks: TraceBuffer::default(),
             instances: Vec::new(),
             triangles: Vec::new(),
             vertices: Vec::new(),

@@ -15,6 +15,7 @@ use crate::assets::{Model, SceneDesc};
 use crate::layout::{
     GpuBvh8Node, GpuInstance, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
 };
+use crate::trace::TraceBuffer;
 
 /// Counts of what was built, for logs and tools.
 #[derive(Clone, Copy, Debug, Default)]
@@ -33,9 +34,10 @@ pub struct SceneStats {
 /// The flattened scene. Vectors are in `layout` form, ready to upload or trace.
 #[derive(Clone, Debug)]
 pub struct RenderScene {
-    /// Every BLAS, then the TLAS from `tlas_root`.
-    pub nodes: Vec<GpuBvh8Node>,
-    pub blocks: Vec<GpuTri4>,
+    /// Every BLAS, then the TLAS from `tlas_root`. Huge-page buffers ([`TraceBuffer`]): the CPU
+    /// tracer walks them for every ray.
+    pub nodes: TraceBuffer<GpuBvh8Node>,
+    pub blocks: TraceBuffer<GpuTri4>,
     pub instances: Vec<GpuInstance>,
     pub triangles: Vec<GpuTriangle>,
     pub vertices: Vec<GpuVertex>,
@@ -117,8 +119,8 @@ impl RenderScene {
     /// A scene with nothing in it (the render thread's copy before the first commit).
     pub fn empty() -> RenderScene {
         RenderScene {
-            nodes: Vec::new(),
-            blocks: Vec::new(),
+            nodes: TraceBuffer::default(),
+            blocks: TraceBuffer::default(),
             instances: Vec::new(),
             triangles: Vec::new(),
             vertices: Vec::new(),

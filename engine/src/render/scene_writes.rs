@@ -126,8 +126,10 @@ impl RenderScene {
     pub fn apply(&mut self, writes: &[SceneWrite], header: &SceneHeader) {
         for w in writes {
             match w {
-                SceneWrite::Nodes { first, data } => write_range(&mut self.nodes, *first, data),
-                SceneWrite::Blocks { first, data } => write_range(&mut self.blocks, *first, data),
+                SceneWrite::Nodes { first, data } => self.nodes.write_range(*first as usize, data),
+                SceneWrite::Blocks { first, data } => {
+                    self.blocks.write_range(*first as usize, data)
+                }
                 SceneWrite::Instances { first, data } => {
                     write_range(&mut self.instances, *first, data)
                 }

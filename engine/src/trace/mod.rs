@@ -7,8 +7,9 @@
 //!
 //! Files: [`ray`] (ray, hit, safe reciprocal, instance transform), `triangle` (the one
 //! triangle test), `scalar` (reference traversal, the algorithm the WGSL twin follows), `scene`
-//! (two-level queries and kernel choice), `simd` + `simd_block` + `x86` (AVX2 / AVX-512
-//! kernels, x86-64 only), [`brute`] (brute-force reference for tests).
+//! (two-level queries and kernel choice), `simd` + `simd_block` + `simd_lanes` + `x86` (AVX2 /
+//! AVX-512 kernels, x86-64 only), `buffer` ([`TraceBuffer`], the huge-page storage of nodes and
+//! blocks), [`brute`] (brute-force reference for tests).
 //!
 //! # Speed (peer benchmark, `shared/peers`, this machine: 2 vCPU Intel Xeon with AVX-512)
 //!
@@ -25,6 +26,7 @@
 //! Hit counts equal Embree's on bunny and dragon and on cornell primary rays.
 
 pub mod brute;
+mod buffer;
 pub mod ray;
 mod scalar;
 mod scene;
@@ -32,11 +34,15 @@ mod scene;
 mod simd;
 #[cfg(target_arch = "x86_64")]
 mod simd_block;
+#[cfg(target_arch = "x86_64")]
+mod simd_lanes;
 pub mod triangle;
 #[cfg(target_arch = "x86_64")]
 mod x86;
 
+pub use buffer::{HUGE_MIN_BYTES, TraceBuffer};
 pub use ray::{Hit, Ray};
+pub(crate) use scalar::leaf_blocks;
 pub use scene::{TraceScene, closest_blas, closest_blas_with, occluded_blas, occluded_blas_with};
 
 /// Entries of every traversal stack (node index + entry distance): enough for

@@ -14,12 +14,13 @@
 //! 3. visit slots in the order `perm[rank] >> 3o & 7` for rank 7 down to 0 and push the hit
 //!    children with their `t_near`, so the front-most child is on top of the stack;
 //! 4. pop; skip entries whose `t_near` lies beyond the current closest hit; a leaf entry
-//!    (`LEAF_BIT`) is a triangle block (BLAS) or an instance (TLAS).
+//!    (`LEAF_BIT`) is a run of 1 to 4 consecutive triangle blocks (BLAS, tested in order, see
+//!    [`crate::layout::LEAF_COUNT_SHIFT`]) or an instance (TLAS).
 
 use super::STACK_SIZE;
 use super::ray::{Ray, SlabRay};
 use super::triangle::{TriRay, intersect_lane};
-use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
+use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT, LEAF_COUNT_SHIFT, LEAF_INDEX_MASK};
 
 /// Runs `f` inside a function compiled with FMA when this x86-64 CPU has it, so that the
 /// `f32::mul_add` calls of the reference code become single instructions instead of libm calls.
@@ -121,7 +122,15 @@ fn pick(min: f32, max: f32, negative: bool) -> (f32, f32) {
     if negative { (max, min) } else { (min, max) }
 }
 
-/// Leaf visitor: closest hit in a triangle block.
+/// The blocks of a BLAS leaf payload (see [`LEAF_COUNT_SHIFT`]); empty when out of range.
+#[inline(always)]
+pub(crate) fn leaf_blocks(blocks: &[GpuTri4], payload: u32) -> &[GpuTri4] {
+    let first = (payload & LEAF_INDEX_MASK) as usize;
+    let count = (payload >> LEAF_COUNT_SHIFT & 3) as usize + 1;
+    blocks.get(first..first + count).unwrap_or(&[])
+}
+
+/// Leaf visitor: closest hit in a leaf's triangle blocks.
 struct ClosestBlock<'a> {
     blocks: &'a [GpuTri4],
     ray: TriRay,
@@ -132,7 +141,7 @@ struct ClosestBlock<'a> {
 impl Leaf for ClosestBlock<'_> {
     #[inline(always)]
     fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
-        if let Some(block) = self.blocks.get(payload as usize) {
+        for block in leaf_blocks(self.blocks, payload) {
             for lane in 0..4 {
                 if let Some((t, u, v)) = intersect_lane(block, lane, &self.ray, self.t_min, *t_max)
                 {
@@ -155,7 +164,7 @@ struct AnyBlock<'a> {
 impl Leaf for AnyBlock<'_> {
     #[inline(always)]
     fn visit(&mut self, payload: u32, t_max: &mut f32) -> bool {
-        self.blocks.get(payload as usize).is_some_and(|block| {
+        leaf_blocks(self.blocks, payload).iter().any(|block| {
             (0..4).any(|lane| intersect_lane(block, lane, &self.ray, self.t_min, *t_max).is_some())
         })
     }

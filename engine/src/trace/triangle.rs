@@ -6,8 +6,23 @@
 //! Per ray: axes permuted so `k[2]` is the dominant direction axis, shear `S`. Per triangle:
 //! `a = v0 - o`, sheared 2D `a'`, `e1'`, `e2'`; `det = e2'.x·e1'.y - e2'.y·e1'.x` (twice the
 //! projected area, from the edges alone), `u = (a'.x·e2'.y - a'.y·e2'.x) / det`,
-//! `v = (e1'.x·a'.y - e1'.y·a'.x) / det`, hit when `u, v >= 0`, `u + v <= 1`, and
-//! `t = (a_z + u·e1_z + v·e2_z) / d_z` lies in `(t_min, t_max)`.
+//! `v = (e1'.x·a'.y - e1'.y·a'.x) / det`, hit when `u, v >= -slack`, `u + v <= 1 + slack`,
+//! and `t = (a_z + u·e1_z + v·e2_z) / d_z` lies in `(t_min, t_max)`.
+//!
+//! Watertight by a slack per edge that bounds the rounding error: the stored form (`v0` and
+//! rounded edges) cannot make two triangles that share an edge evaluate it identically, and
+//! `a = v0 - o` loses about `u·|v0 - o|` (u = 2⁻²⁴), so with a fixed slack a ray through a shared
+//! edge from far away could slip between both triangles (35 of 5,451 such rays 20 m from a
+//! 0.1 m-edged icosphere, `tests/watertight.rs`). With `m = |a'.x| + |a'.y| + |a_z|` and
+//! `E_i = |e_i'.x| + |e_i'.y| + |e_i.z|`, the edge function of the edge along `e_i` errs by
+//! about `7u·m·E_i` (sheared offset `2u·m` per component, sheared edge `2u·E_i`, the products),
+//! that is by about `7u·m` in distance across the edge; so `u >= -slack_u` with `slack_u =
+//! SLACK_SCALE·m·E_2/|det| + EDGE_SLACK` (`v` likewise with `E_1`, `1 - u - v` with `E_1 + E_2`)
+//! lets every ray through the exact triangle pass (edges and vertices included), whatever its
+//! neighbour computes. A hit then lies at most about `11u·m` (plus `EDGE_SLACK` of the
+//! triangle) outside the triangle, within the rounding of the ray's own position at that
+//! distance. Costs about 22 more vector operations per block test (abs, add, mul, fused
+//! multiply-add; no branch).
 //!
 //! Why this and not the textbook forms (both found by the brute-force agreement tests):
 //! Möller–Trumbore reported a hit a hundred units away from a sliver triangle (two edges equal
@@ -18,8 +33,8 @@
 //! far above its own rounding error (triangles seen within about 4e-6 rad of edge-on are skipped),
 //! so `u`, `v` are accurate; and `t` is the depth of the point `v0 + u·e1 + v·e2` of the triangle
 //! itself. A hit therefore always lies on the triangle, within rounding of the ray.
-//! Cost: 27 arithmetic ops (12 of them fused multiply-adds) and one division per triangle, fewer
-//! than Möller–Trumbore. Fused multiply-adds are exact-rounded everywhere (`f32::mul_add`,
+//! Cost: 27 arithmetic ops (12 of them fused multiply-adds) and one division per triangle, plus
+//! the slack. Fused multiply-adds are exact-rounded everywhere (`f32::mul_add`,
 //! `vfmadd`), so the scalar and SIMD kernels still agree bit for bit; on x86-64 the scalar
 //! callers run this inside `#[target_feature(enable = "fma")]` functions when the CPU has FMA
 //! (identical results, no libm call).
@@ -68,11 +83,12 @@ impl TriRay {
 /// `|det|` must exceed this times `|e2'.y·e1'.x|` (see the module docs).
 pub const DEGENERATE_RATIO: f32 = 1.0 / 262_144.0;
 
-/// Barycentric slack of the inside test: `u, v >= -EDGE_SLACK`, `u + v <= 1 + EDGE_SLACK`.
-/// The stored form (`v0` and rounded edges) cannot make two triangles that share an edge
-/// evaluate it identically, so without slack rays exactly through a shared edge can slip
-/// between both (32 of the 230,400 primary rays of the peer benchmark's cornell box, where
-/// Embree and an f64 reference hit all). 2⁻²⁰ of a triangle closes those cracks.
+/// Slack of the inside test per unit of `m · E / |det|` (see [`slacks`]): 8 u, u = 2⁻²⁴.
+pub const SLACK_SCALE: f32 = 1.0 / 2_097_152.0;
+
+/// Least slack of the inside test, barycentric units (2⁻²⁰): covers the rounding of the stored
+/// edges when the ray starts at the triangle (32 of the 230,400 primary rays of the peer
+/// benchmark's cornell box slipped through shared edges without it).
 pub const EDGE_SLACK: f32 = 1.0 / 1_048_576.0;
 
 /// Intersection of the ray with the triangle `(v0, e1, e2)` (components in the ray's `k` order):
@@ -108,10 +124,17 @@ pub fn intersect_permuted(
     let u = w1 * inv_det;
     let v = w2 * inv_det;
     let t = v.mul_add(e2[2], u.mul_add(e1[2], a2)) * sz;
+    // The rounding-error slack of each edge (see the module docs), in this order everywhere.
+    let c = (ax.abs() + ay.abs() + a2.abs()) * (inv_det.abs() * SLACK_SCALE);
+    let len1 = e1x.abs() + e1y.abs() + e1[2].abs();
+    let len2 = e2x.abs() + e2y.abs() + e2[2].abs();
+    let slack_u = c.mul_add(len2, EDGE_SLACK);
+    let slack_v = c.mul_add(len1, EDGE_SLACK);
+    let slack_w = c.mul_add(len1 + len2, EDGE_SLACK);
     let hit = det.abs() > bound
-        && u >= -EDGE_SLACK
-        && v >= -EDGE_SLACK
-        && u + v <= 1.0 + EDGE_SLACK
+        && u >= -slack_u
+        && v >= -slack_v
+        && u + v <= 1.0 + slack_w
         && t > t_min
         && t < t_max;
     hit.then_some((t, u, v))

@@ -21,7 +21,7 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use candela::accel::{BuildQuality, build_blas_with};
 use candela::layout::{GpuBvh8Node, GpuTri4};
-use candela::trace::{Kernel, Ray, closest_blas_with, occluded_blas_with};
+use candela::trace::{Kernel, Ray, TraceBuffer, closest_blas_with, occluded_blas_with};
 use clap::{Parser, ValueEnum};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -61,6 +61,10 @@ struct Args {
     /// peer table always uses wall time.
     #[arg(long)]
     cpu_time: bool,
+    /// Trace from the build's plain vectors instead of the huge-page buffers the renderer
+    /// uses ([`TraceBuffer`]): a development aid to measure what huge pages give.
+    #[arg(long)]
+    plain_memory: bool,
 }
 
 /// Seconds on the CPU summed over this process's threads (Linux schedstat, ns resolution).
@@ -225,10 +229,30 @@ fn main() -> Result<()> {
         args.reps
     );
 
+    // The renderer's storage (`RenderScene`): huge-page buffers; copied outside the build time.
+    let (nodes, blocks) = (
+        TraceBuffer::from_slice(&blas.nodes),
+        TraceBuffer::from_slice(&blas.blocks),
+    );
+    let (nodes, blocks): (&[GpuBvh8Node], &[GpuTri4]) = if args.plain_memory {
+        (&blas.nodes, &blas.blocks)
+    } else {
+        (&nodes, &blocks)
+    };
+    eprintln!(
+        "# candela memory: {} (nodes {} KiB, blocks {} KiB)",
+        if args.plain_memory {
+            "plain"
+        } else {
+            "huge-page buffers"
+        },
+        size_of_val(nodes) / 1024,
+        size_of_val(blocks) / 1024
+    );
     let out = std::io::stdout();
     let clock = Clock(args.cpu_time);
     for (kind, rays, occlusion) in &sets {
-        let run = || trace(&pool, kernel, &blas.nodes, &blas.blocks, rays, *occlusion);
+        let run = || trace(&pool, kernel, nodes, blocks, rays, *occlusion);
         let check = run();
         let t0 = clock.now();
         run();
