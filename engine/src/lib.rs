@@ -14,6 +14,8 @@ pub mod assets;
 
 pub mod ecs;
 
+pub mod physics;
+
 pub mod extract;
 
 pub mod accel;
