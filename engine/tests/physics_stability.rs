@@ -135,3 +135,34 @@ fn fast_sphere_never_passes_a_thin_wall() {
         worst * 1000.0
     );
 }
+
+/// Render interpolation: between two steps, a falling body's `Transform` shows the pose
+/// `alpha` of the way from the previous step's to the current step's; `PhysicsPose` keeps both.
+#[test]
+fn interpolation_shows_the_pose_between_the_last_two_steps() {
+    let mut sim = Sim::new();
+    let ball = sim.dynamic(
+        Vec3::new(0.0, 10.0, 0.0),
+        ColliderShape::Sphere { radius: 0.5 },
+        1.0,
+    );
+    sim.steps(10);
+    let pose = *sim
+        .world
+        .get::<&candela::physics::PhysicsPose>(ball)
+        .expect("spawned bodies get a PhysicsPose");
+    let (previous, current) = (pose.previous.0, pose.current.0);
+    assert!(current.y < previous.y, "the ball falls");
+    assert_eq!(sim.position(ball), current, "after a step the Transform is the step's pose");
+    assert_eq!(sim.physics.interpolate(&mut sim.world, 0.25), 1);
+    let shown = sim.position(ball);
+    let expected = previous.lerp(current, 0.25);
+    assert!((shown - expected).length() < 1e-6, "{shown} vs {expected}");
+    // The next step starts from the simulated pose, not the shown one.
+    sim.step();
+    let after = *sim
+        .world
+        .get::<&candela::physics::PhysicsPose>(ball)
+        .expect("pose");
+    assert_eq!(after.previous.0, current);
+}

@@ -6,7 +6,9 @@
 //! `Parent`): its `Transform` translation and rotation are the body's world pose in metres;
 //! its scale is left alone (collider sizes already include it).
 //! Who writes what: dynamic bodies and characters are simulated, so physics writes their
-//! `Transform` (output only; teleport through `PhysicsWorld::set_pose`). Kinematic bodies
+//! `Transform` (output only; teleport through `PhysicsWorld::set_pose`); between frames that
+//! `Transform` shows the render-interpolated pose, so game rules read the simulated one from
+//! [`PhysicsPose::current`] or `PhysicsWorld::pose`. Kinematic bodies
 //! without a character controller follow their `Transform` (input only). Only bodies that moved
 //! in a step write their `Transform`: sleeping bodies cost no writes. Main thread, inside the
 //! fixed step. Must not: convert glam types itself (see `convert`) or run the pipeline.
