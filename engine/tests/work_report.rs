@@ -9,8 +9,9 @@
 //! * a moving rigid body costs a TLAS build per frame and no BLAS work;
 //! * a deforming mesh costs a BLAS refit (or rebuild) per frame.
 //!
-//! Not yet checkable: "sleeping bodies produce no commits" needs physics, which comes later;
-//! `FrameWork::awake_bodies` is the field it will fill (0 until then, asserted below).
+//! * sleeping physics bodies produce no commits: a crate dropped on a floor writes its instance
+//!   row and rebuilds the TLAS every frame while it falls and settles, and once it sleeps the
+//!   frames report no awake body, no instance row, no TLAS build and zero geometry bytes.
 //! Also: a level's declared `needs` refuses content that uses an undeclared feature.
 
 use std::path::Path;
@@ -119,7 +120,7 @@ fn run(
             let report = engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
             let rendered = engine.wait_rendered().expect("a result").expect("renders");
             assert_eq!(rendered.lights, report.work.lights, "frame {frame}");
-            assert_eq!(report.work.awake_bodies, 0, "no physics yet");
+            assert_eq!(report.work.awake_bodies, 0, "no bodies in these scenes");
             assert_eq!(report.work.max_bounces, 2);
             report.work
         })
@@ -344,4 +345,74 @@ fn declared_needs_refuse_undeclared_features() -> Result<(), Box<dyn std::error:
         other => panic!("expected a level error, got {other:?}"),
     }
     Ok(())
+}
+
+#[test]
+fn sleeping_bodies_produce_no_commits() {
+    use candela::sim::physics::{Collider, ColliderShape, RigidBody};
+    let mut engine = engine();
+    let floor = engine.upkeep.add_model(&grid_model(4, 10.0, 0.0));
+    let lamp = engine.upkeep.add_model(&grid_model(1, 1.0, 5.0));
+    let crate_model = engine.upkeep.add_model(&grid_model(1, 0.5, 0.0));
+    let ground = Collider::new(&ColliderShape::Box {
+        half_extents: Vec3::new(5.0, 0.5, 5.0),
+    })
+    .expect("floor collider");
+    engine
+        .world
+        .spawn((Transform::IDENTITY, renderable(floor), Static));
+    // The floor's collider: a box whose top face is the grid's surface (y = 0).
+    engine.world.spawn((
+        Transform::from_translation(Vec3::new(0.0, -0.5, 0.0)),
+        RigidBody::fixed(),
+        ground,
+    ));
+    engine.world.spawn((
+        Transform::from_translation(Vec3::Y * 3.0),
+        renderable(lamp),
+        Static,
+    ));
+    let crate_collider = Collider::new(&ColliderShape::Box {
+        half_extents: Vec3::splat(0.25),
+    })
+    .expect("crate collider");
+    engine.world.spawn((
+        Transform::from_translation(Vec3::new(0.0, 1.5, 0.0)),
+        renderable(crate_model),
+        RigidBody::dynamic(),
+        crate_collider,
+    ));
+    let work: Vec<FrameWork> = (0..360)
+        .map(|_| {
+            let report = engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
+            let _ = engine.wait_rendered().expect("a result").expect("renders");
+            report.work
+        })
+        .collect();
+    // Falling: the crate is awake and its row is written every frame.
+    for (frame, w) in work.iter().enumerate().take(20).skip(1) {
+        assert_eq!(w.awake_bodies, 1, "frame {frame}");
+        assert!(
+            w.instances_written >= 1 && w.tlas_builds == 1,
+            "frame {frame}: {w:?}"
+        );
+    }
+    // Asleep by the end of 6 s; from the first sleeping frame on, nothing is committed.
+    let asleep = work
+        .iter()
+        .position(|w| w.awake_bodies == 0)
+        .expect("the crate falls asleep within 6 s");
+    let after = &work[asleep + 1..];
+    assert!(after.len() > 60, "asleep only at frame {asleep}");
+    for (i, w) in after.iter().enumerate() {
+        let frame = asleep + 1 + i;
+        assert_eq!(w.awake_bodies, 0, "frame {frame}");
+        assert_eq!(
+            w.instances_written, 0,
+            "frame {frame}: a sleeping body wrote its row"
+        );
+        assert_eq!(w.tlas_builds, 0, "frame {frame}");
+        assert_eq!(w.geometry_bytes, 0, "frame {frame}");
+    }
+    let _ = engine.shutdown();
 }

@@ -1,9 +1,10 @@
 //! [`Engine`]: one frame of the Brigade pipeline, headless. The window runner drives the same
 //! frames.
 //!
-//! Owns: the world (hecs), the game side's [`Upkeep`] (and so the ray-query scene), the
+//! Owns: the world (hecs), its [`PhysicsWorld`], the game side's [`Upkeep`] (and so the ray-query scene), the
 //! [`Extractor`], the fixed-step clock and the [`RenderThread`]. A frame: run the game's fixed
-//! steps (with queries on the previous frame's BVH) → propagate transforms → extract → upkeep →
+//! steps (with queries on the previous frame's BVH), each followed by a physics step →
+//! physics interpolation → propagate transforms → extract → upkeep →
 //! seal the commit → hand it off. The game rules of frame N+1 then run while the render thread
 //! renders frame N. Main thread.
 //! Must not: render (the render thread does) or block on anything but the hand-off.
@@ -22,6 +23,7 @@ use crate::extract::Extractor;
 use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
+use crate::sim::physics::PhysicsWorld;
 
 /// Everything about the scene that is not an entity: sun, sky, render settings, and the view to
 /// use when no entity carries a camera.
@@ -64,6 +66,9 @@ pub struct Engine {
     pub upkeep: Upkeep,
     pub environment: Environment,
     pub clock: FixedClock,
+    /// Rigid bodies, characters, carrying, sensors: stepped after the game rules of every
+    /// fixed step (an empty world costs next to nothing).
+    pub physics: PhysicsWorld,
     extractor: Extractor,
     render: RenderThread,
     frame: u64,
@@ -99,6 +104,7 @@ impl Engine {
             camera: environment.default_camera,
             environment,
             clock: FixedClock::default(),
+            physics: PhysicsWorld::new(),
             extractor: Extractor::new(),
             render,
             frame: 0,
@@ -137,7 +143,8 @@ impl Engine {
     }
 
     /// Runs one frame: `frame_seconds` of simulated time in fixed steps of game rules
-    /// (`game(world, queries, step_seconds)`), then extraction, upkeep and the hand-off.
+    /// (`game(world, queries, step_seconds)`) each followed by a physics step, then physics
+    /// interpolation, extraction, upkeep and the hand-off.
     pub fn frame(
         &mut self,
         frame_seconds: f64,
@@ -151,7 +158,11 @@ impl Engine {
                 self.upkeep.queries(),
                 self.clock.step_seconds,
             );
+            self.physics.step(&mut self.world, self.clock.step_seconds);
         }
+        // Render between the last two physics steps (the clock's leftover fraction).
+        self.physics
+            .interpolate(&mut self.world, self.clock.alpha());
         propagate_transforms(&mut self.world);
         let update_seconds = started.elapsed().as_secs_f64();
 
@@ -166,7 +177,8 @@ impl Engine {
         self.upkeep
             .follow_camera(glam::Vec3::from(self.camera.position));
         let (writes, header, upkeep) = self.upkeep.finish_frame();
-        let work = FrameWork::of(&self.world, &self.upkeep, &upkeep, &self.environment.render);
+        let mut work = FrameWork::of(&self.world, &self.upkeep, &upkeep, &self.environment.render);
+        work.awake_bodies = self.physics.awake_bodies() as u32;
         let upkeep_seconds = started.elapsed().as_secs_f64();
 
         let commit = Commit {

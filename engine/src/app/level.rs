@@ -1,5 +1,6 @@
 //! Putting a loaded level into the engine: models registered with the upkeep, one entity per
-//! level instance (static unless the level marks it dynamic), level materials, the environment.
+//! level instance (static unless the level marks it dynamic or gives it a moving body), its
+//! physics components when the level gives it a body, level materials, the environment.
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -12,6 +13,7 @@ use super::engine::{Engine, Environment};
 use super::waves::Waves;
 use crate::assets::SceneDesc;
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
+use crate::sim::physics::SensorContacts;
 
 /// What [`Engine::spawn_level`] created.
 #[derive(Clone, Debug, Default)]
@@ -79,6 +81,14 @@ impl Engine {
                     dirty: false,
                 };
                 let _ = self.world.insert(entity, (waves, deformable));
+            }
+            if let Some(physics) = &instance.body {
+                let _ = self
+                    .world
+                    .insert(entity, (physics.body, physics.collider.clone()));
+                if physics.collider.sensor {
+                    let _ = self.world.insert_one(entity, SensorContacts::default());
+                }
             }
             if let Some(name) = &instance.name {
                 spawned.by_name.insert(name.clone(), entity);

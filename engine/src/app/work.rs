@@ -147,7 +147,7 @@ impl std::fmt::Display for WorkTotals {
         )?;
         write!(
             f,
-            "  lights sampled {}..={}, max bounces {}, awake physics bodies {} (no physics yet)",
+            "  lights sampled {}..={}, max bounces {}, awake physics bodies (most) {}",
             self.lights_min, self.lights_max, self.max_bounces, self.awake_bodies_max
         )
     }

@@ -97,6 +97,10 @@ pub struct InstanceEntry {
     /// Animate the model's first mesh with travelling waves (deforming every frame).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub waves: Option<WaveDesc>,
+    /// Physics: a static collider, a dynamic or kinematic body, or a sensor (see
+    /// `level_body`); none by default.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub body: Option<super::level_body::BodyEntry>,
 }
 
 /// A flat grid made by the engine (water surfaces, test floors): `size` metres in x and z,

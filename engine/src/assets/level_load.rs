@@ -116,6 +116,7 @@ pub fn scene_from_level(
             dynamic: instance.dynamic || instance.waves.is_some(),
             light_group: instance.light_group,
             waves: instance.waves,
+            body: None,
         });
     }
     let camera = &level.camera;
@@ -145,6 +146,23 @@ pub fn scene_from_level(
         }
     }
     models.extend(grids);
+    for (i, (entry, scene_instance)) in level.instances.iter().zip(&mut instances).enumerate() {
+        let Some(body) = &entry.body else {
+            continue;
+        };
+        let Some(model) = models.get(scene_instance.model) else {
+            continue;
+        };
+        let resolved =
+            super::level_body::resolve_body(body, model, scene_instance.world_from_model).map_err(
+                |message| {
+                    let name = entry.name.as_deref().unwrap_or(&entry.model);
+                    level_error(format!("instance {i} ({name:?}): body: {message}"))
+                },
+            )?;
+        scene_instance.dynamic |= resolved.moves();
+        scene_instance.body = Some(resolved);
+    }
     let desc = SceneDesc {
         source: level_path.to_path_buf(),
         models,

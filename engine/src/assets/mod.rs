@@ -42,6 +42,8 @@ pub use level::{
 mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
 
+mod level_body;
+pub use level_body::{BodyEntry, InstanceBody, ShapeEntry, resolve_body};
 mod level_load;
 mod level_shapes;
 mod needs;

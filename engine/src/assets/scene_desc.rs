@@ -41,6 +41,8 @@ pub struct SceneInstance {
     pub dynamic: bool,
     pub light_group: Option<u32>,
     pub waves: Option<super::level::WaveDesc>,
+    /// Physics components for the instance's entity, checked at load time.
+    pub body: Option<super::level_body::InstanceBody>,
 }
 
 impl SceneInstance {
@@ -54,6 +56,7 @@ impl SceneInstance {
             dynamic: false,
             light_group: None,
             waves: None,
+            body: None,
         }
     }
 }

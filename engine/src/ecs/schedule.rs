@@ -2,7 +2,8 @@
 //! systems in the `game rules` slot; everything else is the engine's.
 //!
 //! ```text
-//! main thread   input → game rules (fixed 60 Hz steps) → physics → animation → triggers
+//! main thread   input → (game rules → physics) per fixed 60 Hz step → physics interpolation
+//!               → animation → triggers
 //!               → propagate_transforms → extract (typed scene changes)
 //!               → upkeep (instances, refit/rebuild, TLAS, lights) → seal commit N → hand-off
 //! render thread … render N−1 │ apply commit N │ render N │ …
@@ -14,6 +15,8 @@
 pub const SYSTEM_ORDER: &[&str] = &[
     "input",
     "game rules (fixed steps)",
+    "physics (after each fixed step)",
+    "physics interpolation",
     "propagate_transforms",
     "extract",
     "upkeep",

@@ -1,6 +1,8 @@
 //! Simulation on the main thread, run by the fixed-step clock: [`animation`] (rigid keyframe
-//! clips, skeletal skinning, morph targets, blending). Physics and triggers join here.
+//! clips, skeletal skinning, morph targets, blending) and [`physics`] (rapier3d: bodies,
+//! colliders, the character controller, carrying, sensors). Triggers join here.
 //!
 //! Must not: talk to the render thread (what moved reaches it through the extract and commit).
 
 pub mod animation;
+pub mod physics;

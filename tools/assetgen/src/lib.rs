@@ -65,6 +65,7 @@ fn placed(model: &str, translation: [f32; 3]) -> InstanceEntry {
         dynamic: false,
         light_group: None,
         waves: None,
+        body: None,
     }
 }
 
