@@ -153,7 +153,11 @@ fn interpolation_shows_the_pose_between_the_last_two_steps() {
         .expect("spawned bodies get a PhysicsPose");
     let (previous, current) = (pose.previous.0, pose.current.0);
     assert!(current.y < previous.y, "the ball falls");
-    assert_eq!(sim.position(ball), current, "after a step the Transform is the step's pose");
+    assert_eq!(
+        sim.position(ball),
+        current,
+        "after a step the Transform is the step's pose"
+    );
     assert_eq!(sim.physics.interpolate(&mut sim.world, 0.25), 1);
     let shown = sim.position(ball);
     let expected = previous.lerp(current, 0.25);
