@@ -110,7 +110,6 @@ fn sensor_reports_enter_and_exit() {
         let contacts = sim
             .world
             .get::<&SensorContacts>(sensor)
-            .map(|c| c.clone())
             .expect("sensor has contacts");
         entered.extend(contacts.entered.iter().map(|&e| (k, e)));
         exited.extend(contacts.exited.iter().map(|&e| (k, e)));

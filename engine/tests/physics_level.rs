@@ -141,6 +141,7 @@ fn refused(name: &str, instance: &str, expect: &[&str]) {
         Ok(_) => panic!("{name}: should be refused"),
         Err(e) => e.to_string(),
     };
+    println!("{name}: {message}");
     assert!(
         message.contains(&format!("{name}.ron")),
         "does not name the level: {message}"

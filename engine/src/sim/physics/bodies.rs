@@ -260,7 +260,8 @@ pub(super) fn push_kinematic(rapier: &mut rapier3d::prelude::PhysicsWorld, world
 
 /// Writes the poses of bodies rapier moved this step into the ECS; returns how many
 /// `Transform`s were written. `moving` holds the entities written in the previous step and is
-/// replaced by this step's; an entity that stopped gets one last write (its resting pose).
+/// replaced by this step's; an entity that stopped (or fell asleep) gets one last write: its
+/// resting pose.
 pub(super) fn sync_moved(
     rapier: &rapier3d::prelude::PhysicsWorld,
     world: &mut World,
@@ -304,9 +305,13 @@ pub(super) fn sync_moved(
         {
             continue;
         }
-        if let Ok((pose, transform)) =
-            world.query_one_mut::<(&mut PhysicsPose, &mut Transform)>(entity)
+        if let Ok((handle, pose, transform)) =
+            world.query_one_mut::<(&BodyHandle, &mut PhysicsPose, &mut Transform)>(entity)
         {
+            // Its resting pose: where rapier left it when it fell asleep (or stopped).
+            if let Some(rb) = rapier.bodies.get(handle.0) {
+                pose.current = pose_from_rapier(rb.position());
+            }
             pose.previous = pose.current;
             if (transform.translation, transform.rotation) != pose.current {
                 (transform.translation, transform.rotation) = pose.current;
