@@ -85,3 +85,21 @@ impl GpuContext {
         )
     }
 }
+
+/// Maps `buffer` (MAP_READ, its copy already submitted) for reading and waits until it is.
+pub fn map_for_reading(device: &wgpu::Device, buffer: &wgpu::Buffer) -> Result<(), RenderError> {
+    let (sender, receiver) = std::sync::mpsc::channel();
+    buffer.map_async(wgpu::MapMode::Read, .., move |result| {
+        let _ = sender.send(result);
+    });
+    device
+        .poll(wgpu::PollType::Wait {
+            submission_index: None,
+            timeout: None,
+        })
+        .map_err(|e| RenderError::Device(e.to_string()))?;
+    receiver
+        .recv()
+        .map_err(|e| RenderError::Device(e.to_string()))?
+        .map_err(|e| RenderError::Device(e.to_string()))
+}

@@ -6,6 +6,6 @@ mod shaders;
 mod tracer;
 mod upload;
 
-pub use context::GpuContext;
+pub use context::{GpuContext, map_for_reading};
 pub use shaders::{PRESENT, PRESENT_SHARED, SHARED, ShaderSource, compose, compose_with};
 pub use tracer::GpuTracer;

@@ -256,20 +256,7 @@ impl GpuTracer {
         let mut encoder = device.create_command_encoder(&Default::default());
         encoder.copy_buffer_to_buffer(buffer, 0, &staging, 0, buffer.size());
         self.context.queue.submit([encoder.finish()]);
-        let (sender, receiver) = std::sync::mpsc::channel();
-        staging.map_async(wgpu::MapMode::Read, .., move |result| {
-            let _ = sender.send(result);
-        });
-        device
-            .poll(wgpu::PollType::Wait {
-                submission_index: None,
-                timeout: None,
-            })
-            .map_err(|e| RenderError::Device(e.to_string()))?;
-        receiver
-            .recv()
-            .map_err(|e| RenderError::Device(e.to_string()))?
-            .map_err(|e| RenderError::Device(e.to_string()))?;
+        super::context::map_for_reading(device, &staging)?;
         let bytes = staging
             .get_mapped_range(..)
             .map_err(|e| RenderError::Device(e.to_string()))?

@@ -10,6 +10,16 @@ use crate::render::scene::RenderScene;
 use crate::render::scene_writes::SceneWrite;
 use crate::render::tracer::RenderError;
 
+/// The write of `data` at element `first` of binding `index`: the binding, the byte offset (from
+/// the element type's size) and the bytes.
+fn at<T: bytemuck::Pod>(index: usize, first: u32, data: &[T]) -> (usize, u64, &[u8]) {
+    (
+        index,
+        first as u64 * std::mem::size_of::<T>() as u64,
+        bytemuck::cast_slice(data),
+    )
+}
+
 impl GpuTracer {
     /// Applies `writes` (already applied to `scene`, which is unused here but kept for symmetry
     /// with the CPU tracer) to the GPU buffers.
@@ -21,33 +31,15 @@ impl GpuTracer {
         let mut grown = false;
         for w in writes {
             let (index, offset, bytes): (usize, u64, &[u8]) = match w {
-                SceneWrite::Nodes { first, data } => {
-                    (1, *first as u64 * 256, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Blocks { first, data } => {
-                    (2, *first as u64 * 160, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Instances { first, data } => {
-                    (3, *first as u64 * 128, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Triangles { first, data } => {
-                    (4, *first as u64 * 16, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Vertices { first, data } => {
-                    (5, *first as u64 * 48, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Materials { first, data } => {
-                    (6, *first as u64 * 96, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Textures { first, data } => {
-                    (7, *first as u64 * 16, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Texels { first, data } => {
-                    (8, *first as u64 * 8, bytemuck::cast_slice(data))
-                }
-                SceneWrite::Lights { first, data } => {
-                    (9, *first as u64 * 64, bytemuck::cast_slice(data))
-                }
+                SceneWrite::Nodes { first, data } => at(1, *first, data),
+                SceneWrite::Blocks { first, data } => at(2, *first, data),
+                SceneWrite::Instances { first, data } => at(3, *first, data),
+                SceneWrite::Triangles { first, data } => at(4, *first, data),
+                SceneWrite::Vertices { first, data } => at(5, *first, data),
+                SceneWrite::Materials { first, data } => at(6, *first, data),
+                SceneWrite::Textures { first, data } => at(7, *first, data),
+                SceneWrite::Texels { first, data } => at(8, *first, data),
+                SceneWrite::Lights { first, data } => at(9, *first, data),
                 SceneWrite::TruncateInstances { .. } => continue,
             };
             if bytes.is_empty() {

@@ -93,21 +93,7 @@ pub(super) fn encode_readback(
 impl PendingReadback {
     /// Waits for the copy (submitted by the caller) and unpads the rows.
     pub(super) fn finish(self, device: &wgpu::Device) -> Result<Screenshot, RenderError> {
-        let (sender, receiver) = std::sync::mpsc::channel();
-        self.buffer
-            .map_async(wgpu::MapMode::Read, .., move |result| {
-                let _ = sender.send(result);
-            });
-        device
-            .poll(wgpu::PollType::Wait {
-                submission_index: None,
-                timeout: None,
-            })
-            .map_err(|e| RenderError::Device(e.to_string()))?;
-        receiver
-            .recv()
-            .map_err(|e| RenderError::Device(e.to_string()))?
-            .map_err(|e| RenderError::Device(e.to_string()))?;
+        crate::render::gpu::map_for_reading(device, &self.buffer)?;
         let mapped = self
             .buffer
             .get_mapped_range(..)
