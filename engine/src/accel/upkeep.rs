@@ -321,6 +321,11 @@ impl Upkeep {
         }
     }
 
+    /// Whether light group `group` is on (groups are on until switched off).
+    pub fn light_group_on(&self, group: u32) -> bool {
+        !self.groups_off.contains(&group)
+    }
+
     /// Ends the frame: rebuilds the TLAS and the light table if needed, and returns the
     /// frame's writes, the header and the statistics. The scene is then what queries read.
     pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {

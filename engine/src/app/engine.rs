@@ -1,9 +1,10 @@
 //! [`Engine`]: one frame of the Brigade pipeline, headless. The window runner drives the same
 //! frames.
 //!
-//! Owns: the world (hecs), its [`PhysicsWorld`], the game side's [`Upkeep`] (and so the ray-query scene), the
+//! Owns: the world (hecs), its [`PhysicsWorld`] and [`LevelLogic`], the game side's [`Upkeep`] (and so the ray-query scene), the
 //! [`Extractor`], the fixed-step clock and the [`RenderThread`]. A frame: run the game's fixed
-//! steps (with queries on the previous frame's BVH), each followed by a physics step →
+//! steps (with queries on the previous frame's BVH), each followed by a physics step and the
+//! level's logic (clips, lasers, trigger volumes, rules; their effects carried out here) →
 //! physics interpolation → propagate transforms → extract → upkeep →
 //! seal the commit → hand it off. The game rules of frame N+1 then run while the render thread
 //! renders frame N. Main thread.
@@ -24,6 +25,7 @@ use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
 use crate::sim::physics::PhysicsWorld;
+use crate::sim::triggers::{Effect, LevelLogic};
 
 /// Everything about the scene that is not an entity: sun, sky, render settings, and the view to
 /// use when no entity carries a camera.
@@ -69,6 +71,9 @@ pub struct Engine {
     /// Rigid bodies, characters, carrying, sensors: stepped after the game rules of every
     /// fixed step (an empty world costs next to nothing).
     pub physics: PhysicsWorld,
+    /// The level's clips, trigger volumes, lasers and rules (empty until a level with a
+    /// `gameplay` section is spawned), run after physics in every fixed step.
+    pub logic: LevelLogic,
     extractor: Extractor,
     render: RenderThread,
     frame: u64,
@@ -105,6 +110,7 @@ impl Engine {
             environment,
             clock: FixedClock::default(),
             physics: PhysicsWorld::new(),
+            logic: LevelLogic::default(),
             extractor: Extractor::new(),
             render,
             frame: 0,
@@ -159,6 +165,13 @@ impl Engine {
                 self.clock.step_seconds,
             );
             self.physics.step(&mut self.world, self.clock.step_seconds);
+            let effects = self.logic.step(
+                &mut self.world,
+                &self.physics,
+                self.upkeep.queries(),
+                self.clock.step_seconds,
+            );
+            self.carry_out(effects);
         }
         // Render between the last two physics steps (the clock's leftover fraction).
         self.physics
@@ -224,6 +237,20 @@ impl Engine {
         };
         self.frame += 1;
         Ok(report)
+    }
+
+    /// Carries out what the level's rules asked for in a step.
+    fn carry_out(&mut self, effects: Vec<Effect>) {
+        for effect in effects {
+            match effect {
+                Effect::Lights { group, on } => self.upkeep.set_light_group(group, on),
+                Effect::ToggleLights(group) => {
+                    let on = self.upkeep.light_group_on(group);
+                    self.upkeep.set_light_group(group, !on);
+                }
+                Effect::Sound { .. } => {}
+            }
+        }
     }
 
     /// Render results that are ready.

@@ -1,6 +1,7 @@
 //! Putting a loaded level into the engine: models registered with the upkeep, one entity per
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
-//! physics components when the level gives it a body, level materials, the environment.
+//! physics components when the level gives it a body, level materials, the environment, and
+//! the level's gameplay (clips, volumes, lasers, rules; light groups that start off).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -14,6 +15,7 @@ use super::waves::Waves;
 use crate::assets::SceneDesc;
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
 use crate::sim::physics::SensorContacts;
+use crate::sim::triggers::LevelLogic;
 
 /// What [`Engine::spawn_level`] created.
 #[derive(Clone, Debug, Default)]
@@ -95,6 +97,10 @@ impl Engine {
             }
             spawned.entities.push(entity);
         }
+        for &group in &desc.gameplay.lights_off {
+            self.upkeep.set_light_group(group, false);
+        }
+        self.logic = LevelLogic::new(&desc.gameplay, &spawned.entities, &mut self.world);
         spawned
     }
 }

@@ -63,6 +63,9 @@ pub struct Level {
     /// Renderer features the level may use (see [`super::Needs`]); absent: derived from content.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub needs: Option<super::Needs>,
+    /// Sounds, animations, trigger volumes, lasers and rules (see `level_gameplay`).
+    #[serde(default, skip_serializing_if = "super::GameplayEntry::is_empty")]
+    pub gameplay: super::GameplayEntry,
 }
 
 /// A model file under a name.

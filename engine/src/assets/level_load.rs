@@ -163,6 +163,11 @@ pub fn scene_from_level(
         scene_instance.dynamic |= resolved.moves();
         scene_instance.body = Some(resolved);
     }
+    let gameplay = super::level_gameplay_check::plan_gameplay(level_path, level, root)?;
+    for &i in &gameplay.clip_targets {
+        // Moved by clips: compared every frame, never written once and forgotten.
+        instances[i].dynamic = true;
+    }
     let desc = SceneDesc {
         source: level_path.to_path_buf(),
         models,
@@ -172,8 +177,10 @@ pub fn scene_from_level(
         sun: level.sun,
         sky: level.sky,
         render: level.render,
+        gameplay,
     };
-    let used = Needs::of_scene(&desc);
+    let mut used = Needs::of_scene(&desc);
+    used.add_switched_materials(&desc);
     match level.needs {
         Some(declared) => {
             let missing = declared.undeclared(&used);

@@ -44,6 +44,12 @@ pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_body;
 pub use level_body::{BodyEntry, InstanceBody, ShapeEntry, resolve_body};
+mod level_gameplay;
+mod level_gameplay_check;
+pub use level_gameplay::{
+    ActionEntry, AutoplayEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry, LaserEntry,
+    MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
+};
 mod level_load;
 mod level_shapes;
 mod needs;

@@ -45,6 +45,23 @@ fn material_needs(m: &Material, n: &mut Needs) {
 }
 
 impl Needs {
+    /// Adds what the level materials that gameplay rules switch instances to use (a wall that
+    /// becomes a mirror or a lamp at run time).
+    pub fn add_switched_materials(&mut self, desc: &SceneDesc) {
+        use crate::sim::triggers::Action;
+        for rule in &desc.gameplay.rules {
+            for action in rule.then.iter().chain(&rule.otherwise) {
+                if let Action::Material {
+                    material: Some(m), ..
+                } = action
+                    && let Some(m) = desc.level_materials.get(*m as usize)
+                {
+                    material_needs(m, self);
+                }
+            }
+        }
+    }
+
     /// The features `desc`'s placed content uses.
     pub fn of_scene(desc: &SceneDesc) -> Needs {
         let mut n = Needs::default();

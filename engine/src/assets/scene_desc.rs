@@ -24,6 +24,9 @@ pub struct SceneDesc {
     pub sun: Option<SunDesc>,
     pub sky: SkyDesc,
     pub render: RenderSettings,
+    /// Sounds, clips, trigger volumes, lasers and rules, by index (instances in `instances`
+    /// order).
+    pub gameplay: crate::sim::triggers::GameplayPlan,
 }
 
 /// One placed copy of a model.
@@ -73,6 +76,7 @@ impl SceneDesc {
             sun: None,
             sky: SkyDesc::default(),
             render: RenderSettings::default(),
+            gameplay: Default::default(),
         }
     }
 }

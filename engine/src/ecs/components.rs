@@ -91,6 +91,11 @@ pub struct Static;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct LightGroup(pub u32);
 
+/// A [`Static`] entity whose look changed once (a trigger or the mirror gun switched its
+/// material): the extractor places it again and removes this marker.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Restyled;
+
 /// A renderable whose mesh changes shape: the game writes new object-space positions here (same
 /// vertex count as mesh `mesh` of the model), and the upkeep refits or rebuilds its BLAS.
 #[derive(Clone, Debug, PartialEq)]

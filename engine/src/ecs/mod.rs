@@ -5,8 +5,8 @@ mod hierarchy;
 mod schedule;
 
 pub use components::{
-    CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Parent, Renderable, Static,
-    Transform,
+    CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Parent, Renderable, Restyled,
+    Static, Transform,
 };
 pub use hierarchy::propagate_transforms;
 pub use schedule::SYSTEM_ORDER;

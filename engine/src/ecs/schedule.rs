@@ -2,9 +2,8 @@
 //! systems in the `game rules` slot; everything else is the engine's.
 //!
 //! ```text
-//! main thread   input → (game rules → physics) per fixed 60 Hz step → physics interpolation
-//!               → animation → triggers
-//!               → propagate_transforms → extract (typed scene changes)
+//! main thread   input → (game rules → physics → animation → triggers → audio) per fixed
+//!               60 Hz step → physics interpolation → propagate_transforms → extract (typed scene changes)
 //!               → upkeep (instances, refit/rebuild, TLAS, lights) → seal commit N → hand-off
 //! render thread … render N−1 │ apply commit N │ render N │ …
 //! ```
@@ -16,6 +15,9 @@ pub const SYSTEM_ORDER: &[&str] = &[
     "input",
     "game rules (fixed steps)",
     "physics (after each fixed step)",
+    "animation (level clips, after physics)",
+    "triggers (lasers, volumes, rules, their effects)",
+    "audio (emitters follow entities, listener at the camera)",
     "physics interpolation",
     "propagate_transforms",
     "extract",

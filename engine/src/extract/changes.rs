@@ -3,7 +3,7 @@
 //!
 //! Owns: the memory of what each renderable entity looked like at the last extraction, and the
 //! camera. Produces [`SceneChange`]s (place, remove, deform) and the view. Entities marked
-//! [`Static`] are extracted once and never compared again. Main thread, after transforms are
+//! [`Static`] are extracted once and never compared again, unless marked [`Restyled`]. Main thread, after transforms are
 //! propagated. Must not: touch BVHs or buffers (the upkeep applies the changes).
 
 use std::collections::HashMap;
@@ -13,7 +13,7 @@ use hecs::{Entity, World};
 
 use crate::assets::CameraDesc;
 use crate::ecs::{
-    CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Renderable, Static,
+    CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Renderable, Restyled, Static,
 };
 
 /// One change of the rendered scene.
@@ -74,16 +74,21 @@ impl Extractor {
     pub fn extract(&mut self, world: &mut World) -> Extracted {
         let mut out = Extracted::default();
         let mut seen = HashMap::with_capacity(self.known.len());
-        for (entity, renderable, global, group, is_static) in world
+        let mut restyled = Vec::new();
+        for (entity, renderable, global, group, is_static, restyle) in world
             .query::<(
                 Entity,
                 &Renderable,
                 &GlobalTransform,
                 Option<&LightGroup>,
                 Option<&Static>,
+                Option<&Restyled>,
             )>()
             .iter()
         {
+            if restyle.is_some() {
+                restyled.push(entity);
+            }
             let placed = Placed {
                 model: renderable.model,
                 world_from_model: global.0,
@@ -93,7 +98,9 @@ impl Extractor {
             };
             seen.insert(entity, ());
             match self.known.get(&entity) {
-                Some(before) if before.is_static || *before == placed => continue,
+                Some(before) if (before.is_static && restyle.is_none()) || *before == placed => {
+                    continue;
+                }
                 _ => {}
             }
             self.known.insert(entity, placed);
@@ -104,6 +111,9 @@ impl Extractor {
                 material_override: placed.material_override,
                 light_group: placed.light_group,
             });
+        }
+        for entity in restyled {
+            let _ = world.remove_one::<Restyled>(entity);
         }
         let gone: Vec<Entity> = self
             .known

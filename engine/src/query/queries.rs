@@ -75,6 +75,11 @@ impl Queries<'_> {
         })
     }
 
+    /// Material `index` of the scene (as in [`QueryHit::material`]).
+    pub fn material(&self, index: u32) -> Option<&crate::layout::GpuMaterial> {
+        self.upkeep.scene().materials.get(index as usize)
+    }
+
     /// Whether anything blocks `ray` within `(t_min, t_max)`.
     pub fn occluded(&self, ray: &Ray) -> bool {
         self.upkeep

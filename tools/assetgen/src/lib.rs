@@ -296,6 +296,7 @@ pub fn demo_level() -> Level {
             deforming: true,
             ..Default::default()
         }),
+        gameplay: Default::default(),
     }
 }
 

@@ -8,13 +8,14 @@
 //! matrices → `deform` morphs (`morph`) and skins (`skin`) vertices, as world-space positions
 //! or as mesh-space `Vec<Vec3>` for the deforming-mesh refit in `accel::Upkeep::deform`.
 //!
-//! Runs on the main thread (game update). Must not: touch the renderer, BVHs or the ECS
-//! (systems that move entities call this library). Units: seconds (float64 clocks, float32
+//! Runs on the main thread (game update). Must not: touch the renderer or BVHs; only
+//! `entities` (clips that move level instances) touches the ECS. Units: seconds (float64 clocks, float32
 //! key times as glTF stores them), metres, radians; right-handed, +Y up.
 
 mod authored;
 mod clip;
 mod deform;
+mod entities;
 mod error;
 mod gltf_anim;
 mod gltf_anim_clips;
@@ -31,6 +32,7 @@ pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
     Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,
 };
+pub use entities::EntityAnimations;
 pub use error::{AnimError, AnimResult};
 pub use gltf_anim::{load_animation, load_animation_file};
 pub use model::{AnimMesh, AnimPrimitive, AnimatedModel};

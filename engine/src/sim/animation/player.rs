@@ -73,7 +73,7 @@ impl Playback {
     }
 
     /// Advances by `dt_seconds` of game time, pushing the events passed onto `fired`.
-    fn advance(&mut self, clips: &[Clip], dt_seconds: f64, fired: &mut Vec<FiredEvent>) {
+    pub(crate) fn advance(&mut self, clips: &[Clip], dt_seconds: f64, fired: &mut Vec<FiredEvent>) {
         let Some(clip) = clips.get(self.clip) else {
             return;
         };

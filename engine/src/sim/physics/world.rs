@@ -185,6 +185,26 @@ impl PhysicsWorld {
         Some((entity, distance))
     }
 
+    /// Whether the segment from `a` to `b` (metres) passes through a collider of `entity`'s
+    /// body (sensors included: a laser crossing a trigger volume).
+    pub fn segment_touches(&self, entity: Entity, a: Vec3, b: Vec3) -> bool {
+        let Some(body) = self.body(entity) else {
+            return false;
+        };
+        let length = (b - a).length();
+        let Some(direction) = (b - a).try_normalize() else {
+            return false;
+        };
+        let ray = Ray::new(vec_to_rapier(a), vec_to_rapier(direction));
+        body.colliders().iter().any(|&c| {
+            self.rapier.colliders.get(c).is_some_and(|collider| {
+                collider
+                    .shape()
+                    .intersects_ray(collider.position(), &ray, length)
+            })
+        })
+    }
+
     /// The handle of `entity`'s body, if it has one.
     pub fn handle(&self, entity: Entity) -> Option<BodyHandle> {
         self.handles.get(&entity).map(|&h| BodyHandle(h))

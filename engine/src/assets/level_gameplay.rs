@@ -1,0 +1,266 @@
+//! Gameplay in a level file: sounds, music, spatial emitters, animation clips that move named
+//! instances (doors, lifts, platforms), light groups switched off at the start, trigger volumes,
+//! laser beams, and the rules that turn what happens in volumes into actions.
+//!
+//! Owns: the serde types of the level's `gameplay` section. Checking the names they use is
+//! `level_gameplay_check`; running them is `sim::triggers`. Must not: load files or spawn
+//! anything.
+//!
+//! Names refer to other items: instances by their `name`, level materials, sounds, clips and
+//! volumes by theirs. Units: seconds, metres, linear amplitude (volume 1 = as recorded).
+//!
+//! ```ron
+//! gameplay: (
+//!     sounds: [(name: "chime", path: "common/sounds/chime.wav")],
+//!     animations: [(name: "door_open", tracks: [(target: "door", property: Translation,
+//!         interpolation: Linear, keys: [(time_seconds: 0, value: [0, 0, 0]),
+//!                                       (time_seconds: 1.2, value: [1.6, 0, 0])])])],
+//!     lights_off: [2],
+//!     volumes: [(name: "plate", instance: "plate_sensor")],
+//!     rules: [(name: "open", when: Occupied("plate"),
+//!              then: [Play(clip: "door_open"), Lights(group: 2, on: true), Sound(sound: "chime")],
+//!              otherwise: [Reverse(clip: "door_open")])],
+//! )
+//! ```
+
+use serde::{Deserialize, Serialize};
+
+use crate::sim::animation::{AuthoredClip, PlayMode};
+
+/// The `gameplay` section of a level. Everything is optional.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct GameplayEntry {
+    /// Sound files (WAV or OGG, relative to the asset root), each under a name.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub sounds: Vec<SoundEntry>,
+    /// Music that starts with the level.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub music: Option<MusicEntry>,
+    /// Looping spatial sounds attached to instances (a humming lamp, a waterfall).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub emitters: Vec<EmitterEntry>,
+    /// Clips whose track targets are instance names. A track's value is relative to where the
+    /// level places the instance: translation is added (metres, world axes), rotation turns
+    /// the instance about its own origin (world axes), scale multiplies.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub animations: Vec<AuthoredClip>,
+    /// Clips that play from the start (a lift that cycles on its own).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub autoplay: Vec<AutoplayEntry>,
+    /// Light groups (`InstanceEntry::light_group`) that start switched off.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub lights_off: Vec<u32>,
+    /// Trigger volumes.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub volumes: Vec<VolumeEntry>,
+    /// Laser beams, traced every step by ray queries; volumes that detect lasers see them.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub lasers: Vec<LaserEntry>,
+    /// Rules, evaluated in this order every fixed step.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub rules: Vec<RuleEntry>,
+}
+
+impl GameplayEntry {
+    /// Whether the section declares nothing.
+    pub fn is_empty(&self) -> bool {
+        *self == Self::default()
+    }
+}
+
+/// A sound file under a name.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SoundEntry {
+    pub name: String,
+    /// Relative to the asset root.
+    pub path: String,
+}
+
+/// The level's music.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MusicEntry {
+    /// Name of a [`SoundEntry`].
+    pub sound: String,
+    /// Linear amplitude, 0..=1.
+    #[serde(default = "one")]
+    pub volume: f32,
+}
+
+/// A sound that loops at an instance's position.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct EmitterEntry {
+    /// Name of the instance it sits on (it follows the instance when it moves).
+    pub instance: String,
+    /// Name of a [`SoundEntry`].
+    pub sound: String,
+    /// Linear amplitude, 0..=1.
+    #[serde(default = "one")]
+    pub volume: f32,
+}
+
+fn one() -> f32 {
+    1.0
+}
+
+/// A clip that starts playing with the level.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AutoplayEntry {
+    pub clip: String,
+    #[serde(default = "loop_mode")]
+    pub mode: PlayMode,
+}
+
+fn loop_mode() -> PlayMode {
+    PlayMode::Loop
+}
+
+/// What a volume notices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
+pub enum Detect {
+    /// Characters (entities with a character controller).
+    Player,
+    /// Dynamic rigid bodies (crates, glass cubes).
+    Bodies,
+    /// Laser beams passing through the volume.
+    Lasers,
+}
+
+/// A trigger volume: the shape of an instance whose body is a `Sensor`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct VolumeEntry {
+    pub name: String,
+    /// Name of an instance with `body: Sensor(..)`.
+    pub instance: String,
+    /// What it notices; all three by default.
+    #[serde(default = "all_detect")]
+    pub detects: Vec<Detect>,
+}
+
+fn all_detect() -> Vec<Detect> {
+    vec![Detect::Player, Detect::Bodies, Detect::Lasers]
+}
+
+/// A laser beam leaving an instance. It reflects off mirrors (smooth conductors), refracts
+/// through glass and stops at anything else.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LaserEntry {
+    /// Name of the instance it leaves (it follows the instance).
+    pub instance: String,
+    /// Start, metres, in the instance's model space.
+    #[serde(default)]
+    pub origin: [f32; 3],
+    /// Direction in the instance's model space (need not be unit length).
+    pub direction: [f32; 3],
+    /// Most surfaces the beam changes direction at.
+    #[serde(default = "default_reflections")]
+    pub max_reflections: u32,
+    /// Total beam length, metres.
+    #[serde(default = "default_laser_length")]
+    pub max_length: f32,
+}
+
+fn default_reflections() -> u32 {
+    16
+}
+
+fn default_laser_length() -> f32 {
+    200.0
+}
+
+/// A rule: when its condition becomes true, `then` runs; when it becomes false again,
+/// `otherwise` runs.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RuleEntry {
+    pub name: String,
+    pub when: ConditionEntry,
+    #[serde(default)]
+    pub then: Vec<ActionEntry>,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub otherwise: Vec<ActionEntry>,
+    /// Fire `then` at most once.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub once: bool,
+}
+
+/// A condition, true or false at each fixed step.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum ConditionEntry {
+    /// Something the volume detects is inside it (true while it stays).
+    Occupied(String),
+    /// Something entered the volume during this step.
+    Entered(String),
+    /// Something left the volume during this step.
+    Exited(String),
+    /// At least `at_least` things are inside the volume.
+    Occupants {
+        volume: String,
+        at_least: u32,
+    },
+    /// A clip event with this name fired during this step.
+    Event(String),
+    /// Every condition holds.
+    All(Vec<ConditionEntry>),
+    /// Any condition holds.
+    Any(Vec<ConditionEntry>),
+    Not(Box<ConditionEntry>),
+    /// At least `at_least` of the conditions hold (a door that needs two of three plates).
+    AtLeast {
+        at_least: u32,
+        of: Vec<ConditionEntry>,
+    },
+    /// The condition has become true at least `at_least` times since the level started
+    /// (three artefacts collected).
+    Times {
+        at_least: u32,
+        of: Box<ConditionEntry>,
+    },
+}
+
+/// Something a rule does.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum ActionEntry {
+    /// Switch a light group on or off: a group that is off leaves the light sampling
+    /// distribution.
+    Lights { group: u32, on: bool },
+    /// Switch a light group to its other state.
+    ToggleLights(u32),
+    /// Play a clip forward from where its playhead is (the start, the first time).
+    Play {
+        clip: String,
+        #[serde(default = "once_mode")]
+        mode: PlayMode,
+    },
+    /// Play a clip backward from where its playhead is (a door closing).
+    Reverse { clip: String },
+    /// Stop a clip where it is.
+    Pause { clip: String },
+    /// Play a sound once: at an instance's position, or everywhere (`at` left out).
+    Sound {
+        sound: String,
+        #[serde(default)]
+        at: Option<String>,
+        #[serde(default = "one")]
+        volume: f32,
+    },
+    /// Give an instance a level material, or its model's own materials back (`None`).
+    Material {
+        instance: String,
+        material: Option<String>,
+    },
+    /// The player wins the level.
+    Win,
+    /// The player loses the level.
+    Lose,
+}
+
+fn once_mode() -> PlayMode {
+    PlayMode::Once
+}

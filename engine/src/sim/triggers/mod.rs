@@ -1,0 +1,26 @@
+//! Triggers: what makes a level react. Trigger volumes notice the player, bodies and laser
+//! beams (traced by ray queries); rules combine what the volumes saw and clip events into
+//! conditions, and on each change run actions: switch a light group, play or reverse a clip,
+//! play a sound, set an instance's material, win or lose.
+//!
+//! Flow: the level file's `gameplay` section (`assets::GameplayEntry`) is checked into a
+//! [`GameplayPlan`] (`plan`) at load time; at spawn time a [`LevelLogic`] (`runtime`) binds it
+//! to entities and runs it every fixed step: `laser` traces beams, `volumes` tracks who is
+//! inside, `logic` evaluates rules. Main thread, fixed step, after physics and animation.
+//! Deterministic. Must not: talk to the render thread or the audio device (the engine
+//! carries out the [`Effect`]s).
+
+mod laser;
+mod logic;
+mod plan;
+mod runtime;
+mod volumes;
+
+pub use laser::{LaserBeam, LaserPath, MIRROR_ROUGHNESS, trace_laser};
+pub use logic::{Facts, RuleBook, RuleFiring};
+pub use plan::{
+    Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedVolume,
+    Rule,
+};
+pub use runtime::{Effect, LevelLogic, Outcome, StepLog, world_from_model};
+pub use volumes::{OccupantKind, Phase, VolumeEvent, VolumeFacts, VolumeTracker};

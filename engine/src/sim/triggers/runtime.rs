@@ -1,0 +1,267 @@
+//! [`LevelLogic`]: a level's gameplay running: clips on entities, laser beams, trigger volumes
+//! and rules, one fixed step at a time.
+//!
+//! Owns: the instance → entity map of the level, the [`EntityAnimations`], the
+//! [`VolumeTracker`], the [`RuleBook`], the level's sounds, the outcome (won or lost) and the
+//! log of the last step. A step, in order: advance clips (writing door and lift transforms,
+//! collecting clip events) → trace laser beams → update volumes → evaluate rules → carry out
+//! what touches only the world (clips, materials, win or lose) and hand the rest back as
+//! [`Effect`]s (light groups, sounds) for the engine, which owns the scene and the audio.
+//! Main thread, fixed step, after physics. Deterministic: no clocks, no hash order.
+//! Must not: touch the upkeep, the audio device or the render thread.
+
+use glam::Mat4;
+use hecs::{Entity, World};
+
+use super::laser::{LaserBeam, LaserPath, trace_laser};
+use super::logic::{Facts, RuleBook, RuleFiring};
+use super::plan::{Action, GameplayPlan, PlannedSound};
+use super::volumes::{VolumeEvent, VolumeTracker};
+use crate::ecs::{GlobalTransform, Parent, Renderable, Restyled, Transform};
+use crate::query::Queries;
+use crate::sim::animation::{EntityAnimations, FiredEvent};
+use crate::sim::physics::PhysicsWorld;
+
+/// How the level ended.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// A rule with a `Win` action fired; its name.
+    Won(String),
+    /// A rule with a `Lose` action fired; its name.
+    Lost(String),
+}
+
+/// What the engine carries out for a step's rules.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Effect {
+    Lights {
+        group: u32,
+        on: bool,
+    },
+    ToggleLights(u32),
+    /// Sound `sound` (index into [`LevelLogic::sounds`]) at an entity's position or
+    /// everywhere, at linear `volume`.
+    Sound {
+        sound: usize,
+        at: Option<Entity>,
+        volume: f32,
+    },
+}
+
+/// What happened in the last step.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StepLog {
+    pub volume_events: Vec<VolumeEvent>,
+    pub clip_events: Vec<FiredEvent>,
+    pub firings: Vec<RuleFiring>,
+}
+
+/// A level's gameplay, running.
+#[derive(Default)]
+pub struct LevelLogic {
+    pub animations: EntityAnimations,
+    entities: Vec<Entity>,
+    volumes: VolumeTracker,
+    volume_names: Vec<String>,
+    rules: RuleBook,
+    sounds: Vec<PlannedSound>,
+    outcome: Option<Outcome>,
+    last: StepLog,
+    steps: u64,
+}
+
+impl LevelLogic {
+    /// Runs `plan` on the level whose instances became `entities` (level order). Puts a
+    /// [`LaserBeam`] on every laser's entity and starts the autoplay clips.
+    pub fn new(plan: &GameplayPlan, entities: &[Entity], world: &mut World) -> Self {
+        let entity = |i: usize| entities.get(i).copied();
+        let targets: Vec<Entity> = plan
+            .clip_targets
+            .iter()
+            .filter_map(|&i| entity(i))
+            .collect();
+        let mut animations = if targets.len() == plan.clip_targets.len() {
+            EntityAnimations::new(plan.clips.clone(), targets, world)
+        } else {
+            EntityAnimations::default()
+        };
+        for &(clip, mode) in &plan.autoplay {
+            animations.play(clip, mode);
+        }
+        for laser in &plan.lasers {
+            if let Some(e) = entity(laser.instance) {
+                let beam = LaserBeam {
+                    origin: laser.origin,
+                    direction: laser.direction,
+                    max_reflections: laser.max_reflections,
+                    max_length: laser.max_length,
+                };
+                let _ = world.insert(e, (beam, LaserPath::default()));
+            }
+        }
+        let volumes = VolumeTracker::new(
+            plan.volumes
+                .iter()
+                .filter_map(|v| Some((entity(v.instance)?, v.detects.clone()))),
+        );
+        Self {
+            animations,
+            entities: entities.to_vec(),
+            volumes,
+            volume_names: plan.volumes.iter().map(|v| v.name.clone()).collect(),
+            rules: RuleBook::new(plan.rules.clone()),
+            sounds: plan.sounds.clone(),
+            outcome: None,
+            last: StepLog::default(),
+            steps: 0,
+        }
+    }
+
+    /// The level's sounds, by index.
+    pub fn sounds(&self) -> &[PlannedSound] {
+        &self.sounds
+    }
+
+    /// The entity of level instance `index`.
+    pub fn entity(&self, index: usize) -> Option<Entity> {
+        self.entities.get(index).copied()
+    }
+
+    /// The index of the volume named `name`.
+    pub fn volume_index(&self, name: &str) -> Option<usize> {
+        self.volume_names.iter().position(|n| n == name)
+    }
+
+    /// The volumes and who is in them.
+    pub fn volumes(&self) -> &VolumeTracker {
+        &self.volumes
+    }
+
+    /// Won or lost, once a rule said so (the first one counts).
+    pub fn outcome(&self) -> Option<&Outcome> {
+        self.outcome.as_ref()
+    }
+
+    /// What happened in the last step.
+    pub fn last_step(&self) -> &StepLog {
+        &self.last
+    }
+
+    /// Fixed steps run so far.
+    pub fn steps(&self) -> u64 {
+        self.steps
+    }
+
+    /// One fixed step of `dt_seconds`; returns the effects the engine carries out.
+    pub fn step(
+        &mut self,
+        world: &mut World,
+        physics: &PhysicsWorld,
+        queries: Queries<'_>,
+        dt_seconds: f64,
+    ) -> Vec<Effect> {
+        self.steps += 1;
+        let clip_events = self.animations.step(world, dt_seconds);
+        let beams = trace_beams(world, &queries);
+        let mut volume_events = Vec::new();
+        let facts = self
+            .volumes
+            .step(world, physics, &beams, &mut volume_events);
+        let names: Vec<String> = clip_events.iter().map(|e| e.name.clone()).collect();
+        let (firings, actions) = self.rules.step(&Facts {
+            volumes: &facts,
+            events: &names,
+        });
+        let mut effects = Vec::new();
+        let mut action_rule = firings.iter().flat_map(|f| {
+            let rule = &self.rules.rules()[f.rule];
+            let list = if f.rising {
+                &rule.then
+            } else {
+                &rule.otherwise
+            };
+            std::iter::repeat_n(rule.name.clone(), list.len())
+        });
+        for action in actions {
+            let rule = action_rule.next().unwrap_or_default();
+            match action {
+                Action::Lights { group, on } => effects.push(Effect::Lights { group, on }),
+                Action::ToggleLights(group) => effects.push(Effect::ToggleLights(group)),
+                Action::Play { clip, mode } => self.animations.play(clip, mode),
+                Action::Reverse { clip } => self.animations.reverse(clip),
+                Action::Pause { clip } => self.animations.pause(clip),
+                Action::Sound { sound, at, volume } => effects.push(Effect::Sound {
+                    sound,
+                    at: at.and_then(|i| self.entity(i)),
+                    volume,
+                }),
+                Action::Material { instance, material } => {
+                    if let Some(e) = self.entity(instance) {
+                        set_material(world, e, material);
+                    }
+                }
+                Action::Win => {
+                    self.outcome.get_or_insert(Outcome::Won(rule));
+                }
+                Action::Lose => {
+                    self.outcome.get_or_insert(Outcome::Lost(rule));
+                }
+            }
+        }
+        self.last = StepLog {
+            volume_events,
+            clip_events,
+            firings,
+        };
+        effects
+    }
+}
+
+/// Gives `entity` level material `material` (or its model's own back) and tells the extractor
+/// to look at it again even if it is static.
+fn set_material(world: &mut World, entity: Entity, material: Option<u32>) {
+    let changed = match world.get::<&mut Renderable>(entity) {
+        Ok(mut r) if r.material_override != material => {
+            r.material_override = material;
+            true
+        }
+        _ => false,
+    };
+    if changed {
+        let _ = world.insert_one(entity, Restyled);
+    }
+}
+
+/// `world_from_model` of `entity` now: its `Transform` for a root entity (current within the
+/// frame's steps), else its last propagated `GlobalTransform`.
+pub fn world_from_model(world: &World, entity: Entity) -> Option<Mat4> {
+    if world.get::<&Parent>(entity).is_err()
+        && let Ok(t) = world.get::<&Transform>(entity)
+    {
+        return Some(t.matrix());
+    }
+    world.get::<&GlobalTransform>(entity).ok().map(|g| g.0)
+}
+
+/// Traces every laser beam, stores its path on its entity, and returns (entity, path) in
+/// entity order.
+fn trace_beams(world: &mut World, queries: &Queries<'_>) -> Vec<(Entity, LaserPath)> {
+    let mut lasers: Vec<(Entity, LaserBeam)> = world
+        .query::<(Entity, &LaserBeam)>()
+        .iter()
+        .map(|(e, b)| (e, *b))
+        .collect();
+    lasers.sort_by_key(|(e, _)| e.to_bits());
+    let mut beams = Vec::with_capacity(lasers.len());
+    for (entity, beam) in lasers {
+        let Some(placed) = world_from_model(world, entity) else {
+            continue;
+        };
+        let path = trace_laser(queries, placed, &beam, entity);
+        if let Ok(mut stored) = world.get::<&mut LaserPath>(entity) {
+            stored.clone_from(&path);
+        }
+        beams.push((entity, path));
+    }
+    beams
+}
