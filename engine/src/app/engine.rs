@@ -5,7 +5,7 @@
 //! [`Extractor`], the fixed-step clock and the [`RenderThread`]. A frame: run the game's fixed
 //! steps (with queries on the previous frame's BVH), each followed by a physics step and the
 //! level's logic (clips, lasers, trigger volumes, rules; their effects carried out here) →
-//! physics interpolation → propagate transforms → extract → upkeep →
+//! physics interpolation → skinned meshes deformed → propagate transforms → extract → upkeep →
 //! seal the commit → hand it off. The game rules of frame N+1 then run while the render thread
 //! renders frame N. Main thread.
 //! Must not: render (the render thread does) or block on anything but the hand-off.
@@ -24,6 +24,7 @@ use crate::extract::Extractor;
 use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
+use crate::sim::animation::{deform_skinned, tick_skinned};
 use crate::sim::physics::PhysicsWorld;
 use crate::sim::triggers::{Effect, LevelLogic};
 
@@ -165,6 +166,7 @@ impl Engine {
                 self.clock.step_seconds,
             );
             self.physics.step(&mut self.world, self.clock.step_seconds);
+            tick_skinned(&mut self.world, self.clock.step_seconds);
             let effects = self.logic.step(
                 &mut self.world,
                 &self.physics,
@@ -176,6 +178,7 @@ impl Engine {
         // Render between the last two physics steps (the clock's leftover fraction).
         self.physics
             .interpolate(&mut self.world, self.clock.alpha());
+        deform_skinned(&mut self.world);
         propagate_transforms(&mut self.world);
         let update_seconds = started.elapsed().as_secs_f64();
 

@@ -9,7 +9,8 @@
 //! or as mesh-space `Vec<Vec3>` for the deforming-mesh refit in `accel::Upkeep::deform`.
 //!
 //! Runs on the main thread (game update). Must not: touch the renderer or BVHs; only
-//! `entities` (clips that move level instances) touches the ECS. Units: seconds (float64 clocks, float32
+//! `entities` (clips that move level instances) and `skinned_entities` (characters) touch
+//! the ECS. Units: seconds (float64 clocks, float32
 //! key times as glTF stores them), metres, radians; right-handed, +Y up.
 
 mod authored;
@@ -26,6 +27,7 @@ mod player;
 mod pose;
 mod sample;
 mod skin;
+mod skinned_entities;
 
 pub use authored::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
@@ -41,3 +43,4 @@ pub use player::{AnimationPlayer, FiredEvent, PlayMode, Playback};
 pub use pose::{NodeRest, NodeTree, Pose};
 pub use sample::{sample_channel, slerp};
 pub use skin::{Influence, Skin, SkinnedVertices, joint_matrices, skin_vertices};
+pub use skinned_entities::{SkinnedAnimator, deform_skinned, tick_skinned};
