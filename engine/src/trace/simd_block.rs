@@ -122,16 +122,24 @@ impl Leaf for ClosestBlock<'_> {
         let mut i = 0;
         while i < blocks.len() {
             let block = blocks[i..].as_ptr();
-            // Two blocks at once (8 lanes) while two are left. SAFETY: module contract; the
-            // blocks tested lie in `blocks`.
-            let (mask, t, u, v) = if i + 1 < blocks.len() {
+            // Two blocks at once (8 lanes) while two are left; the lanes go to memory only
+            // when one hit. SAFETY: module contract; the blocks tested lie in `blocks`.
+            let hit = if i + 1 < blocks.len() {
                 let (mask, t, u, v) = unsafe { block_test::<__m256>(block, ray, *t_max) };
-                unsafe { (mask, t.to_array(), u.to_array(), v.to_array()) }
+                if mask != 0 {
+                    Some(unsafe { (mask, t.to_array(), u.to_array(), v.to_array()) })
+                } else {
+                    None
+                }
             } else {
                 let (mask, t, u, v) = unsafe { block_test::<__m128>(block, ray, *t_max) };
-                unsafe { (mask, t.to_array(), u.to_array(), v.to_array()) }
+                if mask != 0 {
+                    Some(unsafe { (mask, t.to_array(), u.to_array(), v.to_array()) })
+                } else {
+                    None
+                }
             };
-            if mask != 0 {
+            if let Some((mask, t, u, v)) = hit {
                 // The lowest lane among the smallest t, as the scalar loop picks it.
                 let mut lane = mask.trailing_zeros() as usize;
                 let mut rest = mask & (mask - 1);
