@@ -1,7 +1,7 @@
 //! Where the mixed sound goes: the sound card (kira's cpal backend) or the silent recorder.
 //!
 //! Owns: [`OutputBackend`], the one kira `Backend` the engine builds its `AudioManager` on, so
-//! that `audio.rs` has a single code path for both; and [`SilentSettings`]. With a device, kira's
+//! that `playback.rs` has a single code path for both; and [`SilentSettings`]. With a device, kira's
 //! audio thread pulls samples on its own. Silent, nothing pulls: the recorder keeps kira's
 //! `Renderer` and mixes exactly as many frames as the game asked for in [`OutputBackend::render`]
 //! (called from `Audio::tick` on the game thread), in blocks of at most one kira internal buffer,
@@ -9,7 +9,7 @@
 //! pick up new sounds and free finished ones (without it every `play` would fail once 128 sounds
 //! had been queued) and what makes the mixed samples available to tests. Must not: know about
 //! sounds, buses or the ECS; keep more than one tick's samples (the capped record lives in
-//! `audio.rs`).
+//! `playback.rs`).
 
 use kira::backend::cpal::{CpalBackend, CpalBackendSettings};
 use kira::backend::{Backend, Renderer};
@@ -60,7 +60,8 @@ pub struct Recorder {
 /// The backend the engine's `AudioManager` runs on.
 pub enum OutputBackend {
     Device(CpalBackend),
-    Silent(Recorder),
+    /// Boxed: the renderer is large (1.8 KB) next to the cpal handle.
+    Silent(Box<Recorder>),
 }
 
 impl OutputBackend {
@@ -126,7 +127,7 @@ impl Backend for OutputBackend {
                     renderer: None,
                     scratch: Vec::new(),
                 };
-                Ok((Self::Silent(recorder), s.sample_rate_hz))
+                Ok((Self::Silent(Box::new(recorder)), s.sample_rate_hz))
             }
         }
     }

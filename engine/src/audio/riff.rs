@@ -21,22 +21,12 @@ fn read_u32_le(bytes: &[u8], at: usize) -> Option<u32> {
     Some(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))
 }
 
-/// Checks the chunk layout of a RIFF/WAVE file held in `bytes`. Returns `Ok` for anything that
-/// is not RIFF/WAVE. Costs one pass over the chunk headers (not the samples).
+/// Checks the chunk layout of a RIFF/WAVE file held in `bytes`: each chunk in turn (so a file cut
+/// inside its samples names the `"data"` chunk), then the RIFF size. Returns `Ok` for anything
+/// that is not RIFF/WAVE. Costs one pass over the chunk headers (not the samples).
 pub fn check_wave(bytes: &[u8]) -> Result<(), DecodeProblem> {
     if bytes.len() < RIFF_HEADER_BYTES || &bytes[0..4] != b"RIFF" || &bytes[8..12] != b"WAVE" {
         return Ok(());
-    }
-    let present_after_riff = (bytes.len() - CHUNK_HEADER_BYTES) as u64;
-    if let Some(riff_size) = read_u32_le(bytes, 4)
-        && !UNKNOWN_SIZES.contains(&riff_size)
-        && u64::from(riff_size) > present_after_riff
-    {
-        return Err(DecodeProblem::Truncated {
-            chunk: "RIFF".into(),
-            declared_bytes: riff_size.into(),
-            present_bytes: present_after_riff,
-        });
     }
     let mut at = RIFF_HEADER_BYTES;
     let mut saw_data = false;
@@ -73,6 +63,18 @@ pub fn check_wave(bytes: &[u8]) -> Result<(), DecodeProblem> {
     if !saw_data {
         return Err(DecodeProblem::Malformed {
             detail: "a WAVE file without a \"data\" chunk".into(),
+        });
+    }
+    // Every chunk fits, but the file may still have been cut at a chunk boundary.
+    let present_after_riff = (bytes.len() - CHUNK_HEADER_BYTES) as u64;
+    if let Some(riff_size) = read_u32_le(bytes, 4)
+        && !UNKNOWN_SIZES.contains(&riff_size)
+        && u64::from(riff_size) > present_after_riff
+    {
+        return Err(DecodeProblem::Truncated {
+            chunk: "RIFF".into(),
+            declared_bytes: riff_size.into(),
+            present_bytes: present_after_riff,
         });
     }
     Ok(())

@@ -6,7 +6,7 @@
 //! samples and Ogg Vorbis, mono or stereo, any sample rate (kira resamples to the output rate
 //! at play time). Every failure is an [`AudioError`] naming the file and the problem; nothing
 //! here panics on bad input. Runs on whichever thread loads assets. Must not: play anything or
-//! touch the mixer (that is `audio.rs`), or resolve asset paths (that is `assets`).
+//! touch the mixer (that is `playback.rs`), or resolve asset paths (that is `assets`).
 
 use std::fmt;
 use std::io::{Cursor, ErrorKind};
@@ -69,12 +69,13 @@ impl Sound {
             })
         } else if samples.is_empty() {
             Some(DecodeProblem::NoSamples)
-        } else if let Some(i) = samples.iter().position(|s| !s.is_finite()) {
-            Some(DecodeProblem::Malformed {
-                detail: format!("sample {i} is {}", samples[i]),
-            })
         } else {
-            None
+            samples
+                .iter()
+                .position(|s| !s.is_finite())
+                .map(|i| DecodeProblem::Malformed {
+                    detail: format!("sample {i} is {}", samples[i]),
+                })
         };
         if let Some(problem) = problem {
             return Err(AudioError::Decode {
