@@ -18,6 +18,7 @@ mod backend;
 mod emitters;
 mod error;
 mod history;
+mod limits;
 mod options;
 mod playback;
 mod riff;
@@ -26,10 +27,11 @@ mod sounds;
 pub use backend::SilentSettings;
 pub use emitters::{EMITTER_GONE_FADE_SECONDS, SoundEmitter, sync_emitters};
 pub use error::{AudioError, DecodeProblem};
-pub use options::{Bus, PlayOptions, PlayedSound, PlayingId, decibels_of};
-pub use playback::{
-    Audio, EFFECT_SOUND_CAPACITY, MAX_PLAYED_RECORDS, MAX_TICK_SECONDS, MUSIC_CROSSFADE_SECONDS,
+pub use limits::{
+    EFFECT_SOUND_CAPACITY, MAX_PLAYED_RECORDS, MAX_TICK_SECONDS, MUSIC_CROSSFADE_SECONDS,
     MUSIC_SOUND_CAPACITY, SPATIAL_MAX_DISTANCE_METERS, SPATIAL_MIN_DISTANCE_METERS,
     SPATIAL_SOUND_CAPACITY, VOLUME_RAMP_SECONDS,
 };
+pub use options::{Bus, PlayOptions, PlayedSound, PlayingId, decibels_of};
+pub use playback::Audio;
 pub use sounds::{Sound, decode_sound, decode_sound_bytes};
