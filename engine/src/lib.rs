@@ -16,6 +16,8 @@ pub mod ecs;
 
 pub mod sim;
 
+pub mod audio;
+
 pub mod extract;
 
 pub mod accel;

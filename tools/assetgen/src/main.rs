@@ -1,5 +1,7 @@
 //! `assetgen demo [--out FILE]`: writes the demo level (default
 //! `assets/test_scenes/demo/demo.ron`, relative to the current folder). See `assetgen::demo_level`.
+//! `assetgen sounds [--out DIR]`: writes the games' sounds as WAV files (default
+//! `assets/common/sounds`). See `assetgen::sounds`.
 
 use std::path::PathBuf;
 
@@ -20,6 +22,11 @@ enum Command {
         #[arg(long, default_value = "assets/test_scenes/demo/demo.ron")]
         out: PathBuf,
     },
+    /// The games' sounds (mono 16-bit WAV, synthesised).
+    Sounds {
+        #[arg(long, default_value = "assets/common/sounds")]
+        out: PathBuf,
+    },
 }
 
 fn main() -> anyhow::Result<()> {
@@ -33,6 +40,17 @@ fn main() -> anyhow::Result<()> {
             std::fs::write(&out, text)
                 .with_context(|| format!("cannot write {}", out.display()))?;
             println!("wrote {}", out.display());
+            Ok(())
+        }
+        Command::Sounds { out } => {
+            std::fs::create_dir_all(&out)
+                .with_context(|| format!("cannot create {}", out.display()))?;
+            for (file, bytes) in assetgen::sounds::sound_files() {
+                let path = out.join(file);
+                std::fs::write(&path, &bytes)
+                    .with_context(|| format!("cannot write {}", path.display()))?;
+                println!("wrote {} ({} bytes)", path.display(), bytes.len());
+            }
             Ok(())
         }
     }
