@@ -176,3 +176,31 @@ fn gameplay_that_cannot_work_is_refused() {
     );
     says(&m, &["light_off", "line 17"]);
 }
+
+#[test]
+fn a_sound_that_fails_to_decode_is_named() {
+    let d = dir("sound");
+    std::fs::create_dir_all(d.0.join("sounds")).expect("dir");
+    std::fs::write(d.0.join("sounds/broken.wav"), b"RIFF\x10\0\0\0WAVEnot really").expect("write");
+    let m = refused(
+        &d.0,
+        "sound.ron",
+        "lights_off: [2],",
+        r#"lights_off: [2], sounds: [(name: "ding", path: "sounds/broken.wav")],"#,
+    );
+    says(&m, &["sound \"ding\"", "broken.wav"]);
+    let m = refused(
+        &d.0,
+        "missing_sound.ron",
+        "lights_off: [2],",
+        r#"lights_off: [2], sounds: [(name: "ding", path: "sounds/none.wav")],"#,
+    );
+    says(&m, &["sound \"ding\"", "none.wav"]);
+    let m = refused(
+        &d.0,
+        "unknown_sound.ron",
+        "Lights(group: 2, on: true),",
+        r#"Lights(group: 2, on: true), Sound(sound: "dong"),"#,
+    );
+    says(&m, &["rule \"press\"", "sound \"dong\""]);
+}

@@ -32,6 +32,8 @@ struct Run {
     lights: Vec<u32>,
     /// Bits of the final crate and door transforms.
     hash: u64,
+    /// What the silent audio backend recorded: (name, seconds, position) of each sound.
+    played: Vec<(String, f64, Option<Vec3>)>,
 }
 
 fn hash(values: &[f32]) -> u64 {
@@ -110,6 +112,23 @@ fn run() -> anyhow::Result<Run> {
         "entered {entered_step}, won {won_step}"
     );
 
+    // The chime: started by the rule in the crate's entry step, at the plate, and heard.
+    assert!(engine.audio.is_silent(), "headless engines record silently");
+    let played: Vec<(String, f64, Option<Vec3>)> = engine
+        .audio
+        .played()
+        .iter()
+        .map(|p| (p.name.to_string(), p.time_seconds, p.position))
+        .collect();
+    let rate = f64::from(engine.audio.recorded_sample_rate_hz().expect("silent"));
+    let samples = engine.audio.recorded_samples().expect("silent");
+    assert_eq!(engine.audio.recorded_start_frame(), 0, "4 s fit in the recording");
+    let start = ((entered_step - 1) as f64 / 60.0 * rate) as usize;
+    let peak = |range: &[[f32; 2]]| range.iter().flatten().fold(0.0f32, |m, s| m.max(s.abs()));
+    assert_eq!(peak(&samples[..start]), 0.0, "silence before the plate was pressed");
+    let heard = peak(&samples[start..(start + rate as usize / 2).min(samples.len())]);
+    assert!(heard > 0.01, "the chime is not in the recording (peak {heard})");
+
     let crate_now = *engine.world.get::<&Transform>(crate_)?;
     let hash = hash(
         &[
@@ -127,6 +146,7 @@ fn run() -> anyhow::Result<Run> {
         won_step,
         lights,
         hash,
+        played,
     })
 }
 
@@ -157,6 +177,14 @@ fn crate_on_plate_opens_door_switches_lights_plays_sound() -> anyhow::Result<()>
     // Frame k runs fixed step k + 1; the rule fired in the crate's entry step, so the render
     // side sees the new table in that same frame's commit.
     assert_eq!(switch as u64 + 1, first.entered_step, "{:?}", first.lights);
+
+    // One chime, at the plate, in the step the crate entered (audio time counts steps before
+    // that one: the sound starts at the beginning of the step's audio).
+    assert_eq!(first.played.len(), 1, "{:?}", first.played);
+    let (name, time, at) = &first.played[0];
+    assert_eq!(name, "chime");
+    assert!((time - (first.entered_step - 1) as f64 / 60.0).abs() < 1e-9, "{time}");
+    assert_eq!(*at, Some(Vec3::new(0.0, 0.02, 0.0)));
 
     let second = run()?;
     assert_eq!(

@@ -8,6 +8,7 @@ use std::path::PathBuf;
 
 use candela::app::{Engine, SpawnedLevel};
 use candela::assets::{AssetRoot, load_level};
+use candela::audio::Bus;
 use candela::ecs::Transform;
 use candela::render::film::ConvergePolicy;
 use candela::render::{RenderConfig, TracerChoice};
@@ -53,6 +54,11 @@ fn engine(
         &path,
         format!("Level({HEAD} instances: [{FLOOR}, {instances}], gameplay: ({gameplay}))"),
     )?;
+    let sounds = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../assets/common/sounds");
+    std::fs::create_dir_all(dir.join("sounds"))?;
+    for name in ["hum_loop.wav", "music_loop.wav"] {
+        std::fs::copy(sounds.join(name), dir.join("sounds").join(name))?;
+    }
     let scene = load_level(&path, &AssetRoot::new(&dir)?)?;
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
@@ -222,6 +228,38 @@ fn laser_over_a_mirror_reaches_the_receiver_until_the_mirror_goes_matte() -> any
     );
     assert!(engine.logic.volumes().occupants(0).next().is_none());
     let _ = receiver;
+    drop(engine.shutdown());
+    Ok(())
+}
+
+#[test]
+fn emitters_and_music_start_with_the_level() -> anyhow::Result<()> {
+    let (mut engine, _spawned, _dir) = engine(
+        "sound",
+        r#"(model: "lamp", name: "lamp", transform: (translation: (1, 3, 0)), light_group: 1)"#,
+        r#"sounds: [(name: "hum", path: "sounds/hum_loop.wav"),
+                    (name: "theme", path: "sounds/music_loop.wav")],
+           music: (sound: "theme", volume: 0.5),
+           emitters: [(instance: "lamp", sound: "hum", volume: 0.3)]"#,
+    )?;
+    frames(&mut engine, 3, |_, _| {})?;
+    let played = engine.audio.played();
+    assert_eq!(played.len(), 2, "{played:?}");
+    let music = played.iter().find(|p| p.bus == Bus::Music).expect("music");
+    assert!(music.looped && music.position.is_none(), "{music:?}");
+    assert_eq!(engine.audio.volume(Bus::Music), 0.5);
+    let hum = played.iter().find(|p| p.bus == Bus::Effects).expect("hum");
+    assert!(hum.looped, "{hum:?}");
+    assert_eq!(hum.position, Some(Vec3::new(1.0, 3.0, 0.0)));
+    assert!((hum.volume - 0.3).abs() < 1e-6);
+    let peak = engine
+        .audio
+        .recorded_samples()
+        .expect("silent")
+        .iter()
+        .flatten()
+        .fold(0.0f32, |m, s| m.max(s.abs()));
+    assert!(peak > 0.01, "nothing audible: {peak}");
     drop(engine.shutdown());
     Ok(())
 }

@@ -24,6 +24,7 @@ use crate::extract::Extractor;
 use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
+use crate::audio::{Audio, PlayOptions, sync_emitters};
 use crate::sim::animation::{deform_skinned, tick_skinned};
 use crate::sim::physics::PhysicsWorld;
 use crate::sim::triggers::{Effect, LevelLogic};
@@ -75,6 +76,9 @@ pub struct Engine {
     /// The level's clips, trigger volumes, lasers and rules (empty until a level with a
     /// `gameplay` section is spawned), run after physics in every fixed step.
     pub logic: LevelLogic,
+    /// Sounds, music and spatial emitters; listener at the camera. Headless engines record
+    /// silently (`Audio::silent`); windowed ones open the sound device when there is one.
+    pub audio: Audio,
     extractor: Extractor,
     render: RenderThread,
     frame: u64,
@@ -87,7 +91,11 @@ pub struct Engine {
 impl Engine {
     /// Starts the render thread with `config`, headless.
     pub fn new(config: RenderConfig, environment: Environment) -> Result<Self, EngineError> {
-        Ok(Self::with_render(RenderThread::spawn(config)?, environment))
+        Ok(Self::with_render(
+            RenderThread::spawn(config)?,
+            environment,
+            Audio::silent(),
+        ))
     }
 
     /// Starts the render thread with `config`, presenting into `target`'s window (see
@@ -100,10 +108,11 @@ impl Engine {
         Ok(Self::with_render(
             RenderThread::spawn_windowed(config, target)?,
             environment,
+            Audio::new(),
         ))
     }
 
-    fn with_render(render: RenderThread, environment: Environment) -> Self {
+    fn with_render(render: RenderThread, environment: Environment, audio: Audio) -> Self {
         Self {
             world: World::new(),
             upkeep: Upkeep::new(),
@@ -112,6 +121,7 @@ impl Engine {
             clock: FixedClock::default(),
             physics: PhysicsWorld::new(),
             logic: LevelLogic::default(),
+            audio,
             extractor: Extractor::new(),
             render,
             frame: 0,
@@ -174,6 +184,7 @@ impl Engine {
                 self.clock.step_seconds,
             );
             self.carry_out(effects);
+            self.audio.tick(self.clock.step_seconds);
         }
         // Render between the last two physics steps (the clock's leftover fraction).
         self.physics
@@ -189,6 +200,7 @@ impl Engine {
         if let Some(camera) = extracted.camera {
             self.camera = camera;
         }
+        self.follow_with_audio();
         // Camera-relative rendering: keep render space's origin near the camera.
         self.upkeep
             .follow_camera(glam::Vec3::from(self.camera.position));
@@ -251,9 +263,41 @@ impl Engine {
                     let on = self.upkeep.light_group_on(group);
                     self.upkeep.set_light_group(group, !on);
                 }
-                Effect::Sound { .. } => {}
+                Effect::Sound { sound, at, volume } => {
+                    let Some(planned) = self.logic.sounds().get(sound) else {
+                        continue;
+                    };
+                    let at = at.and_then(|e| {
+                        crate::sim::triggers::world_from_model(&self.world, e)
+                            .map(|m| m.w_axis.truncate())
+                    });
+                    let options = PlayOptions {
+                        volume,
+                        looped: false,
+                        at,
+                    };
+                    if let Err(e) = self.audio.play(&planned.sound, options) {
+                        log::warn!("sound {:?}: {e}", planned.name);
+                    }
+                }
             }
         }
+    }
+
+    /// Puts the listener at the camera and moves spatial emitters with their entities.
+    fn follow_with_audio(&mut self) {
+        let c = &self.camera;
+        let position = glam::Vec3::from(c.position);
+        let forward = (glam::Vec3::from(c.look_at) - position).normalize_or_zero();
+        let right = forward.cross(glam::Vec3::from(c.up)).normalize_or_zero();
+        if forward != glam::Vec3::ZERO && right != glam::Vec3::ZERO {
+            // The listener looks along its local −Z with +Y up (right-handed).
+            let up = right.cross(forward);
+            let basis = glam::Mat3::from_cols(right, up, -forward);
+            self.audio
+                .set_listener(position, glam::Quat::from_mat3(&basis).normalize());
+        }
+        sync_emitters(&mut self.audio, &mut self.world);
     }
 
     /// Render results that are ready.

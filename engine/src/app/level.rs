@@ -1,7 +1,8 @@
 //! Putting a loaded level into the engine: models registered with the upkeep, one entity per
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
 //! physics components when the level gives it a body, level materials, the environment, and
-//! the level's gameplay (clips, volumes, lasers, rules; light groups that start off).
+//! the level's gameplay (clips, volumes, lasers, rules; light groups that start off; sound
+//! emitters on instances and the music).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -15,6 +16,7 @@ use super::waves::Waves;
 use crate::assets::SceneDesc;
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
 use crate::sim::physics::SensorContacts;
+use crate::audio::{Bus, SoundEmitter};
 use crate::sim::triggers::LevelLogic;
 
 /// What [`Engine::spawn_level`] created.
@@ -101,6 +103,24 @@ impl Engine {
             self.upkeep.set_light_group(group, false);
         }
         self.logic = LevelLogic::new(&desc.gameplay, &spawned.entities, &mut self.world);
+        let sounds = &desc.gameplay.sounds;
+        for emitter in &desc.gameplay.emitters {
+            if let (Some(&entity), Some(sound)) = (
+                spawned.entities.get(emitter.instance),
+                sounds.get(emitter.sound),
+            ) {
+                let looping = SoundEmitter::new(sound.sound.clone(), emitter.volume, true);
+                let _ = self.world.insert_one(entity, looping);
+            }
+        }
+        if let Some((sound, volume)) = desc.gameplay.music
+            && let Some(music) = sounds.get(sound)
+        {
+            self.audio.set_volume(Bus::Music, volume);
+            if let Err(e) = self.audio.play_music(&music.sound, true) {
+                log::warn!("{}: music {:?}: {e}", desc.source.display(), music.name);
+            }
+        }
         spawned
     }
 }

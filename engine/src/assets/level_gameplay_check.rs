@@ -2,8 +2,9 @@
 //! uses (instances, materials, sounds, clips, volumes, clip events, light groups) must exist,
 //! and the error names the level and the item that uses the unknown name.
 //!
-//! Owns: [`plan_gameplay`]. Sound files are resolved through the [`AssetRoot`] here; decoding
-//! them is the caller's (`level_load`). Must not: spawn entities or run rules.
+//! Owns: [`plan_gameplay`]. Sound files are resolved through the [`AssetRoot`] and decoded
+//! here (`audio::decode_sound`), so a sound that does not decode fails the level load.
+//! Must not: spawn entities or run rules.
 
 use std::collections::{HashMap, HashSet};
 use std::path::Path;
@@ -91,9 +92,12 @@ pub(super) fn plan_gameplay(
         let path = root
             .resolve(level_path, None, &s.path)
             .map_err(|e| error(format!("sound {:?}: {e}", s.name)))?;
+        let sound = crate::audio::decode_sound(&path)
+            .map_err(|e| error(format!("sound {:?}: {e}", s.name)))?;
         plan.sounds.push(PlannedSound {
             name: s.name.clone(),
             path,
+            sound,
         });
     }
     if let Some(music) = &g.music {

@@ -36,6 +36,7 @@ pub struct GameplayPlan {
 pub struct PlannedSound {
     pub name: String,
     pub path: PathBuf,
+    pub sound: crate::audio::Sound,
 }
 
 /// A looping sound on an instance.
