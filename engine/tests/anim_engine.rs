@@ -125,3 +125,44 @@ fn find_node(animated: &candela::sim::animation::AnimatedModel) -> usize {
         .position(|n| n.mesh.is_some())
         .unwrap_or(0)
 }
+
+/// A rigidly animated glTF node (AnimatedCube: rotation keys on its one node) turns its mesh
+/// through the same path: the committed vertices are the node's animated world matrix applied
+/// to the mesh, in the space the renderer places it with.
+#[test]
+fn rigid_gltf_node_animation_moves_the_mesh() -> anyhow::Result<()> {
+    let path = external("AnimatedCube/glTF/AnimatedCube.gltf");
+    let animated = Arc::new(load_animation_file(&path)?);
+    let model = load_model_file(&path)?;
+    let (mut animator, mut deformable) =
+        SkinnedAnimator::single(animated.clone(), &model).expect("one mesh node");
+    animator.player.play(Playback::new(0, PlayMode::Loop));
+    let mut world = hecs::World::new();
+    let rest = deformable.positions.clone();
+    deformable.positions.iter_mut().for_each(|p| *p *= 0.0);
+    let entity = world.spawn((animator, deformable));
+    for _ in 0..30 {
+        candela::sim::animation::tick_skinned(&mut world, 1.0 / 60.0);
+    }
+    assert_eq!(candela::sim::animation::deform_skinned(&mut world), 1);
+    let pose = animated.pose_at(0, 0.5);
+    let node = find_node(&animated);
+    let node_world = animated.world_matrices(&pose)[node];
+    let m = model.placements[0].model_from_mesh.inverse() * node_world;
+    let got = &world.get::<&Deformable>(entity)?.positions;
+    let size = rest
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f32::max);
+    for (g, r) in got.iter().zip(&rest) {
+        let e = m.transform_point3(*r);
+        assert!((*g - e).abs().max_element() <= 1e-5 * size, "{g} vs {e}");
+    }
+    assert!(
+        got.iter()
+            .zip(&rest)
+            .any(|(g, r)| (*g - *r).length() > 0.05 * size),
+        "half a second in, the cube has turned"
+    );
+    Ok(())
+}

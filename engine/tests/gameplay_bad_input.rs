@@ -181,7 +181,11 @@ fn gameplay_that_cannot_work_is_refused() {
 fn a_sound_that_fails_to_decode_is_named() {
     let d = dir("sound");
     std::fs::create_dir_all(d.0.join("sounds")).expect("dir");
-    std::fs::write(d.0.join("sounds/broken.wav"), b"RIFF\x10\0\0\0WAVEnot really").expect("write");
+    std::fs::write(
+        d.0.join("sounds/broken.wav"),
+        b"RIFF\x10\0\0\0WAVEnot really",
+    )
+    .expect("write");
     let m = refused(
         &d.0,
         "sound.ron",

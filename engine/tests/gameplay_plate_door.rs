@@ -122,12 +122,23 @@ fn run() -> anyhow::Result<Run> {
         .collect();
     let rate = f64::from(engine.audio.recorded_sample_rate_hz().expect("silent"));
     let samples = engine.audio.recorded_samples().expect("silent");
-    assert_eq!(engine.audio.recorded_start_frame(), 0, "4 s fit in the recording");
+    assert_eq!(
+        engine.audio.recorded_start_frame(),
+        0,
+        "4 s fit in the recording"
+    );
     let start = ((entered_step - 1) as f64 / 60.0 * rate) as usize;
     let peak = |range: &[[f32; 2]]| range.iter().flatten().fold(0.0f32, |m, s| m.max(s.abs()));
-    assert_eq!(peak(&samples[..start]), 0.0, "silence before the plate was pressed");
+    assert_eq!(
+        peak(&samples[..start]),
+        0.0,
+        "silence before the plate was pressed"
+    );
     let heard = peak(&samples[start..(start + rate as usize / 2).min(samples.len())]);
-    assert!(heard > 0.01, "the chime is not in the recording (peak {heard})");
+    assert!(
+        heard > 0.01,
+        "the chime is not in the recording (peak {heard})"
+    );
 
     let crate_now = *engine.world.get::<&Transform>(crate_)?;
     let hash = hash(
@@ -183,7 +194,10 @@ fn crate_on_plate_opens_door_switches_lights_plays_sound() -> anyhow::Result<()>
     assert_eq!(first.played.len(), 1, "{:?}", first.played);
     let (name, time, at) = &first.played[0];
     assert_eq!(name, "chime");
-    assert!((time - (first.entered_step - 1) as f64 / 60.0).abs() < 1e-9, "{time}");
+    assert!(
+        (time - (first.entered_step - 1) as f64 / 60.0).abs() < 1e-9,
+        "{time}"
+    );
     assert_eq!(*at, Some(Vec3::new(0.0, 0.02, 0.0)));
 
     let second = run()?;

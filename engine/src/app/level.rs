@@ -14,9 +14,9 @@ use hecs::Entity;
 use super::engine::{Engine, Environment};
 use super::waves::Waves;
 use crate::assets::SceneDesc;
+use crate::audio::{Bus, SoundEmitter};
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
 use crate::sim::physics::SensorContacts;
-use crate::audio::{Bus, SoundEmitter};
 use crate::sim::triggers::LevelLogic;
 
 /// What [`Engine::spawn_level`] created.

@@ -1,6 +1,8 @@
-//! Skinned and morphing glTF models on entities: a character whose clips play through an
-//! [`AnimationPlayer`] (with crossfades), deforming its mesh into the entity's
-//! [`Deformable`], which feeds the deforming-mesh BVH path (refit or rebuild per frame).
+//! Skinned, morphing and rigidly animated glTF models on entities: a character whose clips
+//! play through an [`AnimationPlayer`] (with crossfades), deforming its mesh into the entity's
+//! [`Deformable`], which feeds the deforming-mesh BVH path (refit or rebuild per frame). A
+//! rigid node's own motion is baked into the vertices too (the entity's `Transform` stays the
+//! game's), so a file with one animated mesh node plays whatever its clips animate.
 //!
 //! Owns: the [`SkinnedAnimator`] component, [`tick_skinned`] (advances every player, once per
 //! fixed step) and [`deform_skinned`] (deforms each entity whose player moved, once per frame,
@@ -109,8 +111,28 @@ pub fn deform_skinned(world: &mut World) -> usize {
         if deformed.positions.len() != deformable.positions.len() {
             continue;
         }
-        deformable.positions = deformed.positions;
-        deformable.normals = deformed.normals;
+        let rigid = model
+            .nodes
+            .nodes
+            .get(animator.node)
+            .is_some_and(|n| n.skin.is_none());
+        let (mut positions, mut normals) = (deformed.positions, deformed.normals);
+        if let (true, Some(node_world)) = (rigid, world_matrices.get(animator.node)) {
+            // A rigid node's motion: from its animated world matrix back into the mesh space
+            // the renderer places with `model_from_mesh` (the node's rest matrix).
+            let m = animator.model_from_mesh.inverse() * *node_world;
+            let n = glam::Mat3::from_mat4(m).inverse().transpose();
+            positions
+                .iter_mut()
+                .for_each(|p| *p = m.transform_point3(*p));
+            if let Some(normals) = &mut normals {
+                normals
+                    .iter_mut()
+                    .for_each(|v| *v = (n * *v).normalize_or_zero());
+            }
+        }
+        deformable.positions = positions;
+        deformable.normals = normals;
         deformable.dirty = true;
         count += 1;
     }
