@@ -6,6 +6,7 @@
 //! * switches light group 2 on: the render thread's own light distribution grows from the
 //!   hall lamp's 12 emissive triangles to 24, in the frame after the crate landed;
 //! * plays the chime at the plate, recorded by the silent audio backend.
+//!
 //! The same run twice gives the same state hash (deterministic triggers).
 
 use std::path::PathBuf;
