@@ -27,12 +27,15 @@ impl Drop for Scratch {
 const HEAD: &str = r#"
     materials: [(name: "grey", kind: Diffuse), (name: "mirror", kind: Conductor),
                 (name: "matte", kind: Diffuse, base_color: (0.2, 0.2, 0.2)),
-                (name: "lamp", kind: Diffuse, emission: (5, 5, 5))],
+                (name: "lamp", kind: Diffuse, emission: (5, 5, 5)),
+                (name: "glass", kind: Dielectric, ior: 1.5)],
     boxes: [(name: "floor", size: (12, 0.2, 12), material: "grey"),
             (name: "plate", size: (1, 0.04, 1), material: "grey"),
             (name: "crate", size: (0.5, 0.5, 0.5), material: "grey"),
             (name: "pane", size: (0.05, 1, 1), material: "mirror"),
-            (name: "lamp", size: (0.5, 0.05, 0.5), material: "lamp")],
+            (name: "lamp", size: (0.5, 0.05, 0.5), material: "lamp"),
+            (name: "slab", size: (0.5, 1, 1), material: "glass"),
+            (name: "wall", size: (0.1, 2, 4), material: "grey")],
     camera: (position: (0, 3, 8), look_at: (0, 0, 0), vertical_fov_deg: 50),
 "#;
 
@@ -260,6 +263,42 @@ fn emitters_and_music_start_with_the_level() -> anyhow::Result<()> {
         .flatten()
         .fold(0.0f32, |m, s| m.max(s.abs()));
     assert!(peak > 0.01, "nothing audible: {peak}");
+    drop(engine.shutdown());
+    Ok(())
+}
+
+#[test]
+fn laser_through_a_glass_slab_comes_out_parallel_and_shifted() -> anyhow::Result<()> {
+    // A 0.5 m slab of glass (n = 1.5) yawed 30°: the beam refracts in, out again parallel to
+    // where it came from, shifted sideways by t·sin(θ − θt)/cos θt with sin θt = sin θ / n.
+    let (mut engine, spawned, _dir) = engine(
+        "glass",
+        r#"(model: "crate", name: "emitter", transform: (translation: (-2, 1, 0))),
+           (model: "slab", transform: (translation: (0, 1, 0), rotation_deg: (0, 30, 0))),
+           (model: "wall", name: "wall", transform: (translation: (3, 1, 0)))"#,
+        r#"lasers: [(instance: "emitter", origin: (0.3, 0, 0), direction: (1, 0, 0))]"#,
+    )?;
+    frames(&mut engine, 3, |_, _| {})?;
+    let emitter = spawned.by_name["emitter"];
+    let path: LaserPath = (*engine.world.get::<&LaserPath>(emitter)?).clone();
+    assert_eq!(
+        path.points.len(),
+        4,
+        "start, into the glass, out of it, the wall: {path:?}"
+    );
+    assert_eq!(path.stopped_at, Some(spawned.by_name["wall"]));
+    let out = (path.points[3] - path.points[2]).normalize();
+    assert!((out - Vec3::X).length() < 1e-4, "leaves parallel: {out}");
+    let theta = 30f32.to_radians();
+    let theta_t = (theta.sin() / 1.5).asin();
+    let shift = 0.5 * (theta - theta_t).sin() / theta_t.cos();
+    let measured = path.points[3].z.abs();
+    // The beam restarts 1e-4·(1 + |p|) ≈ 2e-4 m off each surface it turns at (`laser.rs`), so
+    // two turns may move it sideways by up to about 4e-4 m.
+    assert!(
+        (measured - shift).abs() < 4e-4,
+        "shifted {measured} m, expected {shift} m"
+    );
     drop(engine.shutdown());
     Ok(())
 }

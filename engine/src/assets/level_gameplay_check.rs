@@ -154,7 +154,11 @@ pub(super) fn plan_gameplay(
         let user = format!("laser {i}");
         let direction = Vec3::from(l.direction);
         let finite = Vec3::from(l.origin).is_finite() && direction.is_finite();
-        if !finite || direction.length_squared() == 0.0 || l.max_length.is_nan() || l.max_length <= 0.0 {
+        if !finite
+            || direction.length_squared() == 0.0
+            || l.max_length.is_nan()
+            || l.max_length <= 0.0
+        {
             return Err(error(format!(
                 "{user}: origin and direction must be finite, the direction non-zero and max_length positive"
             )));

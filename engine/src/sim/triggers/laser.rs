@@ -155,8 +155,8 @@ mod tests {
         let sin_t = t.x;
         assert!((sin_i - 1.5 * sin_t).abs() < 1e-5, "{t}");
         assert!(t.y < 0.0);
-        // Back out: the same angle as it came in.
-        let out = refract(t, n, 1.5);
+        // Out through the parallel far face (outward normal −Y): the direction it came in with.
+        let out = refract(t, -n, 1.5);
         assert!((out - d).length() < 1e-5, "{out}");
     }
 
