@@ -10,8 +10,7 @@ use std::sync::Arc;
 use candela::app::{Engine, Environment};
 use candela::assets::{CameraDesc, RenderSettings, SkyDesc, load_model_file};
 use candela::ecs::{Deformable, Renderable, Transform};
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 use candela::sim::animation::{
     PlayMode, Playback, SkinnedAnimator, deform_mesh, load_animation_file,
 };
@@ -29,15 +28,7 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
     let path = external("CesiumMan/glTF-Binary/CesiumMan.glb");
     let animated = Arc::new(load_animation_file(&path)?);
     let model = load_model_file(&path)?;
-    let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 8,
-        height: 8,
-        spp: 1,
-        seed: 1,
-        converge: ConvergePolicy::default(),
-        scaling: None,
-    };
+    let config = RenderConfig::cpu(8, 8);
     let environment = Environment {
         sun: None,
         sky: SkyDesc::Constant([0.5; 3]),

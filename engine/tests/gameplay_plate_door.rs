@@ -14,8 +14,7 @@ use std::path::PathBuf;
 use candela::app::Engine;
 use candela::assets::{AssetRoot, load_level};
 use candela::ecs::Transform;
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 use candela::sim::triggers::{OccupantKind, Outcome, Phase};
 use glam::Vec3;
 
@@ -49,13 +48,8 @@ fn run() -> anyhow::Result<Run> {
     let path = assets().join("test_scenes/gameplay/plate_door.ron");
     let scene = load_level(&path, &root)?;
     let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 24,
-        height: 16,
-        spp: 1,
         seed: 5,
-        converge: ConvergePolicy::default(),
-        scaling: None,
+        ..RenderConfig::cpu(24, 16)
     };
     let mut engine = Engine::new(config, candela::app::Environment::of(&scene))?;
     let spawned = engine.spawn_level(&scene);

@@ -10,8 +10,7 @@ use candela::app::{Engine, SpawnedLevel};
 use candela::assets::{AssetRoot, load_level};
 use candela::audio::Bus;
 use candela::ecs::Transform;
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 use candela::sim::physics::{CharacterController, CharacterInput, character_bundle};
 use candela::sim::triggers::{LaserPath, OccupantKind, Outcome, Phase, VolumeEvent};
 use glam::Vec3;
@@ -63,15 +62,7 @@ fn engine(
         std::fs::copy(sounds.join(name), dir.join("sounds").join(name))?;
     }
     let scene = load_level(&path, &AssetRoot::new(&dir)?)?;
-    let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 16,
-        height: 8,
-        spp: 1,
-        seed: 1,
-        converge: ConvergePolicy::default(),
-        scaling: None,
-    };
+    let config = RenderConfig::cpu(16, 8);
     let mut engine = Engine::new(config, candela::app::Environment::of(&scene))?;
     let spawned = engine.spawn_level(&scene);
     Ok((engine, spawned, scratch))

@@ -45,6 +45,22 @@ pub struct RenderConfig {
     pub scaling: Option<ScalingTarget>,
 }
 
+impl RenderConfig {
+    /// The CPU tracer at `width` × `height`, 1 sample per pixel per frame, seed 1, default
+    /// converging, no scaling: small headless engines (tests, tools).
+    pub fn cpu(width: u32, height: u32) -> Self {
+        Self {
+            tracer: TracerChoice::Cpu,
+            width,
+            height,
+            spp: 1,
+            seed: 1,
+            converge: ConvergePolicy::default(),
+            scaling: None,
+        }
+    }
+}
+
 /// What the render thread did with one commit.
 #[derive(Clone, Debug)]
 pub struct Rendered {
