@@ -1,131 +1,165 @@
-//! `bench chart`: error against time for every estimator the engine offers, on the reference
-//! scenes, for both tracers; CSV, PNG charts and the generated part of `docs/ACCURACY.md`.
+//! `bench chart`: error against time for the engine's estimators, bounce caps and BVH builds,
+//! on the reference scenes and the repo's test scenes, for both tracers; CSV, PNG charts and
+//! the generated part of `docs/ACCURACY.md`.
 //!
-//! For each scene × tracer × method, one render accumulates at doubling sample counts
-//! (1, 2, 4, … spp, an exact running mean), and after each stage records the wall time so far,
-//! the rays traced, and the error against the Mitsuba reference: relative MSE (per pixel and
-//! channel (ours − ref)² / (ref² + 0.01), minus the reference's own variance), RMSE, and the mean
-//! bias per channel (image mean minus reference mean). Methods: BSDF sampling only; NEE without
-//! MIS; NEE + MIS with lights picked uniformly or by power (the default); the default with at
-//! most 1, 2 or 4 bounces (biased against the 7-bounce reference: the bias shows as a plateau);
-//! and two roulette settings. The CPU tracer renders at 256×256, the GPU tracer (lavapipe here)
-//! at 64×64 against the reference box-averaged to that size.
+//! For each scene × tracer × curve (`chart_methods.rs`), one render accumulates at doubling
+//! sample counts (1, 2, 4, … spp, an exact running mean), and after each stage records the wall
+//! time so far, the rays traced, and the error against the scene's reference
+//! (`chart_reference.rs`: relative MSE, RMSE, mean bias). References: Mitsuba 3 for the two
+//! external scenes, the engine's own converged CPU image for the test scenes
+//! (`chart_self_ref.rs`). Curves with equal effective settings are measured once.
+//!
+//! Owns: the command line, the plan it implies, and the measuring loop with its progress bar.
+//! Must not: write files other than the self-reference cache (`report.rs` does).
 
+use std::collections::HashMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use candela::assets::{AssetRoot, load_level};
-use candela::layout::{METHOD_DEFAULT, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE};
-use candela::render::film::read_exr;
+use candela::assets::SceneDesc;
 use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
 use clap::Args;
-use glam::Vec3;
+
+use super::chart_methods::{Config, Layout, METHODS, Method, Panel};
+use super::chart_reference::{Reference, errors};
+use super::chart_scenes::{RefKind, SceneSpec, build_layouts, full_writes, select};
+use super::chart_self_ref::{RefSettings, ensure};
+
+/// Seed of every curve's renders (self-references use another, see `chart_self_ref.rs`).
+const CURVE_SEED: u32 = 7;
 
 #[derive(Args, Debug)]
 pub struct ChartArgs {
     /// `shared/external`.
     #[arg(long, default_value = "../shared/external")]
     pub external: PathBuf,
-    /// Highest sample count of the CPU curves (a power of two).
-    #[arg(long, default_value_t = 256)]
-    pub cpu_spp: u32,
-    /// Highest sample count of the GPU curves.
-    #[arg(long, default_value_t = 64)]
-    pub gpu_spp: u32,
+    /// Highest sample count of the CPU curves (a power of two) [default: 256; --quick 16].
+    #[arg(long)]
+    pub cpu_spp: Option<u32>,
+    /// Highest sample count of the GPU curves [default: 64; --quick 4].
+    #[arg(long)]
+    pub gpu_spp: Option<u32>,
+    /// Samples per pixel of the test scenes' self-references [default: 4096; --quick 256].
+    #[arg(long)]
+    pub ref_spp: Option<u32>,
     /// Skip the GPU tracer.
     #[arg(long)]
     pub no_gpu: bool,
-    /// Where the CSV and charts go.
-    #[arg(long, default_value = "docs/charts")]
+    /// A fast smoke run for iterating: low sample counts; writes under target/bench-chart/.
+    #[arg(long)]
+    pub quick: bool,
+    /// Only these scenes (comma-separated): cornell_box, cornell_mirror_glass,
+    /// candela_cornell, script_small.
+    #[arg(long, value_delimiter = ',')]
+    pub scenes: Vec<String>,
+    /// Only these panels (comma-separated): estimators, bounces, layouts.
+    #[arg(long, value_delimiter = ',')]
+    pub panels: Vec<String>,
+    /// Where self-references are cached.
+    #[arg(long, default_value = "target/bench-refs")]
+    pub refs: PathBuf,
+    /// Render self-references again even when cached (after a change to the integrators).
+    #[arg(long)]
+    pub refresh_refs: bool,
+    /// Where the CSV and charts go [default: docs/charts; target/bench-chart for partial runs].
+    #[arg(long)]
+    pub out: Option<PathBuf>,
+    /// The document whose generated section is rewritten [default: docs/ACCURACY.md;
+    /// target/bench-chart/ACCURACY.md for partial runs].
+    #[arg(long)]
+    pub doc: Option<PathBuf>,
+}
+
+/// What a `bench chart` command will do.
+#[derive(Debug)]
+pub struct Plan {
+    pub scenes: Vec<&'static SceneSpec>,
+    pub panels: Vec<Panel>,
+    pub tracers: Vec<&'static str>,
+    pub cpu_spp: u32,
+    pub gpu_spp: u32,
+    pub ref_spp: u32,
     pub out: PathBuf,
-    /// The document whose generated section is rewritten.
-    #[arg(long, default_value = "docs/ACCURACY.md")]
     pub doc: PathBuf,
+    /// Every scene and panel at the default sample counts: the run `docs/` is made from.
+    pub full: bool,
 }
 
-/// One estimator configuration.
-#[derive(Clone, Copy, Debug)]
-pub struct Method {
-    pub name: &'static str,
-    pub method: u32,
-    /// `None`: the level's max bounces.
-    pub max_bounces: Option<u32>,
-    pub roulette_start: Option<u32>,
-    pub roulette_scale: f32,
+impl ChartArgs {
+    /// The plan: defaults filled in; a partial or quick run writes under `target/bench-chart/`
+    /// unless `--out` / `--doc` say otherwise, so it never overwrites the published charts.
+    pub fn plan(&self) -> anyhow::Result<Plan> {
+        let scenes = select(&self.scenes)?;
+        let mut panels = Vec::new();
+        for p in Panel::ALL {
+            if self.panels.is_empty() || self.panels.iter().any(|n| n == p.key()) {
+                panels.push(p);
+            }
+        }
+        for n in &self.panels {
+            if !Panel::ALL.iter().any(|p| p.key() == n) {
+                anyhow::bail!("unknown panel {n:?}; known: estimators, bounces, layouts");
+            }
+        }
+        let pick = |given: Option<u32>, full: u32, quick: u32| {
+            given.unwrap_or(if self.quick { quick } else { full })
+        };
+        let (cpu_spp, gpu_spp, ref_spp) = (
+            pick(self.cpu_spp, 256, 16),
+            pick(self.gpu_spp, 64, 4),
+            pick(self.ref_spp, 4096, 256),
+        );
+        if cpu_spp == 0 || gpu_spp == 0 || ref_spp == 0 {
+            anyhow::bail!("sample counts must be at least 1");
+        }
+        let full = !self.quick
+            && self.scenes.is_empty()
+            && self.panels.is_empty()
+            && !self.no_gpu
+            && (cpu_spp, gpu_spp, ref_spp) == (256, 64, 4096);
+        let scratch = PathBuf::from("target/bench-chart");
+        let out = self.out.clone().unwrap_or_else(|| {
+            if full {
+                PathBuf::from("docs/charts")
+            } else {
+                scratch.clone()
+            }
+        });
+        let doc = self.doc.clone().unwrap_or_else(|| {
+            if full {
+                PathBuf::from("docs/ACCURACY.md")
+            } else {
+                scratch.join("ACCURACY.md")
+            }
+        });
+        let tracers = if self.no_gpu {
+            vec!["cpu"]
+        } else {
+            vec!["cpu", "gpu"]
+        };
+        Ok(Plan {
+            scenes,
+            panels,
+            tracers,
+            cpu_spp,
+            gpu_spp,
+            ref_spp,
+            out,
+            doc,
+            full,
+        })
+    }
 }
-
-pub const METHODS: &[Method] = &[
-    Method {
-        name: "BSDF sampling only",
-        method: 0,
-        max_bounces: None,
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "NEE, no MIS",
-        method: METHOD_NEE,
-        max_bounces: None,
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "NEE+MIS, uniform lights",
-        method: METHOD_NEE | METHOD_MIS,
-        max_bounces: None,
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "NEE+MIS, lights by power (default)",
-        method: METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER,
-        max_bounces: None,
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "default, 1 bounce",
-        method: METHOD_DEFAULT,
-        max_bounces: Some(1),
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "default, 2 bounces",
-        method: METHOD_DEFAULT,
-        max_bounces: Some(2),
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "default, 4 bounces",
-        method: METHOD_DEFAULT,
-        max_bounces: Some(4),
-        roulette_start: None,
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "default, roulette from bounce 1",
-        method: METHOD_DEFAULT,
-        max_bounces: None,
-        roulette_start: Some(1),
-        roulette_scale: 1.0,
-    },
-    Method {
-        name: "default, roulette scale 0.5",
-        method: METHOD_DEFAULT,
-        max_bounces: None,
-        roulette_start: None,
-        roulette_scale: 0.5,
-    },
-];
 
 /// One measured point.
 #[derive(Clone, Debug)]
 pub struct Point {
-    pub scene: String,
-    pub tracer: String,
+    pub scene: &'static str,
+    pub reference: RefKind,
+    pub tracer: &'static str,
     pub method: &'static str,
+    /// The curve this one's numbers were measured as, when its settings are the same.
+    pub same_as: Option<&'static str>,
     pub spp: u32,
     pub seconds: f64,
     pub rays: u64,
@@ -134,173 +168,245 @@ pub struct Point {
     pub bias: [f64; 3],
     /// Standard error of the reference's image mean per channel (the bias floor we can see).
     pub bias_floor: [f64; 3],
+    /// The reference's image mean per channel (for relative bias).
+    pub ref_mean: [f64; 3],
 }
 
-/// The reference of a scene at `size × size` (box-averaged): mean and variance per pixel.
-pub struct Reference {
-    pub mean: Vec<Vec3>,
-    pub var: Vec<[f64; 3]>,
+/// What a run produced besides its points: how each self-reference was made.
+#[derive(Clone, Debug, Default)]
+pub struct Outcome {
+    pub points: Vec<Point>,
+    /// (scene, folder, rendered in this run) per self-reference.
+    pub self_refs: Vec<(&'static str, PathBuf, bool)>,
+    /// Wall time of the whole measurement, seconds.
+    pub seconds: f64,
 }
 
-pub fn reference(external: &std::path::Path, scene: &str, size: u32) -> anyhow::Result<Reference> {
-    let dir = external.join("reference").join(scene);
-    let (w, _, mean) = read_exr(&dir.join("reference.exr"))?;
-    let (_, _, se) = read_exr(&dir.join("reference_stderr.exr"))?;
-    let f = (w / size) as usize;
-    let n = (f * f) as f64;
-    let mut out = Reference {
-        mean: Vec::new(),
-        var: Vec::new(),
-    };
-    for y in 0..size as usize {
-        for x in 0..size as usize {
-            let mut m = Vec3::ZERO;
-            let mut v = [0.0f64; 3];
-            for dy in 0..f {
-                for dx in 0..f {
-                    let i = (y * f + dy) * w as usize + x * f + dx;
-                    m += mean[i];
-                    for c in 0..3 {
-                        v[c] += (se[i][c] as f64).powi(2);
-                    }
-                }
-            }
-            out.mean.push(m / n as f32);
-            out.var.push(v.map(|v| v / (n * n)));
-        }
-    }
-    Ok(out)
-}
-
-/// Relative MSE, RMSE and per-channel bias of `image` against `r`.
-pub fn errors(image: &[Vec3], r: &Reference) -> (f64, f64, [f64; 3], [f64; 3]) {
-    let n = image.len() as f64;
-    let (mut rel, mut sq) = (0.0, 0.0);
-    let mut bias = [0.0f64; 3];
-    let mut floor = [0.0f64; 3];
-    for ((a, b), v) in image.iter().zip(&r.mean).zip(&r.var) {
-        for c in 0..3 {
-            let d = (a[c] - b[c]) as f64;
-            rel += (d * d - v[c]) / ((b[c] as f64).powi(2) + 0.01);
-            sq += d * d;
-            bias[c] += d;
-            floor[c] += v[c];
-        }
-    }
-    (
-        rel / (3.0 * n),
-        (sq / (3.0 * n)).sqrt(),
-        bias.map(|b| b / n),
-        floor.map(|f| f.sqrt() / n),
-    )
-}
-
+/// Renders one curve at doubling sample counts up to `max_spp`.
 fn run_curve(
     tracer: &mut dyn Tracer,
     scene: &RenderScene,
-    desc: &candela::assets::SceneDesc,
-    size: u32,
-    max_spp: u32,
+    desc: &SceneDesc,
+    (size, max_spp): (u32, u32),
     method: &Method,
     r: &Reference,
-    labels: (&str, &str),
+    labels: (&'static SceneSpec, &'static str),
 ) -> anyhow::Result<Vec<Point>> {
-    let mut render = desc.render;
-    if let Some(b) = method.max_bounces {
-        render.max_bounces = b;
-    }
-    if let Some(s) = method.roulette_start {
-        render.roulette_start = s;
-    }
+    let config = method.config(&desc.render);
     tracer.clear();
     let mut points = Vec::new();
     let (mut done, mut seconds, mut rays) = (0u32, 0.0f64, 0u64);
     let mut stage = 1;
     while stage <= max_spp {
         let batch = stage - done;
-        let mut s = FrameSettings::new(size, size, batch, 7, &render).continuing(done);
+        let mut s =
+            FrameSettings::new(size, size, batch, CURVE_SEED, &desc.render).continuing(done);
+        s.max_bounces = config.max_bounces;
+        s.roulette_start = config.roulette_start;
         s.method = method.method;
         s.roulette_scale = method.roulette_scale;
-        let u = frame_uniforms(&desc.camera, None, &desc.sky, &s, &scene.header());
+        let sun = desc.sun.as_ref();
+        let u = frame_uniforms(&desc.camera, sun, &desc.sky, &s, &scene.header());
         let started = Instant::now();
         let stats = tracer.render(scene, &u)?;
         seconds += started.elapsed().as_secs_f64();
         rays += stats.rays();
         done = stage;
-        let film = tracer.film()?;
-        let (rel_mse, rmse, bias, bias_floor) = errors(&film.mean, r);
+        let e = errors(&tracer.film()?.mean, r);
         points.push(Point {
-            scene: labels.0.into(),
-            tracer: labels.1.into(),
+            scene: labels.0.name,
+            reference: labels.0.reference,
+            tracer: labels.1,
             method: method.name,
+            same_as: None,
             spp: done,
             seconds,
             rays,
-            rel_mse,
-            rmse,
-            bias,
-            bias_floor,
+            rel_mse: e.rel_mse,
+            rmse: e.rmse,
+            bias: e.bias,
+            bias_floor: e.bias_floor,
+            ref_mean: r.image_mean,
         });
         stage *= 2;
     }
     Ok(points)
 }
 
-/// Runs every curve; a progress bar over curves.
-pub fn measure(args: &ChartArgs) -> anyhow::Result<Vec<Point>> {
-    let scenes = ["cornell_box", "cornell_mirror_glass"];
-    let tracers: Vec<&str> = if args.no_gpu {
-        vec!["cpu"]
-    } else {
-        vec!["cpu", "gpu"]
-    };
-    let total = (scenes.len() * tracers.len() * METHODS.len()) as u64;
-    let progress = indicatif::ProgressBar::new(total);
+/// The curves of `plan` on a level with `desc`'s settings, and how many distinct renders
+/// they need.
+fn curves(plan: &Plan, desc: &SceneDesc) -> (Vec<&'static Method>, usize) {
+    let methods: Vec<&Method> = METHODS.iter().filter(|m| m.in_any(&plan.panels)).collect();
+    let configs: std::collections::HashSet<Config> =
+        methods.iter().map(|m| m.config(&desc.render)).collect();
+    (methods, configs.len())
+}
+
+/// Runs every curve of `plan`, with a progress bar over curves.
+pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
+    let started = Instant::now();
+    let descs: Vec<SceneDesc> = plan
+        .scenes
+        .iter()
+        .map(|s| s.load(&args.external))
+        .collect::<anyhow::Result<_>>()?;
+    let total: usize = descs.iter().map(|d| curves(plan, d).1).sum::<usize>() * plan.tracers.len();
+    let progress = indicatif::ProgressBar::new(total as u64);
     progress.set_style(
         indicatif::ProgressStyle::with_template(
-            "{msg} [{bar:40}] {pos}/{len} curves, {elapsed} (eta {eta})",
+            "{msg}\n[{bar:40}] {pos}/{len} curves, {elapsed} (eta {eta})",
         )
         .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
-    let mut points = Vec::new();
-    for scene_name in scenes {
-        let dir = args.external.join("reference").join(scene_name);
-        let level = PathBuf::from(format!("assets/test_scenes/reference/{scene_name}.ron"));
-        let desc = load_level(&level, &AssetRoot::new(&dir)?)?;
-        let scene = RenderScene::build(&desc);
-        for &tracer_name in &tracers {
+    let mut outcome = Outcome::default();
+    let mut context = None;
+    for (spec, desc) in plan.scenes.iter().copied().zip(&descs) {
+        let (methods, _) = curves(plan, desc);
+        let layouts: Vec<Layout> = Layout::ALL
+            .into_iter()
+            .filter(|l| methods.iter().any(|m| m.layout == *l))
+            .collect();
+        let mut built = build_layouts(desc, &layouts);
+        let default_scene = match built.remove(&Layout::Default) {
+            Some(s) => s,
+            None => RenderScene::build(desc),
+        };
+        let ref_dir = match spec.mitsuba_dir(&args.external) {
+            Some(dir) => dir,
+            None => {
+                let settings = RefSettings {
+                    refs: &args.refs,
+                    spp: plan.ref_spp,
+                    refresh: args.refresh_refs,
+                };
+                let (dir, rendered) = ensure(
+                    settings,
+                    spec.name,
+                    desc,
+                    &default_scene,
+                    spec.cpu_size,
+                    &progress,
+                )?;
+                outcome.self_refs.push((spec.name, dir.clone(), rendered));
+                dir
+            }
+        };
+        for &tracer_name in &plan.tracers {
             let (size, max_spp) = if tracer_name == "gpu" {
-                (64, args.gpu_spp)
+                (spec.gpu_size, plan.gpu_spp)
             } else {
-                (256, args.cpu_spp)
+                (spec.cpu_size, plan.cpu_spp)
             };
-            let r = reference(&args.external, scene_name, size)?;
+            let r = Reference::load(&ref_dir, size)?;
             let mut tracer: Box<dyn Tracer> = if tracer_name == "gpu" {
-                let context = candela::render::gpu::GpuContext::headless()?;
-                Box::new(candela::render::gpu::GpuTracer::new(context, &scene)?)
+                let context = match &context {
+                    Some(c) => std::sync::Arc::clone(c),
+                    None => context
+                        .insert(candela::render::gpu::GpuContext::headless()?)
+                        .clone(),
+                };
+                Box::new(candela::render::gpu::GpuTracer::new(
+                    context,
+                    &default_scene,
+                )?)
             } else {
                 Box::new(candela::render::cpu::CpuTracer::new())
             };
-            // Warm-up (the GPU compiles its shader on the first dispatch).
-            let warm = FrameSettings::new(size, size, 1, 99, &desc.render);
-            let u = frame_uniforms(&desc.camera, None, &desc.sky, &warm, &scene.header());
-            tracer.render(&scene, &u)?;
-            for method in METHODS {
-                progress.set_message(format!("{scene_name} {tracer_name} {}", method.name));
-                points.extend(run_curve(
-                    tracer.as_mut(),
-                    &scene,
-                    &desc,
-                    size,
-                    max_spp,
-                    method,
-                    &r,
-                    (scene_name, tracer_name),
-                )?);
-                progress.inc(1);
+            let mut measured: HashMap<Config, Vec<Point>> = HashMap::new();
+            for layout in &layouts {
+                let scene = built.get(layout).unwrap_or(&default_scene);
+                // The GPU tracer holds its own copy of the buffers: replace them all.
+                tracer.update(scene, &full_writes(scene))?;
+                // Warm-up (the GPU compiles its shader on the first dispatch).
+                let warm = FrameSettings::new(size, size, 1, 99, &desc.render);
+                let sun = desc.sun.as_ref();
+                let u = frame_uniforms(&desc.camera, sun, &desc.sky, &warm, &scene.header());
+                tracer.render(scene, &u)?;
+                for method in methods.iter().filter(|m| m.layout == *layout) {
+                    let config = method.config(&desc.render);
+                    if let Some(first) = measured.get(&config) {
+                        outcome.points.extend(first.iter().map(|p| Point {
+                            method: method.name,
+                            same_as: Some(p.method),
+                            ..p.clone()
+                        }));
+                        continue;
+                    }
+                    progress.set_message(format!("{} {tracer_name}: {}", spec.name, method.name));
+                    let points = run_curve(
+                        tracer.as_mut(),
+                        scene,
+                        desc,
+                        (size, max_spp),
+                        method,
+                        &r,
+                        (spec, tracer_name),
+                    )?;
+                    outcome.points.extend(points.iter().cloned());
+                    measured.insert(config, points);
+                    progress.inc(1);
+                }
             }
         }
     }
     progress.finish_and_clear();
-    Ok(points)
+    outcome.seconds = started.elapsed().as_secs_f64();
+    Ok(outcome)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        chart: ChartArgs,
+    }
+
+    fn plan(args: &[&str]) -> anyhow::Result<Plan> {
+        let cli = Cli::try_parse_from(std::iter::once("chart").chain(args.iter().copied()))?;
+        cli.chart.plan()
+    }
+
+    #[test]
+    fn the_default_run_is_the_full_one_and_writes_docs() -> anyhow::Result<()> {
+        let p = plan(&[])?;
+        assert!(p.full);
+        assert_eq!((p.cpu_spp, p.gpu_spp, p.ref_spp), (256, 64, 4096));
+        assert_eq!(p.out, PathBuf::from("docs/charts"));
+        assert_eq!(p.doc, PathBuf::from("docs/ACCURACY.md"));
+        assert_eq!(p.panels, Panel::ALL);
+        assert_eq!(p.tracers, ["cpu", "gpu"]);
+        Ok(())
+    }
+
+    #[test]
+    fn partial_runs_write_to_scratch_unless_told() -> anyhow::Result<()> {
+        let p = plan(&["--quick"])?;
+        assert!(!p.full);
+        assert_eq!((p.cpu_spp, p.gpu_spp), (16, 4));
+        assert_eq!(p.doc, PathBuf::from("target/bench-chart/ACCURACY.md"));
+        let p = plan(&[
+            "--scenes",
+            "script_small,cornell_box",
+            "--panels",
+            "bounces",
+        ])?;
+        assert!(!p.full);
+        let names: Vec<&str> = p.scenes.iter().map(|s| s.name).collect();
+        assert_eq!(names, ["cornell_box", "script_small"]);
+        assert_eq!(p.panels, [Panel::Bounces]);
+        assert_eq!(p.out, PathBuf::from("target/bench-chart"));
+        let p = plan(&["--quick", "--out", "x", "--cpu-spp", "8", "--no-gpu"])?;
+        assert_eq!(
+            (p.out, p.cpu_spp, p.tracers),
+            (PathBuf::from("x"), 8, vec!["cpu"])
+        );
+        assert!(plan(&["--panels", "colours"]).is_err());
+        assert!(plan(&["--scenes", "nowhere"]).is_err());
+        assert!(plan(&["--gpu-spp", "0"]).is_err());
+        Ok(())
+    }
 }
