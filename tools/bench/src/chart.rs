@@ -4,7 +4,8 @@
 //!
 //! For each scene × tracer × curve (`chart_methods.rs`), one render accumulates at doubling
 //! sample counts (1, 2, 4, … spp, an exact running mean), and after each stage records the wall
-//! time so far, the rays traced, and the error against the scene's reference
+//! time so far (the curves of a scene and tracer advance together, stage by stage), the rays
+//! traced, and the error against the scene's reference
 //! (`chart_reference.rs`: relative MSE, RMSE, mean bias). References: Mitsuba 3 for the two
 //! external scenes, the engine's own converged CPU image for the test scenes
 //! (`chart_self_ref.rs`). Curves with equal effective settings are measured once.
@@ -12,7 +13,6 @@
 //! Owns: the command line, the plan it implies, and the measuring loop with its progress bar.
 //! Must not: write files other than the self-reference cache (`report.rs` does).
 
-use std::collections::HashMap;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -22,7 +22,7 @@ use clap::Args;
 
 use super::chart_methods::{Config, Layout, METHODS, Method, Panel};
 use super::chart_reference::{Reference, errors};
-use super::chart_scenes::{RefKind, SceneSpec, build_layouts, full_writes, select};
+use super::chart_scenes::{RefKind, SceneSpec, build_layouts, select};
 use super::chart_self_ref::{RefSettings, ensure};
 
 /// Seed of every curve's renders (self-references use another, see `chart_self_ref.rs`).
@@ -182,67 +182,97 @@ pub struct Outcome {
     pub seconds: f64,
 }
 
-/// Renders one curve at doubling sample counts up to `max_spp`.
-fn run_curve(
-    tracer: &mut dyn Tracer,
-    scene: &RenderScene,
-    desc: &SceneDesc,
-    (size, max_spp): (u32, u32),
-    method: &Method,
-    r: &Reference,
-    labels: (&'static SceneSpec, &'static str),
-) -> anyhow::Result<Vec<Point>> {
-    let config = method.config(&desc.render);
-    tracer.clear();
-    let mut points = Vec::new();
-    let (mut done, mut seconds, mut rays) = (0u32, 0.0f64, 0u64);
-    let mut stage = 1;
-    while stage <= max_spp {
-        let batch = stage - done;
-        let mut s =
-            FrameSettings::new(size, size, batch, CURVE_SEED, &desc.render).continuing(done);
-        s.max_bounces = config.max_bounces;
-        s.roulette_start = config.roulette_start;
-        s.method = method.method;
-        s.roulette_scale = method.roulette_scale;
+/// One curve under measurement: its own tracer (hence its own film) and running totals.
+struct Curve<'a> {
+    method: &'static Method,
+    config: Config,
+    tracer: Box<dyn Tracer>,
+    scene: &'a RenderScene,
+    done: u32,
+    seconds: f64,
+    rays: u64,
+    points: Vec<Point>,
+}
+
+/// What every curve of one scene × tracer shares.
+struct Setting<'a> {
+    spec: &'static SceneSpec,
+    tracer: &'static str,
+    desc: &'a SceneDesc,
+    size: u32,
+    reference: &'a Reference,
+}
+
+impl Curve<'_> {
+    /// Renders samples `done .. stage` into the curve's film and records a point.
+    fn advance(&mut self, stage: u32, at: &Setting<'_>) -> anyhow::Result<()> {
+        let desc = at.desc;
+        let mut s = FrameSettings::new(
+            at.size,
+            at.size,
+            stage - self.done,
+            CURVE_SEED,
+            &desc.render,
+        )
+        .continuing(self.done);
+        s.max_bounces = self.config.max_bounces;
+        s.roulette_start = self.config.roulette_start;
+        s.method = self.method.method;
+        s.roulette_scale = self.method.roulette_scale;
         let sun = desc.sun.as_ref();
-        let u = frame_uniforms(&desc.camera, sun, &desc.sky, &s, &scene.header());
+        let u = frame_uniforms(&desc.camera, sun, &desc.sky, &s, &self.scene.header());
         let started = Instant::now();
-        let stats = tracer.render(scene, &u)?;
-        seconds += started.elapsed().as_secs_f64();
-        rays += stats.rays();
-        done = stage;
-        let e = errors(&tracer.film()?.mean, r);
-        points.push(Point {
-            scene: labels.0.name,
-            reference: labels.0.reference,
-            tracer: labels.1,
-            method: method.name,
+        let stats = self.tracer.render(self.scene, &u)?;
+        self.seconds += started.elapsed().as_secs_f64();
+        self.rays += stats.rays();
+        self.done = stage;
+        let e = errors(&self.tracer.film()?.mean, at.reference);
+        self.points.push(Point {
+            scene: at.spec.name,
+            reference: at.spec.reference,
+            tracer: at.tracer,
+            method: self.method.name,
             same_as: None,
-            spp: done,
-            seconds,
-            rays,
+            spp: stage,
+            seconds: self.seconds,
+            rays: self.rays,
             rel_mse: e.rel_mse,
             rmse: e.rmse,
             bias: e.bias,
             bias_floor: e.bias_floor,
-            ref_mean: r.image_mean,
+            ref_mean: at.reference.image_mean,
         });
-        stage *= 2;
+        Ok(())
     }
-    Ok(points)
 }
 
-/// The curves of `plan` on a level with `desc`'s settings, and how many distinct renders
-/// they need.
-fn curves(plan: &Plan, desc: &SceneDesc) -> (Vec<&'static Method>, usize) {
+/// The sample counts of a curve: 1, 2, 4, … up to `max_spp`.
+pub fn stages(max_spp: u32) -> Vec<u32> {
+    std::iter::successors(Some(1u32), |s| s.checked_mul(2))
+        .take_while(|&s| s <= max_spp)
+        .collect()
+}
+
+/// The curves of `plan` on a level with `desc`'s settings, and the first curve of each
+/// distinct configuration (the ones to render).
+fn curves(plan: &Plan, desc: &SceneDesc) -> (Vec<&'static Method>, Vec<&'static Method>) {
     let methods: Vec<&Method> = METHODS.iter().filter(|m| m.in_any(&plan.panels)).collect();
-    let configs: std::collections::HashSet<Config> =
-        methods.iter().map(|m| m.config(&desc.render)).collect();
-    (methods, configs.len())
+    let mut distinct: Vec<&Method> = Vec::new();
+    for m in &methods {
+        if !distinct
+            .iter()
+            .any(|d| d.config(&desc.render) == m.config(&desc.render))
+        {
+            distinct.push(m);
+        }
+    }
+    (methods, distinct)
 }
 
-/// Runs every curve of `plan`, with a progress bar over curves.
+/// Runs every curve of `plan`, with a progress bar over renders. The curves of one scene and
+/// tracer advance together, stage by stage (each its own tracer and film), so that a busy
+/// spell of this shared machine slows all of them alike instead of one curve: their time
+/// ratios are what the charts compare.
 pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
     let started = Instant::now();
     let descs: Vec<SceneDesc> = plan
@@ -250,27 +280,42 @@ pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
         .iter()
         .map(|s| s.load(&args.external))
         .collect::<anyhow::Result<_>>()?;
-    let total: usize = descs.iter().map(|d| curves(plan, d).1).sum::<usize>() * plan.tracers.len();
+    let stages_per_curve: usize = plan
+        .tracers
+        .iter()
+        .map(|&t| {
+            stages(if t == "gpu" {
+                plan.gpu_spp
+            } else {
+                plan.cpu_spp
+            })
+            .len()
+        })
+        .sum();
+    let total: usize = descs
+        .iter()
+        .map(|d| curves(plan, d).1.len() * stages_per_curve)
+        .sum();
     let progress = indicatif::ProgressBar::new(total as u64);
     progress.set_style(
         indicatif::ProgressStyle::with_template(
-            "{msg}\n[{bar:40}] {pos}/{len} curves, {elapsed} (eta {eta})",
+            "{msg}\n[{bar:40}] {pos}/{len} renders, {elapsed} (eta {eta})",
         )
         .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     let mut outcome = Outcome::default();
     let mut context = None;
     for (spec, desc) in plan.scenes.iter().copied().zip(&descs) {
-        let (methods, _) = curves(plan, desc);
+        let (methods, distinct) = curves(plan, desc);
         let layouts: Vec<Layout> = Layout::ALL
             .into_iter()
-            .filter(|l| methods.iter().any(|m| m.layout == *l))
+            .filter(|l| distinct.iter().any(|m| m.layout == *l))
             .collect();
         let mut built = build_layouts(desc, &layouts);
-        let default_scene = match built.remove(&Layout::Default) {
-            Some(s) => s,
-            None => RenderScene::build(desc),
-        };
+        if !built.contains_key(&Layout::Default) {
+            built.insert(Layout::Default, RenderScene::build(desc));
+        }
+        let default_scene = &built[&Layout::Default];
         let ref_dir = match spec.mitsuba_dir(&args.external) {
             Some(dir) => dir,
             None => {
@@ -283,7 +328,7 @@ pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
                     settings,
                     spec.name,
                     desc,
-                    &default_scene,
+                    default_scene,
                     spec.cpu_size,
                     &progress,
                 )?;
@@ -297,55 +342,68 @@ pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
             } else {
                 (spec.cpu_size, plan.cpu_spp)
             };
-            let r = Reference::load(&ref_dir, size)?;
-            let mut tracer: Box<dyn Tracer> = if tracer_name == "gpu" {
-                let context = match &context {
-                    Some(c) => std::sync::Arc::clone(c),
-                    None => context
-                        .insert(candela::render::gpu::GpuContext::headless()?)
-                        .clone(),
-                };
-                Box::new(candela::render::gpu::GpuTracer::new(
-                    context,
-                    &default_scene,
-                )?)
-            } else {
-                Box::new(candela::render::cpu::CpuTracer::new())
+            let reference = Reference::load(&ref_dir, size)?;
+            let at = Setting {
+                spec,
+                tracer: tracer_name,
+                desc,
+                size,
+                reference: &reference,
             };
-            let mut measured: HashMap<Config, Vec<Point>> = HashMap::new();
-            for layout in &layouts {
-                let scene = built.get(layout).unwrap_or(&default_scene);
-                // The GPU tracer holds its own copy of the buffers: replace them all.
-                tracer.update(scene, &full_writes(scene))?;
+            progress.set_message(format!("{} {tracer_name}: setting up", spec.name));
+            let mut running = Vec::new();
+            for &method in &distinct {
+                let scene = built.get(&method.layout).unwrap_or(default_scene);
+                let mut tracer: Box<dyn Tracer> = if tracer_name == "gpu" {
+                    let context = match &context {
+                        Some(c) => std::sync::Arc::clone(c),
+                        None => context
+                            .insert(candela::render::gpu::GpuContext::headless()?)
+                            .clone(),
+                    };
+                    Box::new(candela::render::gpu::GpuTracer::new(context, scene)?)
+                } else {
+                    Box::new(candela::render::cpu::CpuTracer::new())
+                };
                 // Warm-up (the GPU compiles its shader on the first dispatch).
                 let warm = FrameSettings::new(size, size, 1, 99, &desc.render);
                 let sun = desc.sun.as_ref();
                 let u = frame_uniforms(&desc.camera, sun, &desc.sky, &warm, &scene.header());
                 tracer.render(scene, &u)?;
-                for method in methods.iter().filter(|m| m.layout == *layout) {
-                    let config = method.config(&desc.render);
-                    if let Some(first) = measured.get(&config) {
-                        outcome.points.extend(first.iter().map(|p| Point {
-                            method: method.name,
-                            same_as: Some(p.method),
-                            ..p.clone()
-                        }));
-                        continue;
-                    }
-                    progress.set_message(format!("{} {tracer_name}: {}", spec.name, method.name));
-                    let points = run_curve(
-                        tracer.as_mut(),
-                        scene,
-                        desc,
-                        (size, max_spp),
-                        method,
-                        &r,
-                        (spec, tracer_name),
-                    )?;
-                    outcome.points.extend(points.iter().cloned());
-                    measured.insert(config, points);
+                tracer.clear();
+                running.push(Curve {
+                    method,
+                    config: method.config(&desc.render),
+                    tracer,
+                    scene,
+                    done: 0,
+                    seconds: 0.0,
+                    rays: 0,
+                    points: Vec::new(),
+                });
+            }
+            for stage in stages(max_spp) {
+                progress.set_message(format!(
+                    "{} {tracer_name}: {} curves at {stage} spp",
+                    spec.name,
+                    running.len()
+                ));
+                for curve in &mut running {
+                    curve.advance(stage, &at)?;
                     progress.inc(1);
                 }
+            }
+            for method in &methods {
+                let config = method.config(&desc.render);
+                let Some(curve) = running.iter().find(|c| c.config == config) else {
+                    continue;
+                };
+                let same_as = (curve.method.name != method.name).then_some(curve.method.name);
+                outcome.points.extend(curve.points.iter().map(|p| Point {
+                    method: method.name,
+                    same_as,
+                    ..p.clone()
+                }));
             }
         }
     }
@@ -408,5 +466,13 @@ mod tests {
         assert!(plan(&["--scenes", "nowhere"]).is_err());
         assert!(plan(&["--gpu-spp", "0"]).is_err());
         Ok(())
+    }
+
+    #[test]
+    fn stages_double_up_to_the_limit() {
+        assert_eq!(stages(1), [1]);
+        assert_eq!(stages(64), [1, 2, 4, 8, 16, 32, 64]);
+        assert_eq!(stages(100).last(), Some(&64));
+        assert_eq!(stages(u32::MAX).len(), 32);
     }
 }

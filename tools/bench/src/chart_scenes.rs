@@ -1,16 +1,14 @@
 //! The scenes of `bench chart`: which levels, at which image sizes, against which reference.
 //!
 //! Owns: [`SCENES`] (two external reference scenes with Mitsuba 3 references, and test scenes
-//! of the repo measured against the engine's own converged image), loading a scene's level,
-//! building it once per BLAS build, and the writes that switch a tracer from one build to
-//! another. Must not: render, measure or draw.
+//! of the repo measured against the engine's own converged image), loading a scene's level and
+//! building it once per BLAS build. Must not: render, measure or draw.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use candela::assets::{AssetRoot, SceneDesc, load_level};
 use candela::render::RenderScene;
-use candela::render::scene_writes::SceneWrite;
 
 use super::chart_methods::Layout;
 
@@ -126,50 +124,6 @@ pub fn build_layouts(desc: &SceneDesc, layouts: &[Layout]) -> HashMap<Layout, Re
         .collect()
 }
 
-/// Writes that replace every buffer of a tracer's scene with `scene`'s: how the GPU tracer
-/// switches from one BLAS build of a scene to another without compiling its pipeline again
-/// (it grows buffers as needed; the header travels in the uniforms).
-pub fn full_writes(scene: &RenderScene) -> Vec<SceneWrite> {
-    vec![
-        SceneWrite::Nodes {
-            first: 0,
-            data: scene.nodes.to_vec(),
-        },
-        SceneWrite::Blocks {
-            first: 0,
-            data: scene.blocks.to_vec(),
-        },
-        SceneWrite::Instances {
-            first: 0,
-            data: scene.instances.clone(),
-        },
-        SceneWrite::Triangles {
-            first: 0,
-            data: scene.triangles.clone(),
-        },
-        SceneWrite::Vertices {
-            first: 0,
-            data: scene.vertices.clone(),
-        },
-        SceneWrite::Materials {
-            first: 0,
-            data: scene.materials.clone(),
-        },
-        SceneWrite::Textures {
-            first: 0,
-            data: scene.textures.clone(),
-        },
-        SceneWrite::Texels {
-            first: 0,
-            data: scene.texels.clone(),
-        },
-        SceneWrite::Lights {
-            first: 0,
-            data: scene.lights.lights.clone(),
-        },
-    ]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -195,7 +149,6 @@ mod tests {
                 let desc = load_level(&repo.join(spec.level), &root)?;
                 let scene = RenderScene::build(&desc);
                 assert!(!scene.triangles.is_empty(), "{}", spec.name);
-                assert_eq!(full_writes(&scene).len(), 9);
             }
         }
         Ok(())
