@@ -204,17 +204,13 @@ struct Setting<'a> {
 }
 
 impl Curve<'_> {
-    /// Renders samples `done .. stage` into the curve's film and records a point.
-    fn advance(&mut self, stage: u32, at: &Setting<'_>) -> anyhow::Result<()> {
+    /// Renders up to `chunk` more samples towards `stage` into the curve's film (timed);
+    /// returns whether the curve reached `stage`.
+    fn render_chunk(&mut self, stage: u32, chunk: u32, at: &Setting<'_>) -> anyhow::Result<bool> {
         let desc = at.desc;
-        let mut s = FrameSettings::new(
-            at.size,
-            at.size,
-            stage - self.done,
-            CURVE_SEED,
-            &desc.render,
-        )
-        .continuing(self.done);
+        let spp = chunk.min(stage - self.done);
+        let mut s = FrameSettings::new(at.size, at.size, spp, CURVE_SEED, &desc.render)
+            .continuing(self.done);
         s.max_bounces = self.config.max_bounces;
         s.roulette_start = self.config.roulette_start;
         s.method = self.method.method;
@@ -225,7 +221,12 @@ impl Curve<'_> {
         let stats = self.tracer.render(self.scene, &u)?;
         self.seconds += started.elapsed().as_secs_f64();
         self.rays += stats.rays();
-        self.done = stage;
+        self.done += spp;
+        Ok(self.done == stage)
+    }
+
+    /// Records a point at the samples rendered so far (not timed: reads the film back).
+    fn record(&mut self, at: &Setting<'_>) -> anyhow::Result<()> {
         let e = errors(&self.tracer.film()?.mean, at.reference);
         self.points.push(Point {
             scene: at.spec.name,
@@ -233,7 +234,7 @@ impl Curve<'_> {
             tracer: at.tracer,
             method: self.method.name,
             same_as: None,
-            spp: stage,
+            spp: self.done,
             seconds: self.seconds,
             rays: self.rays,
             rel_mse: e.rel_mse,
@@ -244,6 +245,12 @@ impl Curve<'_> {
         });
         Ok(())
     }
+}
+
+/// Most samples per pixel one render call of a curve traces: a sixteenth of its last stage's
+/// total, so that its time is spread over the run in short pieces between the other curves'.
+pub fn chunk_spp(max_spp: u32) -> u32 {
+    (max_spp / 16).max(1)
 }
 
 /// The sample counts of a curve: 1, 2, 4, … up to `max_spp`.
@@ -269,10 +276,11 @@ fn curves(plan: &Plan, desc: &SceneDesc) -> (Vec<&'static Method>, Vec<&'static 
     (methods, distinct)
 }
 
-/// Runs every curve of `plan`, with a progress bar over renders. The curves of one scene and
-/// tracer advance together, stage by stage (each its own tracer and film), so that a busy
-/// spell of this shared machine slows all of them alike instead of one curve: their time
-/// ratios are what the charts compare.
+/// Runs every curve of `plan`, with a progress bar over measured points. The curves of one
+/// scene and tracer advance together, stage by stage and within a stage in round-robin chunks
+/// of [`chunk_spp`] (each curve its own tracer and film), so that a busy spell of this shared
+/// machine slows all of them alike instead of one curve: their time ratios are what the
+/// charts compare.
 pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
     let started = Instant::now();
     let descs: Vec<SceneDesc> = plan
@@ -299,7 +307,7 @@ pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
     let progress = indicatif::ProgressBar::new(total as u64);
     progress.set_style(
         indicatif::ProgressStyle::with_template(
-            "{msg}\n[{bar:40}] {pos}/{len} renders, {elapsed} (eta {eta})",
+            "{msg}\n[{bar:40}] {pos}/{len} points, {elapsed} (eta {eta})",
         )
         .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
@@ -382,15 +390,27 @@ pub fn measure(args: &ChartArgs, plan: &Plan) -> anyhow::Result<Outcome> {
                     points: Vec::new(),
                 });
             }
+            let chunk = chunk_spp(max_spp);
             for stage in stages(max_spp) {
                 progress.set_message(format!(
                     "{} {tracer_name}: {} curves at {stage} spp",
                     spec.name,
                     running.len()
                 ));
-                for curve in &mut running {
-                    curve.advance(stage, &at)?;
-                    progress.inc(1);
+                // Round robin in chunks, so that no curve's time is one long stretch.
+                let mut open: Vec<usize> = (0..running.len()).collect();
+                while !open.is_empty() {
+                    let mut still = Vec::new();
+                    for i in open {
+                        let curve = &mut running[i];
+                        if curve.render_chunk(stage, chunk, &at)? {
+                            curve.record(&at)?;
+                            progress.inc(1);
+                        } else {
+                            still.push(i);
+                        }
+                    }
+                    open = still;
                 }
             }
             for method in &methods {
@@ -474,5 +494,6 @@ mod tests {
         assert_eq!(stages(64), [1, 2, 4, 8, 16, 32, 64]);
         assert_eq!(stages(100).last(), Some(&64));
         assert_eq!(stages(u32::MAX).len(), 32);
+        assert_eq!((chunk_spp(256), chunk_spp(64), chunk_spp(4)), (16, 4, 1));
     }
 }
