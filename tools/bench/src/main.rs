@@ -21,6 +21,7 @@
 mod build;
 mod chart;
 mod chart_methods;
+mod chart_plan;
 mod chart_reference;
 mod chart_scenes;
 mod chart_self_ref;
@@ -55,7 +56,7 @@ enum Command {
     Error(error::ErrorArgs),
     /// Error against time for every estimator, bounce cap and BVH build on the reference and
     /// test scenes: CSV, charts, and the generated section of docs/ACCURACY.md.
-    Chart(chart::ChartArgs),
+    Chart(chart_plan::ChartArgs),
     /// The frame pipeline on the demo level: upkeep, refit threshold, queries, overlap.
     Pipeline(pipeline::PipelineArgs),
     /// Error on a fast-moving object and its trail per converging policy.

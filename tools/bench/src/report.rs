@@ -8,8 +8,9 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::chart::{Outcome, Plan, Point};
+use super::chart::{Outcome, Point};
 use super::chart_methods::{DEFAULT_NAME, in_panel};
+use super::chart_plan::Plan;
 use super::chart_scenes::RefKind;
 use super::plot::{PanelData, figure};
 use super::report_reading::{bounces, estimators, layouts, time_to};
