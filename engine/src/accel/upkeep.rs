@@ -18,7 +18,7 @@ use std::collections::{HashMap, HashSet};
 use glam::{Mat4, Vec3};
 use rayon::prelude::*;
 
-use super::blas::{Blas, build_blas};
+use super::blas::{Blas, BlasParams, build_blas_with_params};
 use super::bounds::Aabb;
 use super::refit::{sah_cost, triangle_area_ratio};
 use super::tlas::build_tlas;
@@ -102,6 +102,9 @@ pub struct Upkeep {
     pub(super) stats: UpkeepStats,
     /// The far-from-origin warning was given (see `origin.rs`).
     pub(super) precision_warned: bool,
+    /// How every BLAS is built and rebuilt ([`BlasParams::default`] unless a measurement asks
+    /// for another layout, see [`Upkeep::with_blas_params`]).
+    pub(super) blas_params: BlasParams,
 }
 
 impl Default for Upkeep {
@@ -145,6 +148,17 @@ impl Upkeep {
             lights_dirty: true,
             stats: UpkeepStats::default(),
             precision_warned: false,
+            blas_params: BlasParams::default(),
+        }
+    }
+
+    /// An empty scene whose BLAS are built (and rebuilt after deformation) with `params`
+    /// instead of the default: a build preset or leaf size for measurements (`bench chart`
+    /// compares them). Traversal reads every variant the same way; only speed differs.
+    pub fn with_blas_params(params: BlasParams) -> Self {
+        Self {
+            blas_params: params,
+            ..Self::new()
         }
     }
 
@@ -212,10 +226,11 @@ impl Upkeep {
             first: material_base,
             data: materials,
         });
+        let params = self.blas_params;
         let built: Vec<Blas> = model
             .meshes
             .par_iter()
-            .map(|m| build_blas(&m.positions, &m.triangles))
+            .map(|m| build_blas_with_params(&m.positions, &m.triangles, params))
             .collect();
         let mut mesh_slots = Vec::new();
         for (mesh, blas) in model.meshes.iter().zip(built) {

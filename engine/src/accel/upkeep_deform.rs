@@ -7,7 +7,7 @@
 
 use glam::Vec3;
 
-use super::blas::build_blas;
+use super::blas::build_blas_with_params;
 use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 use super::upkeep::{REBUILD_RATIO, Upkeep};
 use crate::ecs::ModelHandle;
@@ -54,7 +54,7 @@ impl Upkeep {
         let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
         let area = triangle_area_ratio(&slot.blas);
         if cost > rebuild_bound(REBUILD_RATIO, slot.built_cost, slot.built_area, area) {
-            slot.blas = build_blas(positions, &slot.triangles);
+            slot.blas = build_blas_with_params(positions, &slot.triangles, self.blas_params);
             slot.built_cost = sah_cost(&slot.blas.nodes, &slot.blas.blocks);
             slot.built_area = triangle_area_ratio(&slot.blas);
             self.stats.blas_rebuilds += 1;

@@ -7,6 +7,13 @@
 //! feature); a level without a declaration gets the derived set, which tools report. The
 //! bounce count is declared separately, in `render: (max_bounces: …)`.
 //! Must not: load files or change what the renderer does (it only states and checks).
+//!
+//! Why the renderer does not read it: the work a feature costs is already switched off by the
+//! data itself, in both integrators (`render/cpu/integrator.rs`, `shaders/trace.wgsl`):
+//! next-event estimation over emissive triangles runs only when the light table is non-empty
+//! (`light_count > 0`), the sun's only when there is a sun (`sun_solid_angle >= 0`), and a
+//! texture or normal map is fetched only for a material that names one. A flag from `needs`
+//! would skip nothing more (checked 2026-11-22), so it stays a declaration and a check.
 
 use serde::{Deserialize, Serialize};
 

@@ -10,7 +10,7 @@
 use glam::Vec3;
 
 use super::lights::LightTable;
-use crate::accel::Aabb;
+use crate::accel::{Aabb, BlasParams};
 use crate::assets::{Model, SceneDesc};
 use crate::layout::{
     GpuBvh8Node, GpuInstance, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
@@ -69,8 +69,20 @@ impl RenderScene {
     /// [`RenderScene::build`] with render space's origin at `origin` (world metres, snapped to
     /// `accel::origin::ORIGIN_GRID`); `Vec3::ZERO` renders in world space as it is.
     pub fn build_with_origin(desc: &SceneDesc, origin: Vec3) -> RenderScene {
+        Self::build_from(desc, origin, BlasParams::default())
+    }
+
+    /// [`RenderScene::build`] with every BLAS built with `params` (a build preset or leaf size
+    /// other than the default, for measurements such as `bench chart`). Both tracers read the
+    /// result like any other scene: the image is the same, only the traversal speed differs.
+    pub fn build_with_blas_params(desc: &SceneDesc, params: BlasParams) -> RenderScene {
+        let origin = crate::accel::origin::snap_origin(Vec3::from(desc.camera.position));
+        Self::build_from(desc, origin, params)
+    }
+
+    fn build_from(desc: &SceneDesc, origin: Vec3, params: BlasParams) -> RenderScene {
         let started = std::time::Instant::now();
-        let mut upkeep = crate::accel::Upkeep::new();
+        let mut upkeep = crate::accel::Upkeep::with_blas_params(params);
         upkeep.set_origin(origin);
         upkeep.add_level_materials(&desc.level_materials);
         let handles: Vec<_> = desc.models.iter().map(|m| upkeep.add_model(m)).collect();

@@ -8,9 +8,10 @@
 //!   diffuse-bounce rays made from the level's camera and lights.
 //! * `bench error` — time for each tracer to reach a fixed relative error against the Cornell
 //!   reference, beside Mitsuba 3's time to the same error from its own reference statistics.
-//! * `bench chart` — error against time for every estimator, both reference scenes and both
-//!   tracers: `docs/charts/*.png`, `docs/charts/accuracy.csv` and the generated section of
-//!   `docs/ACCURACY.md`.
+//! * `bench chart [--quick] [--scenes …] [--panels …]` — error against time for every
+//!   estimator, bounce cap (1–8) and BVH build, on the two reference scenes and two test scenes,
+//!   for both tracers: `docs/charts/*.png`, `docs/charts/accuracy.csv` and the generated section
+//!   of `docs/ACCURACY.md` (partial runs write under `target/bench-chart/`).
 //! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
 //!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
 //!   of game update and render (CSV files beside the tables).
@@ -19,6 +20,11 @@
 
 mod build;
 mod chart;
+mod chart_methods;
+mod chart_plan;
+mod chart_reference;
+mod chart_scenes;
+mod chart_self_ref;
 mod error;
 mod ghosting;
 mod machine;
@@ -29,6 +35,7 @@ mod pipeline_refit;
 mod plot;
 mod rays;
 mod report;
+mod report_reading;
 
 use clap::{Parser, Subcommand};
 
@@ -47,9 +54,9 @@ enum Command {
     Rays(rays::RaysArgs),
     /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
     Error(error::ErrorArgs),
-    /// Error against time for every estimator on the reference scenes: CSV, charts, and the
-    /// generated section of docs/ACCURACY.md.
-    Chart(chart::ChartArgs),
+    /// Error against time for every estimator, bounce cap and BVH build on the reference and
+    /// test scenes: CSV, charts, and the generated section of docs/ACCURACY.md.
+    Chart(chart_plan::ChartArgs),
     /// The frame pipeline on the demo level: upkeep, refit threshold, queries, overlap.
     Pipeline(pipeline::PipelineArgs),
     /// Error on a fast-moving object and its trail per converging policy.
@@ -65,8 +72,16 @@ fn main() -> anyhow::Result<()> {
         Command::Rays(a) => rays::run(&a),
         Command::Error(a) => error::run(&a),
         Command::Chart(a) => {
-            let points = chart::measure(&a)?;
-            report::write(&a, &points, &machine)
+            let plan = a.plan()?;
+            let outcome = chart::measure(&a, &plan)?;
+            report::write(&plan, &outcome, &machine)?;
+            println!(
+                "bench chart: {:.1} min; wrote {} and {}",
+                outcome.seconds / 60.0,
+                plan.out.display(),
+                plan.doc.display()
+            );
+            Ok(())
         }
         Command::Pipeline(a) => pipeline::run(&a),
         Command::Ghosting(a) => ghosting::run(&a),
