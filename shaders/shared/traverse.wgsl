@@ -140,10 +140,11 @@ fn intersect_block(block_index: u32, r: TriRay, t_min: f32, t_max: f32) -> BlasH
         let c = (abs(ax) + abs(ay) + abs(a.z)) * (abs(inv_det) * SLACK_SCALE);
         let len1 = abs(e1x) + abs(e1y) + abs(e1.z);
         let len2 = abs(e2x) + abs(e2y) + abs(e2.z);
-        let slack_u = fma(c, len2, EDGE_SLACK);
-        let slack_v = fma(c, len1, EDGE_SLACK);
-        let slack_w = fma(c, len1 + len2, EDGE_SLACK);
-        if (abs(det) > bound && u >= -slack_u && v >= -slack_v && u + v <= 1.0 + slack_w && t > t_min && t < best.t) {
+        // u >= -(c·len2 + EDGE_SLACK) tested as c·len2 + u >= -EDGE_SLACK, as triangle.rs.
+        let inside_u = fma(c, len2, u) >= -EDGE_SLACK;
+        let inside_v = fma(c, len1, v) >= -EDGE_SLACK;
+        let inside_w = fma(-c, len1 + len2, u + v) <= 1.0 + EDGE_SLACK;
+        if (abs(det) > bound && inside_u && inside_v && inside_w && t > t_min && t < best.t) {
             best = BlasHit(t, u, v, b.prim[lane], true);
         }
     }

@@ -85,17 +85,17 @@ unsafe fn block_test<L: Lanes>(block: *const GpuTri4, r: &BlockRay, t_max: f32) 
         let c = m.mul(inv_det.andnot(sign).mul(L::splat(SLACK_SCALE)));
         let len1 = e1x.andnot(sign).add(e1y.andnot(sign)).add(e1z.andnot(sign));
         let len2 = e2x.andnot(sign).add(e2y.andnot(sign)).add(e2z.andnot(sign));
-        let base = L::splat(EDGE_SLACK);
-        let zero = L::splat(0.0);
-        let neg_slack_u = zero.sub(c.fmadd(len2, base));
-        let neg_slack_v = zero.sub(c.fmadd(len1, base));
-        let slack_w = c.fmadd(len1.add(len2), base);
+        // `u >= -(c·len2 + EDGE_SLACK)` tested as `c·len2 + u >= -EDGE_SLACK` (one rounding),
+        // and so on, in `triangle::intersect_permuted`'s order.
         let ok = det
             .andnot(sign)
             .gt(bound)
-            .and(u.ge(neg_slack_u))
-            .and(v.ge(neg_slack_v))
-            .and(u.add(v).le(L::splat(1.0).add(slack_w)))
+            .and(c.fmadd(len2, u).ge(L::splat(-EDGE_SLACK)))
+            .and(c.fmadd(len1, v).ge(L::splat(-EDGE_SLACK)))
+            .and(
+                c.fnmadd(len1.add(len2), u.add(v))
+                    .le(L::splat(1.0 + EDGE_SLACK)),
+            )
             .and(t.gt(L::splat(r.t_min)))
             .and(t.lt(L::splat(t_max)));
         (ok.mask(), t, u, v)
