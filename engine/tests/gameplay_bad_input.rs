@@ -208,3 +208,18 @@ fn a_sound_that_fails_to_decode_is_named() {
     );
     says(&m, &["rule \"press\"", "sound \"dong\""]);
 }
+
+/// The editor saves levels: the gameplay section survives an atomic write and read unchanged.
+#[test]
+fn gameplay_round_trips_through_an_atomic_save() -> Result<(), AssetError> {
+    use candela::assets::Level;
+    let d = dir("save");
+    let source =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/test_scenes/gameplay/plate_door.ron");
+    let level = Level::read(&source)?;
+    assert!(!level.gameplay.is_empty());
+    let saved = d.0.join("saved.ron");
+    level.write_atomic(&saved)?;
+    assert_eq!(Level::read(&saved)?, level);
+    Ok(())
+}
