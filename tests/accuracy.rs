@@ -33,31 +33,13 @@ fn reference(scene: &str, size: u32) -> Reference {
     let (w, h, mean) = read_exr(&dir.join("reference.exr")).expect("reference.exr");
     let (_, _, se) = read_exr(&dir.join("reference_stderr.exr")).expect("reference_stderr.exr");
     assert_eq!((w, h), (256, 256));
-    let f = (256 / size) as usize;
-    let n = (f * f) as f64;
-    let mut out_mean = Vec::new();
-    let mut out_var = Vec::new();
-    for y in 0..size as usize {
-        for x in 0..size as usize {
-            let mut m = Vec3::ZERO;
-            let mut v = [0.0f64; 3];
-            for dy in 0..f {
-                for dx in 0..f {
-                    let i = (y * f + dy) * 256 + x * f + dx;
-                    m += mean[i];
-                    for c in 0..3 {
-                        v[c] += (se[i][c] as f64).powi(2);
-                    }
-                }
-            }
-            out_mean.push(m / n as f32);
-            out_var.push(v.map(|v| v / (n * n)));
-        }
-    }
-    Reference {
-        mean: out_mean,
-        var: out_var,
-    }
+    let (mean, var) = candela::render::film::box_average(256, &mean, &se, size);
+    assert_eq!(
+        mean.len(),
+        (size * size) as usize,
+        "256 is a multiple of {size}"
+    );
+    Reference { mean, var }
 }
 
 fn render(scene: &str, which: Which, size: u32, spp: u32) -> Batches {

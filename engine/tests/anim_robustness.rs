@@ -9,6 +9,8 @@
 //! (the loader refuses non-finite inputs, so a non-finite output would be a bug in the
 //! arithmetic). Counts by outcome are printed (`--nocapture`).
 
+mod common;
+
 use std::collections::BTreeMap;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
@@ -20,30 +22,6 @@ use candela::sim::animation::{AnimError, load_animation_file, world_positions};
 /// A load plus evaluation longer than this is a failure (the largest sample model takes well
 /// under a second in release builds).
 const TIME_LIMIT: Duration = Duration::from_secs(30);
-
-fn files_under(dir: &Path) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut pending = vec![dir.to_path_buf()];
-    while let Some(dir) = pending.pop() {
-        let Ok(entries) = std::fs::read_dir(&dir) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                pending.push(path);
-            } else if path
-                .extension()
-                .and_then(|e| e.to_str())
-                .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "gltf" | "glb"))
-            {
-                found.push(path);
-            }
-        }
-    }
-    found.sort();
-    found
-}
 
 enum Outcome {
     /// Loaded and evaluated: (clips, poses evaluated, non-finite positions).
@@ -114,7 +92,7 @@ fn every_gltf_file_loads_and_evaluates_or_is_refused_cleanly() {
         env!("CARGO_MANIFEST_DIR"),
         "/../../shared/external/gltf"
     ));
-    let files = files_under(&root);
+    let files = common::files_under(&root, &["gltf", "glb"]);
     assert!(!files.is_empty(), "no glTF files under {}", root.display());
     let mut failures = Vec::new();
     let mut counts: BTreeMap<String, usize> = BTreeMap::new();

@@ -23,6 +23,8 @@
 //!
 //! The counts (loaded / refused by variant) are printed; run with `--nocapture` to see them.
 
+mod common;
+
 use std::collections::BTreeMap;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::{Path, PathBuf};
@@ -120,31 +122,6 @@ fn external() -> PathBuf {
     ))
 }
 
-/// Every file under `dir` whose extension is one of `extensions`, sorted.
-fn files_under(dir: &Path, extensions: &[&str]) -> Vec<PathBuf> {
-    let mut found = Vec::new();
-    let mut pending = vec![dir.to_path_buf()];
-    while let Some(dir) = pending.pop() {
-        let Ok(entries) = std::fs::read_dir(&dir) else {
-            continue;
-        };
-        for entry in entries.flatten() {
-            let path = entry.path();
-            if path.is_dir() {
-                pending.push(path);
-            } else if path
-                .extension()
-                .and_then(|e| e.to_str())
-                .is_some_and(|e| extensions.contains(&e.to_ascii_lowercase().as_str()))
-            {
-                found.push(path);
-            }
-        }
-    }
-    found.sort();
-    found
-}
-
 /// Loads `path` on its own thread, catching panics, within [`TIME_LIMIT`].
 fn load(path: &Path) -> (Outcome, Duration) {
     let (sender, receiver) = mpsc::channel();
@@ -209,9 +186,9 @@ fn report_errors(path: &Path) -> Option<Vec<String>> {
 #[test]
 fn every_robustness_file_loads_or_is_refused_cleanly() {
     let validator_root = external().join("gltf/_robustness/glTF-Validator-testdata");
-    let mut files = files_under(&external().join("gltf/_robustness"), &["gltf", "glb"]);
+    let mut files = common::files_under(&external().join("gltf/_robustness"), &["gltf", "glb"]);
     let gltf_count = files.len();
-    files.extend(files_under(&external().join("obj"), &["obj"]));
+    files.extend(common::files_under(&external().join("obj"), &["obj"]));
     assert!(
         gltf_count > 300,
         "only {gltf_count} glTF files found under _robustness"

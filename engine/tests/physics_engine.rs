@@ -5,8 +5,7 @@
 use candela::app::{Engine, Environment};
 use candela::assets::{AssetRoot, load_level};
 use candela::ecs::Transform;
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 
 const LEVEL: &str = r#"Level(
     materials: [(name: "grey", kind: Diffuse)],
@@ -27,13 +26,8 @@ fn crate_falls_in_the_frame_loop_and_sleeping_costs_no_commits() -> anyhow::Resu
     std::fs::write(&path, LEVEL)?;
     let scene = load_level(&path, &AssetRoot::new(&dir)?)?;
     let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 32,
-        height: 16,
-        spp: 1,
         seed: 3,
-        converge: ConvergePolicy::default(),
-        scaling: None,
+        ..RenderConfig::cpu(32, 16)
     };
     let mut engine = Engine::new(config, Environment::of(&scene))?;
     let spawned = engine.spawn_level(&scene);

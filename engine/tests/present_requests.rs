@@ -7,18 +7,13 @@
 use candela::app::{Engine, Environment};
 use candela::assets::{CameraDesc, RenderSettings, SkyDesc};
 use candela::commit::{Overlay, PresentRequest};
-use candela::render::film::{ConvergePolicy, TonemapSettings};
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
+use candela::render::film::TonemapSettings;
 
 fn engine() -> Engine {
     let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 32,
-        height: 16,
-        spp: 1,
         seed: 3,
-        converge: ConvergePolicy::default(),
-        scaling: None,
+        ..RenderConfig::cpu(32, 16)
     };
     let environment = Environment {
         sun: None,

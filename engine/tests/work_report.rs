@@ -23,8 +23,7 @@ use candela::assets::{
     Placement, RenderSettings, SkyDesc, WaveDesc, scene_from_level,
 };
 use candela::ecs::{Deformable, LightGroup, Renderable, Static, Transform};
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, RenderScene, TracerChoice};
+use candela::render::{RenderConfig, RenderScene};
 use glam::{Mat4, Vec3};
 
 /// A `n × n` grid of quads, `size` metres wide, in the xz plane.
@@ -72,15 +71,7 @@ fn grid_model(n: u32, size: f32, emission: f32) -> Model {
 }
 
 fn engine() -> Engine {
-    let config = RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: 8,
-        height: 8,
-        spp: 1,
-        seed: 1,
-        converge: ConvergePolicy::default(),
-        scaling: None,
-    };
+    let config = RenderConfig::cpu(8, 8);
     let environment = Environment {
         sun: None,
         sky: SkyDesc::Constant([0.1; 3]),

@@ -15,19 +15,22 @@ use super::collapse::octant_orders;
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 use crate::trace::leaf_blocks;
 
+/// Bounds of the triangle in lane `lane` of a block (`None` for an unused lane).
+fn lane_bounds(block: &GpuTri4, lane: usize) -> Option<Aabb> {
+    if block.prim[lane] == INVALID {
+        return None;
+    }
+    let v0 = Vec3::new(block.v0_x[lane], block.v0_y[lane], block.v0_z[lane]);
+    let e1 = Vec3::new(block.e1_x[lane], block.e1_y[lane], block.e1_z[lane]);
+    let e2 = Vec3::new(block.e2_x[lane], block.e2_y[lane], block.e2_z[lane]);
+    Some(Aabb::EMPTY.grow(v0).grow(v0 + e1).grow(v0 + e2))
+}
+
 /// Bounds of the valid lanes of a block.
 fn block_bounds(block: &GpuTri4) -> Aabb {
-    let mut b = Aabb::EMPTY;
-    for lane in 0..4 {
-        if block.prim[lane] == INVALID {
-            continue;
-        }
-        let v0 = Vec3::new(block.v0_x[lane], block.v0_y[lane], block.v0_z[lane]);
-        let e1 = Vec3::new(block.e1_x[lane], block.e1_y[lane], block.e1_z[lane]);
-        let e2 = Vec3::new(block.e2_x[lane], block.e2_y[lane], block.e2_z[lane]);
-        b = b.grow(v0).grow(v0 + e1).grow(v0 + e2);
-    }
-    b
+    (0..4)
+        .filter_map(|lane| lane_bounds(block, lane))
+        .fold(Aabb::EMPTY, Aabb::union)
 }
 
 fn slot_bounds(node: &GpuBvh8Node, slot: usize) -> Aabb {
@@ -168,14 +171,7 @@ pub fn triangle_area_ratio(blas: &Blas) -> f32 {
     }
     let mut sum = 0.0f64;
     for block in &blas.blocks {
-        for lane in 0..4 {
-            if block.prim[lane] == INVALID {
-                continue;
-            }
-            let v0 = Vec3::new(block.v0_x[lane], block.v0_y[lane], block.v0_z[lane]);
-            let e1 = Vec3::new(block.e1_x[lane], block.e1_y[lane], block.e1_z[lane]);
-            let e2 = Vec3::new(block.e2_x[lane], block.e2_y[lane], block.e2_z[lane]);
-            let b = Aabb::EMPTY.grow(v0).grow(v0 + e1).grow(v0 + e2);
+        for b in (0..4).filter_map(|lane| lane_bounds(block, lane)) {
             sum += b.surface_area() as f64;
         }
     }

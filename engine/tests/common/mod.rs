@@ -1,11 +1,14 @@
 //! Shared helpers of the acceleration / traversal tests: a small deterministic RNG, procedural
-//! meshes, random rays, scene assembly and the agreement check (tree kernels vs brute force).
+//! meshes, random rays, scene assembly and the agreement check (tree kernels vs brute force);
+//! and the file walk of the robustness tests.
 #![allow(dead_code)]
 
 use candela::accel::{Aabb, Blas, build_blas, build_tlas};
 use candela::layout::{GpuBvh8Node, GpuInstance, GpuTri4, INSTANCE_FLAG_IDENTITY};
 use candela::trace::brute::{BruteInstance, BruteMesh, closest_brute, closest_brute_mesh};
 use candela::trace::{Hit, Kernel, Ray, TraceScene, closest_blas_with, occluded_blas_with};
+use std::path::{Path, PathBuf};
+
 use glam::{Mat4, Quat, Vec3};
 
 /// PCG32 (O'Neill 2014): deterministic across platforms.
@@ -355,4 +358,29 @@ pub fn messy_transform(rng: &mut Rng) -> Mat4 {
         Quat::from_axis_angle(rng.unit(), rng.range(0.0, std::f32::consts::TAU)),
         rng.vec3(Vec3::splat(-20.0), Vec3::splat(20.0)),
     )
+}
+
+/// Every file under `dir` whose extension is one of `extensions`, sorted.
+pub fn files_under(dir: &Path, extensions: &[&str]) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let mut pending = vec![dir.to_path_buf()];
+    while let Some(dir) = pending.pop() {
+        let Ok(entries) = std::fs::read_dir(&dir) else {
+            continue;
+        };
+        for entry in entries.flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                pending.push(path);
+            } else if path
+                .extension()
+                .and_then(|e| e.to_str())
+                .is_some_and(|e| extensions.contains(&e.to_ascii_lowercase().as_str()))
+            {
+                found.push(path);
+            }
+        }
+    }
+    found.sort();
+    found
 }

@@ -41,37 +41,19 @@ impl Reference {
 /// divides `width`): means average, variances of the mean add over the box and divide by its
 /// pixel count squared.
 pub fn box_average(width: u32, mean: &[Vec3], stderr: &[Vec3], size: u32) -> Reference {
-    let f = (width / size) as usize;
-    let n = (f * f) as f64;
-    let mut out = Reference {
-        mean: Vec::with_capacity((size * size) as usize),
-        var: Vec::with_capacity((size * size) as usize),
-        image_mean: [0.0; 3],
-    };
-    for y in 0..size as usize {
-        for x in 0..size as usize {
-            let mut m = Vec3::ZERO;
-            let mut v = [0.0f64; 3];
-            for dy in 0..f {
-                for dx in 0..f {
-                    let i = (y * f + dy) * width as usize + x * f + dx;
-                    m += mean[i];
-                    for (c, v) in v.iter_mut().enumerate() {
-                        *v += (stderr[i][c] as f64).powi(2);
-                    }
-                }
-            }
-            let m = m / n as f32;
-            for c in 0..3 {
-                out.image_mean[c] += m[c] as f64;
-            }
-            out.mean.push(m);
-            out.var.push(v.map(|v| v / (n * n)));
+    let (mean, var) = candela::render::film::box_average(width, mean, stderr, size);
+    let pixels = mean.len().max(1) as f64;
+    let mut image_mean = [0.0f64; 3];
+    for m in &mean {
+        for (c, s) in image_mean.iter_mut().enumerate() {
+            *s += m[c] as f64;
         }
     }
-    let pixels = (size * size) as f64;
-    out.image_mean = out.image_mean.map(|s| s / pixels);
-    out
+    Reference {
+        mean,
+        var,
+        image_mean: image_mean.map(|s| s / pixels),
+    }
 }
 
 /// Errors of one image against a reference.
