@@ -16,7 +16,7 @@
 //!   estimator's excess error is pure variance, ∝ 1/spp, while a bias flattens the fall. See
 //!   `check_rate` for the statistic; tolerance 4.5 σ, σ from the spread over pixels.
 
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::render::film::read_exr;
 use candela_tests::{Batches, Which, external, region_stat, repo};
 use glam::Vec3;
@@ -49,7 +49,7 @@ fn render(scene: &str, which: Which, size: u32, spp: u32) -> Batches {
 fn render_method(scene: &str, which: Which, size: u32, spp: u32, method: u32) -> Batches {
     let level = repo().join(format!("assets/test_scenes/reference/{scene}.ron"));
     let root = AssetRoot::new(external().join("reference").join(scene)).expect("asset root");
-    let desc = load_level(&level, &root).expect("level loads");
+    let desc = load_scene(&level, &root).expect("level loads");
     candela_tests::render_batches_with(which, &desc, size, size, spp, 5, 11, method)
         .expect("render")
 }

@@ -10,8 +10,8 @@
 use std::path::Path;
 
 use candela::assets::{Model, SceneDesc, load_model_file};
-use candela::render::RenderScene;
 use candela::render::cpu::rng::Rng;
+use candela::scene::RenderScene;
 use candela::trace::Ray;
 use candela::trace::brute::{BruteInstance, BruteMesh, closest_brute, occluded_brute};
 use candela_tests::{camera, external};

@@ -6,7 +6,7 @@
 
 use std::collections::HashSet;
 
-use candela::assets::{AssetRoot, Level, SkyDesc, load_level};
+use candela::assets::{AssetRoot, Level, SkyDesc, load_scene};
 use clap::Parser;
 
 fn demo_dir() -> std::path::PathBuf {
@@ -26,7 +26,7 @@ fn committed_demo_is_what_assetgen_makes() -> anyhow::Result<()> {
 #[test]
 fn demo_level_has_what_the_pipeline_is_measured_on() -> anyhow::Result<()> {
     let path = demo_dir().join("demo.ron");
-    let desc = load_level(&path, &AssetRoot::new(demo_dir())?)?;
+    let desc = load_scene(&path, &AssetRoot::new(demo_dir())?)?;
     let triangles = |model: usize| -> usize {
         desc.models[model]
             .meshes

@@ -12,8 +12,8 @@
 //! at 1e5 m (the game's own precision, not the renderer's): at 64 px across a 2 m box that is
 //! a twentieth of a pixel, far below the noise of these regions.
 
-use candela::assets::{AssetRoot, SceneDesc, load_level};
-use candela::render::RenderScene;
+use candela::assets::{AssetRoot, SceneDesc, load_scene};
+use candela::scene::RenderScene;
 use candela_tests::{Batches, Which, external, repo};
 use glam::{Mat4, Vec3};
 
@@ -24,7 +24,7 @@ const BATCHES: u32 = 6;
 fn cornell() -> SceneDesc {
     let level = repo().join("assets/test_scenes/reference/cornell_box.ron");
     let root = AssetRoot::new(external().join("reference/cornell_box")).expect("asset root");
-    load_level(&level, &root).expect("level loads")
+    load_scene(&level, &root).expect("level loads")
 }
 
 /// `desc` moved by `offset` metres (instances and camera).

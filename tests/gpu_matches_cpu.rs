@@ -12,7 +12,7 @@
 //!   noise of one render. If the tracers diverged everywhere (two independent estimates), the RMS
 //!   difference would be √2 times that noise.
 
-use candela::assets::{AssetRoot, SceneDesc, load_level};
+use candela::assets::{AssetRoot, SceneDesc, load_scene};
 use candela_tests::{Which, external, region_stat, render_batches, repo};
 
 fn compare(label: &str, desc: &SceneDesc, size: u32, spp: u32) {
@@ -74,7 +74,7 @@ fn mirror_glass_scene_agrees() {
     let scene = "cornell_mirror_glass";
     let level = repo().join(format!("assets/test_scenes/reference/{scene}.ron"));
     let root = AssetRoot::new(external().join("reference").join(scene)).expect("root");
-    let desc = load_level(&level, &root).expect("level");
+    let desc = load_scene(&level, &root).expect("level");
     compare(scene, &desc, 64, 8);
 }
 

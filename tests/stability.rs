@@ -13,7 +13,8 @@ use candela::assets::{
     Material, MaterialKind, Mesh, Model, Placement, SceneDesc, SceneInstance, SkyDesc, Texture,
     TextureRef,
 };
-use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, Tracer, frame_uniforms};
+use candela::scene::RenderScene;
 use candela_tests::{Which, camera, icosphere, open, render_batches, single_mesh_model};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 

@@ -10,8 +10,8 @@
 
 use candela::assets::{Material, SceneDesc};
 use candela::layout::{GpuRay, INVALID};
-use candela::render::RenderScene;
 use candela::render::cpu::rng::Rng;
+use candela::scene::RenderScene;
 use candela::trace::{Kernel, Ray};
 use candela_tests::{camera, icosphere, single_mesh_model};
 use glam::{Mat4, Vec3};

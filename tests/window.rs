@@ -29,7 +29,7 @@ use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
 use candela::app::WindowEnd;
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela_tests::xvfb::{set_environment, start_xvfb};
 use candela_tests::{Which, region_stat, render_batches, repo};
 use clap::Parser;
@@ -181,7 +181,7 @@ fn view_shows_the_headless_frame_in_an_xvfb_window() {
     .expect("headless capture");
     let capture = image::open(&capture_png).expect("capture PNG").to_rgb8();
     let root = AssetRoot::new(repo().join("assets/test_scenes")).expect("asset root");
-    let desc = load_level(&level, &root).expect("level loads");
+    let desc = load_scene(&level, &root).expect("level loads");
     let batches = 8;
     let spread = render_batches(Which::Cpu, &desc, WIDTH, HEIGHT, 16, batches, 7).expect("batches");
     // Variance of one 16-spp estimate per pixel (the batches' spread, not their mean's).

@@ -2,8 +2,9 @@
 //! `cargo run --release -p candela --example gpu_timing -- <level.ron> [asset-root] [size] [spp]`
 use std::time::Instant;
 
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::render::*;
+use candela::scene::RenderScene;
 
 fn main() -> anyhow::Result<()> {
     let args: Vec<String> = std::env::args().collect();
@@ -18,7 +19,7 @@ fn main() -> anyhow::Result<()> {
     };
     let size: u32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(128);
     let spp: u32 = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(4);
-    let desc = load_level(&level, &root)?;
+    let desc = load_scene(&level, &root)?;
     let scene = RenderScene::build(&desc);
     let t = Instant::now();
     let ctx = gpu::GpuContext::headless()?;

@@ -1,32 +1,46 @@
 //! # Candela
 //!
 //! A game engine whose only renderer is a real-time path tracer (after Bikker & van Schijndel,
-//! "The Brigade Renderer", 2013). Modules are listed in frame order: assets are loaded, the
-//! acceleration structures are built, the scene is flattened into [`layout`] buffers, and a
-//! tracer (GPU or CPU, the same algorithm) renders it into a film.
+//! "The Brigade Renderer", 2013).
 //!
 //! Conventions for the whole engine: right-handed, +Y up, metres, seconds, radians; colours are
 //! linear Rec.709 radiance until tonemapping. glTF axis conversion lives only in the glTF loader.
+//!
+//! Modules are listed in layers, lowest first: a module uses only modules above it in this
+//! list (`engine/tests/structure_layers.rs` checks every `crate::` path, so a cycle cannot
+//! quietly come back). The flow of a frame runs the same way: files become descriptions,
+//! the flattened scene is kept up to date and sealed into a commit, the render thread renders
+//! it, game code queries it and simulates, and the runner drives it all.
 
+/// GPU structs and constants both tracers share (WGSL twins in `shaders/shared/types.wgsl`).
 pub mod layout;
-
-pub mod assets;
-
-pub mod ecs;
-
-pub mod sim;
-
-pub mod audio;
-
-pub mod extract;
-
-pub mod accel;
+/// CPU ray traversal over `layout` buffers (scalar, AVX2, AVX-512).
 pub mod trace;
 
+/// Files in (models, textures, levels), descriptions out.
+pub mod assets;
+/// Components and the transform hierarchy.
+pub mod ecs;
+/// World → typed scene changes.
+pub mod extract;
+
+/// Main thread: BLAS/TLAS builds, refit/rebuild policy, the scene's upkeep.
+pub mod accel;
+/// The commit sealed once per frame, and the hand-off.
 pub mod commit;
-
-pub mod render;
-
+/// Ray queries for game code on the last commit's scene.
 pub mod query;
+/// Render thread: apply, converge, scale, trace (GPU and CPU), present.
+pub mod render;
+/// The flattened scene both sides share: buffers, their writes, lights, materials.
+pub mod scene;
 
+/// Sounds, music and spatial emitters.
+pub mod audio;
+/// A level to play: loading with bodies and gameplay.
+pub mod level;
+/// Physics, animation and triggers.
+pub mod sim;
+
+/// The runner: the frame's phases, the game-facing API, windows, scripts.
 pub mod app;

@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use candela::app::{Engine, Environment};
+use candela::app::{Engine, Environment, Step};
 use candela::assets::{CameraDesc, RenderSettings, SkyDesc, load_model_file};
 use candela::ecs::{Deformable, Renderable, Transform};
 use candela::render::RenderConfig;
@@ -46,11 +46,11 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
         },
     };
     let mut engine = Engine::new(config, environment)?;
-    let handle = engine.upkeep.add_model(&model);
+    let handle = engine.add_model(&model);
     let (mut animator, deformable) =
         SkinnedAnimator::single(animated.clone(), &model).expect("one skinned mesh");
     animator.player.play(Playback::new(0, PlayMode::Loop));
-    let entity = engine.world.spawn((
+    let entity = engine.world_mut().spawn((
         Transform::IDENTITY,
         Renderable {
             model: handle,
@@ -62,7 +62,7 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
 
     let mut blas_work = Vec::new();
     for _ in 0..12 {
-        let report = engine.frame(1.0 / 60.0, |_, _, _| {})?;
+        let report = engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
         blas_work.push(report.work.blas_refits + report.work.blas_rebuilds);
         let _ = engine.wait_rendered();
     }
@@ -70,7 +70,7 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
 
     // The committed vertices are the pose at the player's time (12 steps of 1/60 s).
     let time = {
-        let animator = engine.world.get::<&SkinnedAnimator>(entity)?;
+        let animator = engine.world().get::<&SkinnedAnimator>(entity)?;
         animator
             .player
             .current()
@@ -89,16 +89,16 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
         placement.model_from_mesh,
     )
     .expect("deformed");
-    let now = engine.world.get::<&Deformable>(entity)?.positions.clone();
+    let now = engine.world().get::<&Deformable>(entity)?.positions.clone();
     assert_eq!(now, expected.positions);
 
     // Paused: no BLAS work.
-    if let Ok(mut animator) = engine.world.get::<&mut SkinnedAnimator>(entity) {
+    if let Ok(mut animator) = engine.world_mut().get::<&mut SkinnedAnimator>(entity) {
         animator.player.set_paused(true);
     }
     let mut paused = Vec::new();
     for _ in 0..4 {
-        let report = engine.frame(1.0 / 60.0, |_, _, _| {})?;
+        let report = engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
         paused.push(report.work.blas_refits + report.work.blas_rebuilds);
         let _ = engine.wait_rendered();
     }

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use candela::accel::Upkeep;
 use candela::assets::load_model_file;
-use candela::render::SceneWrite;
+use candela::scene::SceneWrite;
 use candela::sim::animation::{
     Influence, MorphTarget, deform_mesh, load_animation_file, morph_normals, skin_vertices,
     world_positions,

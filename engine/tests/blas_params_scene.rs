@@ -6,16 +6,17 @@
 use std::path::Path;
 
 use candela::accel::{BlasParams, BuildQuality};
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::layout::{INVALID, LEAF_BIT, LEAF_COUNT_SHIFT};
 use candela::render::cpu::CpuTracer;
-use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, Tracer, frame_uniforms};
+use candela::scene::RenderScene;
 
 #[test]
 fn other_blas_params_change_the_tree_not_the_image() -> anyhow::Result<()> {
     // The capture-script level: a 1,152-triangle pool grid, boxes, lamps, sun and sky.
     let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/test_scenes/script");
-    let desc = load_level(&assets.join("small.ron"), &AssetRoot::new(&assets)?)?;
+    let desc = load_scene(&assets.join("small.ron"), &AssetRoot::new(&assets)?)?;
     let default = RenderScene::build(&desc);
     let params = BlasParams {
         quality: BuildQuality::Fastest,

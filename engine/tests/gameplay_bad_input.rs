@@ -4,7 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
-use candela::assets::{AssetError, AssetRoot, load_level};
+use candela::assets::{AssetError, AssetRoot};
+use candela::level::load_level;
 
 const GOOD: &str = r#"Level(
     materials: [(name: "grey", kind: Diffuse), (name: "lamp", kind: Diffuse, emission: (4, 4, 4))],
@@ -81,7 +82,10 @@ fn the_good_level_loads() -> Result<(), AssetError> {
     let scene = load_level(&path, &AssetRoot::new(&d.0)?)?;
     assert_eq!(scene.gameplay.rules.len(), 2);
     assert_eq!(scene.gameplay.clip_targets, vec![1]);
-    assert!(scene.instances[1].dynamic, "a clip target is not static");
+    assert!(
+        scene.scene.instances[1].dynamic,
+        "a clip target is not static"
+    );
     Ok(())
 }
 

@@ -11,9 +11,10 @@
 
 use std::path::PathBuf;
 
-use candela::app::Engine;
-use candela::assets::{AssetRoot, load_level};
+use candela::app::{Engine, Step};
+use candela::assets::AssetRoot;
 use candela::ecs::Transform;
+use candela::level::load_level;
 use candela::render::RenderConfig;
 use candela::sim::triggers::{OccupantKind, Outcome, Phase};
 use glam::Vec3;
@@ -51,20 +52,20 @@ fn run() -> anyhow::Result<Run> {
         seed: 5,
         ..RenderConfig::cpu(24, 16)
     };
-    let mut engine = Engine::new(config, candela::app::Environment::of(&scene))?;
+    let mut engine = Engine::new(config, candela::app::Environment::of(&scene.scene))?;
     let spawned = engine.spawn_level(&scene);
     let (crate_, door) = (spawned.by_name["crate"], spawned.by_name["door"]);
-    let door_rest = engine.world.get::<&Transform>(door)?.translation;
-    let plate = engine.logic.volume_index("plate").expect("volume");
+    let door_rest = engine.world().get::<&Transform>(door)?.translation;
+    let plate = engine.logic().volume_index("plate").expect("volume");
 
     let mut lights = Vec::new();
     let mut entered_step = None;
     let mut won_step = None;
     // 1/60 s frames, one fixed step each; 4 s is enough to fall 1.2 m and open the door.
     for _ in 0..240 {
-        engine.frame(1.0 / 60.0, |_, _, _| {})?;
-        let step = engine.logic.steps();
-        let log = engine.logic.last_step();
+        engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
+        let step = engine.logic().steps();
+        let log = engine.logic().last_step();
         if log.volume_events.iter().any(|e| {
             e.volume == plate
                 && e.occupant == crate_
@@ -74,7 +75,7 @@ fn run() -> anyhow::Result<Run> {
             assert!(entered_step.is_none(), "the crate entered twice");
             entered_step = Some(step);
         }
-        if won_step.is_none() && engine.logic.outcome().is_some() {
+        if won_step.is_none() && engine.logic().outcome().is_some() {
             won_step = Some(step);
         }
         for rendered in engine.rendered() {
@@ -84,17 +85,17 @@ fn run() -> anyhow::Result<Run> {
     let entered_step = entered_step.expect("the crate never reached the plate");
     let won_step = won_step.expect("the level was never won");
     assert_eq!(
-        engine.logic.outcome(),
+        engine.logic().outcome(),
         Some(&Outcome::Won("door_opened".into()))
     );
 
     // The door opened along its clip, and its kinematic body went with it.
-    let door_now = engine.world.get::<&Transform>(door)?.translation;
+    let door_now = engine.world().get::<&Transform>(door)?.translation;
     assert!(
         (door_now - (door_rest + Vec3::X * 1.6)).length() < 1e-5,
         "door at {door_now}, rest {door_rest}"
     );
-    let (body, _) = engine.physics.pose(door).expect("door body");
+    let (body, _) = engine.physics().pose(door).expect("door body");
     assert!(
         (body - door_now).length() < 1e-4,
         "body {body} vs {door_now}"
@@ -108,17 +109,20 @@ fn run() -> anyhow::Result<Run> {
     );
 
     // The chime: started by the rule in the crate's entry step, at the plate, and heard.
-    assert!(engine.audio.is_silent(), "headless engines record silently");
+    assert!(
+        engine.audio().is_silent(),
+        "headless engines record silently"
+    );
     let played: Vec<(String, f64, Option<Vec3>)> = engine
-        .audio
+        .audio()
         .played()
         .iter()
         .map(|p| (p.name.to_string(), p.time_seconds, p.position))
         .collect();
-    let rate = f64::from(engine.audio.recorded_sample_rate_hz().expect("silent"));
-    let samples = engine.audio.recorded_samples().expect("silent");
+    let rate = f64::from(engine.audio().recorded_sample_rate_hz().expect("silent"));
+    let samples = engine.audio().recorded_samples().expect("silent");
     assert_eq!(
-        engine.audio.recorded_start_frame(),
+        engine.audio().recorded_start_frame(),
         0,
         "4 s fit in the recording"
     );
@@ -135,7 +139,7 @@ fn run() -> anyhow::Result<Run> {
         "the chime is not in the recording (peak {heard})"
     );
 
-    let crate_now = *engine.world.get::<&Transform>(crate_)?;
+    let crate_now = *engine.world().get::<&Transform>(crate_)?;
     let hash = hash(
         &[
             crate_now.translation.to_array(),

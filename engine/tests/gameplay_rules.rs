@@ -6,10 +6,11 @@
 
 use std::path::PathBuf;
 
-use candela::app::{Engine, SpawnedLevel};
-use candela::assets::{AssetRoot, load_level};
+use candela::app::{Engine, SpawnedLevel, Step};
+use candela::assets::AssetRoot;
 use candela::audio::Bus;
 use candela::ecs::Transform;
+use candela::level::load_level;
 use candela::render::RenderConfig;
 use candela::sim::physics::{CharacterController, CharacterInput, character_bundle};
 use candela::sim::triggers::{LaserPath, OccupantKind, Outcome, Phase, VolumeEvent};
@@ -63,7 +64,7 @@ fn engine(
     }
     let scene = load_level(&path, &AssetRoot::new(&dir)?)?;
     let config = RenderConfig::cpu(16, 8);
-    let mut engine = Engine::new(config, candela::app::Environment::of(&scene))?;
+    let mut engine = Engine::new(config, candela::app::Environment::of(&scene.scene))?;
     let spawned = engine.spawn_level(&scene);
     Ok((engine, spawned, scratch))
 }
@@ -75,8 +76,8 @@ fn frames(
     mut each: impl FnMut(&mut Engine, u64),
 ) -> anyhow::Result<()> {
     for _ in 0..frames {
-        engine.frame(1.0 / 60.0, |_, _, _| {})?;
-        let step = engine.logic.steps();
+        engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
+        let step = engine.logic().steps();
         each(engine, step);
         let _ = engine.rendered();
     }
@@ -110,7 +111,7 @@ fn door_needs_both_plates() -> anyhow::Result<()> {
     let door = spawned.by_name["door"];
     let (mut a_step, mut b_step, mut moved_step) = (None, None, None);
     frames(&mut engine, 120, |engine, step| {
-        let log = engine.logic.last_step();
+        let log = engine.logic().last_step();
         if entered(&log.volume_events, 0) {
             a_step.get_or_insert(step);
         }
@@ -118,7 +119,7 @@ fn door_needs_both_plates() -> anyhow::Result<()> {
             b_step.get_or_insert(step);
         }
         let y = engine
-            .world
+            .world()
             .get::<&Transform>(door)
             .map(|t| t.translation.y);
         if moved_step.is_none() && y.is_ok_and(|y| y > 0.25) {
@@ -133,7 +134,7 @@ fn door_needs_both_plates() -> anyhow::Result<()> {
         "the second crate falls from higher: a {a}, b {b}"
     );
     assert_eq!(moved, b + 1, "the door waits for the second plate");
-    let y = engine.world.get::<&Transform>(door)?.translation.y;
+    let y = engine.world().get::<&Transform>(door)?.translation.y;
     assert!((y - 2.25).abs() < 1e-5, "door at {y}");
     drop(engine.shutdown());
     Ok(())
@@ -150,7 +151,7 @@ fn player_volume_sees_the_player_only() -> anyhow::Result<()> {
         r#"volumes: [(name: "zone", instance: "zone", detects: [Player])],
            rules: [(name: "lamp", when: Entered("zone"), then: [ToggleLights(4)])]"#,
     )?;
-    let player = engine.world.spawn(character_bundle(
+    let player = engine.world_mut().spawn(character_bundle(
         Vec3::new(-3.0, 0.95, 0.0),
         1.8,
         0.3,
@@ -158,11 +159,11 @@ fn player_volume_sees_the_player_only() -> anyhow::Result<()> {
     )?);
     let mut phases = Vec::new();
     let mut walk = |engine: &mut Engine, direction: Vec3, n: u32| {
-        if let Ok(mut input) = engine.world.get::<&mut CharacterInput>(player) {
+        if let Ok(mut input) = engine.world_mut().get::<&mut CharacterInput>(player) {
             input.move_direction = direction;
         }
         frames(engine, n, |engine, _| {
-            for e in &engine.logic.last_step().volume_events {
+            for e in &engine.logic().last_step().volume_events {
                 assert_eq!(
                     e.kind,
                     OccupantKind::Player,
@@ -178,7 +179,7 @@ fn player_volume_sees_the_player_only() -> anyhow::Result<()> {
     // 2 m/s: 3 s to walk from x = -3 into the zone and stand there, then 3 s out again.
     walk(&mut engine, Vec3::X, 90)?;
     assert!(
-        !engine.upkeep.light_group_on(4),
+        !engine.light_group_on(4),
         "entering toggled the lamp off: {phases:?}"
     );
     walk(&mut engine, Vec3::NEG_Z, 100)?;
@@ -206,21 +207,21 @@ fn laser_over_a_mirror_reaches_the_receiver_until_the_mirror_goes_matte() -> any
     let (emitter, receiver) = (spawned.by_name["emitter"], spawned.by_name["receiver"]);
     let mut phases = Vec::new();
     frames(&mut engine, 6, |engine, _| {
-        for e in &engine.logic.last_step().volume_events {
+        for e in &engine.logic().last_step().volume_events {
             assert_eq!((e.kind, e.occupant), (OccupantKind::Laser, emitter));
             phases.push(e.phase);
         }
     })?;
-    assert_eq!(engine.logic.outcome(), Some(&Outcome::Won("lit".into())));
+    assert_eq!(engine.logic().outcome(), Some(&Outcome::Won("lit".into())));
     assert!(phases.contains(&Phase::Enter), "{phases:?}");
     assert_eq!(phases.last(), Some(&Phase::Exit), "{phases:?}");
-    let path: LaserPath = (*engine.world.get::<&LaserPath>(emitter)?).clone();
+    let path: LaserPath = (*engine.world().get::<&LaserPath>(emitter)?).clone();
     assert_eq!(path.points.len(), 2, "stops at the matte pane: {path:?}");
     assert!(
         path.stopped_at == Some(spawned.by_name["mirror"]),
         "{path:?}"
     );
-    assert!(engine.logic.volumes().occupants(0).next().is_none());
+    assert!(engine.logic().volumes().occupants(0).next().is_none());
     let _ = receiver;
     drop(engine.shutdown());
     Ok(())
@@ -237,17 +238,17 @@ fn emitters_and_music_start_with_the_level() -> anyhow::Result<()> {
            emitters: [(instance: "lamp", sound: "hum", volume: 0.3)]"#,
     )?;
     frames(&mut engine, 3, |_, _| {})?;
-    let played = engine.audio.played();
+    let played = engine.audio().played();
     assert_eq!(played.len(), 2, "{played:?}");
     let music = played.iter().find(|p| p.bus == Bus::Music).expect("music");
     assert!(music.looped && music.position.is_none(), "{music:?}");
-    assert_eq!(engine.audio.volume(Bus::Music), 0.5);
+    assert_eq!(engine.audio().volume(Bus::Music), 0.5);
     let hum = played.iter().find(|p| p.bus == Bus::Effects).expect("hum");
     assert!(hum.looped, "{hum:?}");
     assert_eq!(hum.position, Some(Vec3::new(1.0, 3.0, 0.0)));
     assert!((hum.volume - 0.3).abs() < 1e-6);
     let peak = engine
-        .audio
+        .audio()
         .recorded_samples()
         .expect("silent")
         .iter()
@@ -271,7 +272,7 @@ fn laser_through_a_glass_slab_comes_out_parallel_and_shifted() -> anyhow::Result
     )?;
     frames(&mut engine, 3, |_, _| {})?;
     let emitter = spawned.by_name["emitter"];
-    let path: LaserPath = (*engine.world.get::<&LaserPath>(emitter)?).clone();
+    let path: LaserPath = (*engine.world().get::<&LaserPath>(emitter)?).clone();
     assert_eq!(
         path.points.len(),
         4,

@@ -3,7 +3,8 @@
 
 use std::path::{Path, PathBuf};
 
-use candela::assets::{AssetError, AssetRoot, load_level};
+use candela::assets::{AssetError, AssetRoot};
+use candela::level::load_level;
 
 struct Dir(PathBuf);
 
@@ -195,7 +196,7 @@ fn a_valid_level_loads() {
             "",
         ),
     );
-    let desc = load_level(&path, &d.root()).expect("loads");
+    let desc = load_level(&path, &d.root()).expect("loads").scene;
     assert_eq!(desc.instances.len(), 2);
     assert_eq!(desc.models[0].meshes[0].triangles.len(), 1);
 }

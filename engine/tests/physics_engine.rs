@@ -2,9 +2,10 @@
 //! falls onto its floor through `Engine::frame`'s fixed steps, and once it sleeps the frames
 //! carry no instance changes (sleeping bodies produce no commits).
 
-use candela::app::{Engine, Environment};
-use candela::assets::{AssetRoot, load_level};
+use candela::app::{Engine, Environment, Step};
+use candela::assets::AssetRoot;
 use candela::ecs::Transform;
+use candela::level::load_level;
 use candela::render::RenderConfig;
 
 const LEVEL: &str = r#"Level(
@@ -29,7 +30,7 @@ fn crate_falls_in_the_frame_loop_and_sleeping_costs_no_commits() -> anyhow::Resu
         seed: 3,
         ..RenderConfig::cpu(32, 16)
     };
-    let mut engine = Engine::new(config, Environment::of(&scene))?;
+    let mut engine = Engine::new(config, Environment::of(&scene.scene))?;
     let spawned = engine.spawn_level(&scene);
     let crate_entity = spawned.by_name["crate"];
 
@@ -37,28 +38,32 @@ fn crate_falls_in_the_frame_loop_and_sleeping_costs_no_commits() -> anyhow::Resu
     let mut frames = 0;
     // Frames of 1/60 s: one fixed step each. At most 10 s for the crate to land and sleep.
     while frames < 600 {
-        let report = engine.frame(1.0 / 60.0, |_, _, _| {})?;
+        let report = engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
         frames += 1;
         moving_bytes.push(report.commit_bytes);
-        if frames > 5 && engine.physics.awake_bodies() == 0 {
+        if frames > 5 && engine.physics().awake_bodies() == 0 {
             break;
         }
     }
     assert_eq!(
-        engine.physics.awake_bodies(),
+        engine.physics().awake_bodies(),
         0,
         "the crate never fell asleep"
     );
-    let y = engine.world.get::<&Transform>(crate_entity)?.translation.y;
+    let y = engine
+        .world()
+        .get::<&Transform>(crate_entity)?
+        .translation
+        .y;
     // A 0.6 m crate resting on a face: centre 0.3 m up (1 cm for contact softness).
     assert!((y - 0.3).abs() < 0.01, "crate rests at y = {y}");
 
     // The frame that saw the last move may still carry it; after that, nothing.
-    engine.frame(1.0 / 60.0, |_, _, _| {})?;
+    engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
     let mut idle_bytes = Vec::new();
     for _ in 0..10 {
-        let report = engine.frame(1.0 / 60.0, |_, _, _| {})?;
-        assert_eq!(engine.physics.last_step().transform_writes, 0);
+        let report = engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
+        assert_eq!(engine.physics().last_step().transform_writes, 0);
         idle_bytes.push(report.commit_bytes);
     }
     let falling = moving_bytes[10];

@@ -5,8 +5,9 @@ mod physics_common;
 
 use std::path::{Path, PathBuf};
 
-use candela::assets::{AssetError, AssetRoot, SceneDesc, load_level};
+use candela::assets::{AssetError, AssetRoot};
 use candela::ecs::Transform;
+use candela::level::{PlayableLevel, load_level};
 use candela::sim::physics::{BodyKind, PhysicsWorld, SensorContacts};
 use glam::Vec3;
 
@@ -47,13 +48,15 @@ impl Drop for Dir {
 const FLOOR: &str = r#"(model: "floor", body: Static(shape: Trimesh))"#;
 
 /// Spawns the level's bodies as `Engine::spawn_level` does (transform + body + collider).
-fn spawn(scene: &SceneDesc, world: &mut hecs::World) -> Vec<hecs::Entity> {
-    scene
+fn spawn(level: &PlayableLevel, world: &mut hecs::World) -> Vec<hecs::Entity> {
+    level
+        .scene
         .instances
         .iter()
-        .map(|i| {
+        .zip(&level.bodies)
+        .map(|(i, body)| {
             let e = world.spawn((Transform::from_matrix(i.world_from_model),));
-            if let Some(b) = &i.body {
+            if let Some(b) = body {
                 let _ = world.insert(e, (b.body, b.collider.clone()));
                 if b.collider.sensor {
                     let _ = world.insert_one(e, SensorContacts::default());
@@ -78,9 +81,9 @@ fn level_bodies_fall_and_land() -> Result<(), AssetError> {
     );
     let scene = load_level(&path, &dir.root())?;
     let kinds: Vec<Option<BodyKind>> = scene
-        .instances
+        .bodies
         .iter()
-        .map(|i| i.body.as_ref().map(|b| b.body.kind))
+        .map(|b| b.as_ref().map(|b| b.body.kind))
         .collect();
     assert_eq!(
         kinds,
@@ -92,10 +95,10 @@ fn level_bodies_fall_and_land() -> Result<(), AssetError> {
         ]
     );
     assert!(
-        scene.instances[1].dynamic,
+        scene.scene.instances[1].dynamic,
         "a dynamic body's instance moves"
     );
-    assert!(!scene.instances[0].dynamic);
+    assert!(!scene.scene.instances[0].dynamic);
     let mut world = hecs::World::new();
     let mut physics = PhysicsWorld::new();
     let entities = spawn(&scene, &mut world);
@@ -213,7 +216,7 @@ fn existing_levels_load_unchanged() -> Result<(), AssetError> {
     let mut loaded = 0;
     for level in ["script/small.ron", "cornell_box.ron", "demo/demo.ron"] {
         let scene = load_level(&assets.join(level), &root)?;
-        assert!(scene.instances.iter().all(|i| i.body.is_none()));
+        assert!(scene.bodies.iter().all(Option::is_none));
         loaded += 1;
     }
     assert_eq!(loaded, 3);

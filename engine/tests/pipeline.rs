@@ -11,7 +11,7 @@
 
 use std::time::{Duration, Instant};
 
-use candela::app::{Engine, Environment};
+use candela::app::{Engine, Environment, Step};
 use candela::assets::{
     CameraDesc, Material, MaterialKind, Mesh, Model, Placement, RenderSettings, SkyDesc,
 };
@@ -86,10 +86,10 @@ fn config(spp: u32, size: u32) -> RenderConfig {
 /// A floor, a lamp above it and `movers` platforms; returns the engine and the platforms.
 fn scene(spp: u32, size: u32, movers: usize) -> (Engine, Vec<hecs::Entity>) {
     let mut engine = Engine::new(config(spp, size), environment()).expect("engine starts");
-    let floor = engine.upkeep.add_model(&quad_model(20.0, 0.0));
-    let lamp = engine.upkeep.add_model(&quad_model(2.0, 5.0));
-    let platform = engine.upkeep.add_model(&quad_model(0.5, 0.0));
-    engine.world.spawn((
+    let floor = engine.add_model(&quad_model(20.0, 0.0));
+    let lamp = engine.add_model(&quad_model(2.0, 5.0));
+    let platform = engine.add_model(&quad_model(0.5, 0.0));
+    engine.world_mut().spawn((
         Transform::IDENTITY,
         Renderable {
             model: floor,
@@ -97,7 +97,7 @@ fn scene(spp: u32, size: u32, movers: usize) -> (Engine, Vec<hecs::Entity>) {
         },
         Static,
     ));
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::Y * 4.0),
         Renderable {
             model: lamp,
@@ -106,7 +106,7 @@ fn scene(spp: u32, size: u32, movers: usize) -> (Engine, Vec<hecs::Entity>) {
     ));
     let platforms = (0..movers)
         .map(|i| {
-            engine.world.spawn((
+            engine.world_mut().spawn((
                 Transform::from_translation(Vec3::new(i as f32 - movers as f32 / 2.0, 1.0, 0.0)),
                 Renderable {
                     model: platform,
@@ -123,7 +123,9 @@ fn every_frame_renders_and_shutdown_is_clean() {
     let (mut engine, platforms) = scene(1, 16, 5);
     for frame in 0..30 {
         engine
-            .frame(1.0 / 60.0, |world, _, dt| {
+            .frame(1.0 / 60.0, &mut |step: &mut Step<'_>| {
+                let world = &mut *step.world;
+                let dt = step.step_seconds;
                 for (i, &p) in platforms.iter().enumerate() {
                     if let Ok(mut t) = world.get::<&mut Transform>(p) {
                         t.translation.y = 1.0 + (frame as f32 * dt as f32 + i as f32).sin();
@@ -145,7 +147,9 @@ fn every_frame_renders_and_shutdown_is_clean() {
     // Dropping a running engine joins its render thread (no deadlock, no panic).
     let (mut engine, _) = scene(1, 16, 3);
     for _ in 0..5 {
-        engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
+        engine
+            .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
+            .expect("frame");
     }
     drop(engine);
 }
@@ -155,7 +159,7 @@ fn queries_see_the_last_commit_while_the_render_thread_renders() {
     let (mut engine, platforms) = scene(4, 48, 3);
     let probe = platforms[1];
     let x = engine
-        .world
+        .world()
         .get::<&Transform>(probe)
         .expect("probe")
         .translation
@@ -165,7 +169,9 @@ fn queries_see_the_last_commit_while_the_render_thread_renders() {
         let target = 0.5 + 0.1 * frame as f32;
         let mut seen = None;
         engine
-            .frame(1.0 / 60.0, |world, queries, _| {
+            .frame(1.0 / 60.0, &mut |step: &mut Step<'_>| {
+                let world = &mut *step.world;
+                let queries = step.queries;
                 // The ray down onto the probe platform sees last frame's height.
                 let ray = Ray::new(Vec3::new(x, 3.5, 0.0), Vec3::NEG_Y); // below the lamp
                 if let Some(hit) = queries.closest(&ray) {
@@ -199,7 +205,9 @@ fn update_and_render_overlap() {
     let (mut engine, _) = scene(1, 96, 20);
     let mut render = 0.0;
     for _ in 0..4 {
-        engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
+        engine
+            .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
+            .expect("frame");
         render = engine
             .wait_rendered()
             .expect("result")
@@ -215,14 +223,18 @@ fn update_and_render_overlap() {
     // Warm up, then time 12 frames.
     for _ in 0..3 {
         engine
-            .frame(1.0 / 60.0, |_, _, _| std::thread::sleep(update))
+            .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {
+                std::thread::sleep(update)
+            })
             .expect("frame");
     }
     let started = Instant::now();
     let frames = 12;
     for _ in 0..frames {
         engine
-            .frame(1.0 / 60.0, |_, _, _| std::thread::sleep(update))
+            .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {
+                std::thread::sleep(update)
+            })
             .expect("frame");
         for r in engine.rendered() {
             render_total += r.expect("ok").render_seconds;
@@ -256,7 +268,8 @@ fn still_scene_converges_to_a_direct_render() {
             engine.capture_next();
         }
         engine
-            .frame(1.0 / 60.0, |world, _, _| {
+            .frame(1.0 / 60.0, &mut |step: &mut Step<'_>| {
+                let world = &mut *step.world;
                 if moving {
                     for &p in &platforms {
                         if let Ok(mut t) = world.get::<&mut Transform>(p) {
@@ -269,7 +282,7 @@ fn still_scene_converges_to_a_direct_render() {
     }
     let positions: Vec<Mat4> = platforms
         .iter()
-        .map(|&p| engine.world.get::<&GlobalTransform>(p).expect("global").0)
+        .map(|&p| engine.world().get::<&GlobalTransform>(p).expect("global").0)
         .collect();
     let results = engine.shutdown();
     let film = results
@@ -308,7 +321,8 @@ fn still_scene_converges_to_a_direct_render() {
 /// standard error.
 fn candela_direct_mean(desc: &candela::assets::SceneDesc, size: u32, spp: u32) -> (f64, f64) {
     use candela::render::cpu::CpuTracer;
-    use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+    use candela::render::{FrameSettings, Tracer, frame_uniforms};
+    use candela::scene::RenderScene;
     let scene = RenderScene::build(desc);
     let mut tracer = CpuTracer::new();
     let mut means = Vec::new();

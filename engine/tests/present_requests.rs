@@ -4,7 +4,7 @@
 //! converging restarts — and the overlay's bytes are counted in the frame report. Shutdown
 //! returns every result and joins the thread.
 
-use candela::app::{Engine, Environment};
+use candela::app::{Engine, Environment, Step};
 use candela::assets::{CameraDesc, RenderSettings, SkyDesc};
 use candela::commit::{Overlay, PresentRequest};
 use candela::render::RenderConfig;
@@ -68,7 +68,11 @@ fn headless_engines_follow_the_surface_size_and_present_nothing() {
     for frame in 0..6u32 {
         let size = if frame < 3 { (32, 16) } else { (20, 10) };
         engine.present_next(request(size, (frame == 1).then(overlay)));
-        reports.push(engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame"));
+        reports.push(
+            engine
+                .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
+                .expect("frame"),
+        );
     }
     assert_eq!(reports[0].overlay_bytes, 0);
     assert_eq!(

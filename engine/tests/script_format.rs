@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use candela::app::{Motion, Script, ScriptError};
-use candela::assets::SceneDesc;
+use candela::level::PlayableLevel;
 
 fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -24,7 +24,7 @@ fn small_text() -> String {
     std::fs::read_to_string(small_script_path()).expect("determinism.ron")
 }
 
-fn small_level() -> SceneDesc {
+fn small_level() -> PlayableLevel {
     Script::read(&small_script_path())
         .expect("script")
         .load_level()
@@ -60,7 +60,7 @@ fn every_field_round_trips() -> Result<(), ScriptError> {
 #[test]
 fn committed_scripts_parse_and_bind() -> Result<(), ScriptError> {
     let script = Script::read(&small_script_path())?;
-    let bound = script.bind(&small_level())?;
+    let bound = script.bind(&small_level().scene)?;
     // "crate_*" moves the three crates in level order; "gate" one instance.
     assert_eq!(bound.motion_targets[0], vec![5, 6, 7]);
     assert_eq!(bound.motion_targets[3], vec![8]);
@@ -222,7 +222,7 @@ fn bad_values_name_the_item() {
 
 #[test]
 fn names_the_level_lacks_are_errors() {
-    let level = small_level();
+    let level = small_level().scene;
     let bind = |extra: &str| parse(&with(extra)).and_then(|s| s.bind(&level));
     match bind(
         "motions: [(instance: \"crate_0\", motion: Spin(deg_per_second: 1)), (instance: \"boat\", motion: Spin(deg_per_second: 1))]",

@@ -9,8 +9,8 @@ use std::collections::HashMap;
 use candela::accel::Upkeep;
 use candela::assets::{Material, MaterialKind, Mesh, Model, Placement};
 use candela::ecs::ModelHandle;
-use candela::render::RenderScene;
 use candela::render::cpu::rng::Rng;
+use candela::scene::RenderScene;
 use candela::trace::Ray;
 use glam::{Mat4, Quat, Vec3};
 

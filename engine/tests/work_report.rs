@@ -17,13 +17,15 @@
 use std::path::Path;
 
 use candela::accel::Upkeep;
-use candela::app::{Engine, Environment, FrameWork, Waves, waves_system};
+use candela::app::{Engine, Environment, FrameWork, Step, Waves, waves_system};
 use candela::assets::{
     AssetError, AssetRoot, CameraDesc, Level, Material, MaterialKind, Mesh, Model, Needs,
     Placement, RenderSettings, SkyDesc, WaveDesc, scene_from_level,
 };
 use candela::ecs::{Deformable, LightGroup, Renderable, Static, Transform};
-use candela::render::{RenderConfig, RenderScene};
+use candela::level::playable_from_level;
+use candela::render::RenderConfig;
+use candela::scene::RenderScene;
 use glam::{Mat4, Vec3};
 
 /// A `n × n` grid of quads, `size` metres wide, in the xz plane.
@@ -108,7 +110,9 @@ fn run(
     (0..frames)
         .map(|frame| {
             before(engine, frame);
-            let report = engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
+            let report = engine
+                .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
+                .expect("frame");
             let rendered = engine.wait_rendered().expect("a result").expect("renders");
             assert_eq!(rendered.lights, report.work.lights, "frame {frame}");
             assert_eq!(report.work.awake_bodies, 0, "no bodies in these scenes");
@@ -121,12 +125,12 @@ fn run(
 #[test]
 fn static_scene_does_no_bvh_work_after_its_first_frame() {
     let mut engine = engine();
-    let floor = engine.upkeep.add_model(&grid_model(8, 10.0, 0.0));
-    let lamp = engine.upkeep.add_model(&grid_model(1, 1.0, 5.0));
+    let floor = engine.add_model(&grid_model(8, 10.0, 0.0));
+    let lamp = engine.add_model(&grid_model(1, 1.0, 5.0));
     engine
-        .world
+        .world_mut()
         .spawn((Transform::IDENTITY, renderable(floor), Static));
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::Y * 3.0),
         renderable(lamp),
         Static,
@@ -149,17 +153,17 @@ fn static_scene_does_no_bvh_work_after_its_first_frame() {
 #[test]
 fn rigid_mover_costs_a_tlas_build_and_no_blas_work() {
     let mut engine = engine();
-    let floor = engine.upkeep.add_model(&grid_model(8, 10.0, 0.0));
-    let crate_model = engine.upkeep.add_model(&grid_model(2, 0.5, 0.0));
+    let floor = engine.add_model(&grid_model(8, 10.0, 0.0));
+    let crate_model = engine.add_model(&grid_model(2, 0.5, 0.0));
     engine
-        .world
+        .world_mut()
         .spawn((Transform::IDENTITY, renderable(floor), Static));
-    let mover = engine.world.spawn((
+    let mover = engine.world_mut().spawn((
         Transform::from_translation(Vec3::Y),
         renderable(crate_model),
     ));
     let work = run(&mut engine, 6, |engine, frame| {
-        if let Ok(mut t) = engine.world.get::<&mut Transform>(mover) {
+        if let Ok(mut t) = engine.world_mut().get::<&mut Transform>(mover) {
             t.translation.x = 0.1 * frame as f32;
         }
     });
@@ -177,7 +181,7 @@ fn deforming_mesh_costs_a_refit_per_frame() {
     let mut engine = engine();
     let model = grid_model(16, 4.0, 0.0);
     let positions = model.meshes[0].positions.clone();
-    let water = engine.upkeep.add_model(&model);
+    let water = engine.add_model(&model);
     let waves = Waves::new(
         WaveDesc {
             amplitude: 0.1,
@@ -193,10 +197,10 @@ fn deforming_mesh_costs_a_refit_per_frame() {
         dirty: false,
     };
     engine
-        .world
+        .world_mut()
         .spawn((Transform::IDENTITY, renderable(water), waves, deformable));
     let work = run(&mut engine, 6, |engine, frame| {
-        waves_system(&mut engine.world, frame as f64 / 60.0);
+        waves_system(engine.world_mut(), frame as f64 / 60.0);
     });
     for (frame, w) in work.iter().enumerate().skip(1) {
         assert_eq!(w.blas_refits + w.blas_rebuilds, 1, "frame {frame}");
@@ -276,9 +280,9 @@ fn switched_off_light_group_leaves_the_render_side_distribution() {
 
     // The same through the engine: the render thread reports its own table's size.
     let mut engine = engine();
-    let lamp = engine.upkeep.add_model(&grid_model(2, 1.0, 5.0));
+    let lamp = engine.add_model(&grid_model(2, 1.0, 5.0));
     for (x, group) in [(-2.0, 1), (2.0, 2), (0.0, 2)] {
-        engine.world.spawn((
+        engine.world_mut().spawn((
             Transform::from_translation(Vec3::new(x, 2.0, 0.0)),
             renderable(lamp),
             Static,
@@ -287,7 +291,7 @@ fn switched_off_light_group_leaves_the_render_side_distribution() {
     }
     let work = run(&mut engine, 3, |engine, frame| {
         if frame == 1 {
-            engine.upkeep.set_light_group(2, false);
+            engine.set_light_group(2, false);
         }
     });
     assert_eq!(work[0].lights, 24);
@@ -327,9 +331,9 @@ fn declared_needs_refuse_undeclared_features() -> Result<(), Box<dyn std::error:
         }
     );
     let ok = text("needs: (glass: true, emitters: true, sun: true),");
-    scene_from_level(path, &Level::parse(path, &ok)?, &root)?;
+    playable_from_level(path, &Level::parse(path, &ok)?, &root)?;
     let bad = text("needs: (emitters: true),");
-    match scene_from_level(path, &Level::parse(path, &bad)?, &root) {
+    match playable_from_level(path, &Level::parse(path, &bad)?, &root) {
         Err(AssetError::Level { message, .. }) => {
             assert!(message.contains("uses glass"), "{message}")
         }
@@ -342,23 +346,23 @@ fn declared_needs_refuse_undeclared_features() -> Result<(), Box<dyn std::error:
 fn sleeping_bodies_produce_no_commits() {
     use candela::sim::physics::{Collider, ColliderShape, RigidBody};
     let mut engine = engine();
-    let floor = engine.upkeep.add_model(&grid_model(4, 10.0, 0.0));
-    let lamp = engine.upkeep.add_model(&grid_model(1, 1.0, 5.0));
-    let crate_model = engine.upkeep.add_model(&grid_model(1, 0.5, 0.0));
+    let floor = engine.add_model(&grid_model(4, 10.0, 0.0));
+    let lamp = engine.add_model(&grid_model(1, 1.0, 5.0));
+    let crate_model = engine.add_model(&grid_model(1, 0.5, 0.0));
     let ground = Collider::new(&ColliderShape::Box {
         half_extents: Vec3::new(5.0, 0.5, 5.0),
     })
     .expect("floor collider");
     engine
-        .world
+        .world_mut()
         .spawn((Transform::IDENTITY, renderable(floor), Static));
     // The floor's collider: a box whose top face is the grid's surface (y = 0).
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::new(0.0, -0.5, 0.0)),
         RigidBody::fixed(),
         ground,
     ));
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::Y * 3.0),
         renderable(lamp),
         Static,
@@ -367,7 +371,7 @@ fn sleeping_bodies_produce_no_commits() {
         half_extents: Vec3::splat(0.25),
     })
     .expect("crate collider");
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::new(0.0, 1.5, 0.0)),
         renderable(crate_model),
         RigidBody::dynamic(),
@@ -375,7 +379,9 @@ fn sleeping_bodies_produce_no_commits() {
     ));
     let work: Vec<FrameWork> = (0..360)
         .map(|_| {
-            let report = engine.frame(1.0 / 60.0, |_, _, _| {}).expect("frame");
+            let report = engine
+                .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
+                .expect("frame");
             let _ = engine.wait_rendered().expect("a result").expect("renders");
             report.work
         })

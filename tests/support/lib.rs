@@ -11,7 +11,8 @@ pub mod xvfb;
 use std::path::PathBuf;
 
 use candela::assets::{CameraDesc, Material, Mesh, Model, Placement, SceneDesc};
-use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, Tracer, frame_uniforms};
+use candela::scene::RenderScene;
 use glam::{Mat4, Vec3};
 
 /// `../shared/external` beside the repository (test data made by others; never copied in).

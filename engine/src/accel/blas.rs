@@ -16,13 +16,14 @@
 use glam::{Vec3, Vec3A};
 use obvhs::{aabb::Aabb as ObAabb, triangle::Triangle};
 
-use super::MAX_DEPTH;
-use super::bounds::Aabb;
 use super::bvh2::{BuildQuality, build_balanced, build_bvh2};
 use super::collapse::{Costs, Wide, collapse};
 use crate::layout::{
     GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT, LEAF_COUNT_SHIFT, LEAF_INDEX_MASK, MAX_LEAF_BLOCKS,
 };
+use crate::scene::Aabb;
+use crate::trace::MAX_DEPTH;
+use crate::trace::triangle::tri_lane;
 
 /// How a BLAS is built. [`BlasParams::default`] is what the engine uses; the other values exist
 /// for measurements (`tools/peer_bench`) and offline builds.
@@ -211,10 +212,4 @@ fn pack_block<'a>(tris: impl Iterator<Item = (&'a Triangle, u32)>) -> GpuTri4 {
         block.prim[lane] = prim;
     }
     block
-}
-
-/// The stored form of a triangle: `[v0, e1 = v1 - v0, e2 = v2 - v0]`. Every consumer (blocks,
-/// the brute-force reference) uses this function so that all of them intersect the same numbers.
-pub fn tri_lane(v0: Vec3, v1: Vec3, v2: Vec3) -> [Vec3; 3] {
-    [v0, v1 - v0, v2 - v0]
 }

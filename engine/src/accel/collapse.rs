@@ -25,8 +25,8 @@
 use glam::Vec3;
 use obvhs::bvh2::Bvh2;
 
-use super::bounds::Aabb;
 use crate::layout::{GpuBvh8Node, INVALID, LEAF_BIT};
+use crate::scene::Aabb;
 
 /// Relative costs the collapse minimises (units: one 8-wide node test). Also the constants of the
 /// reported SAH cost: `sah = Σ_nodes A(node)/A(root)·node + Σ_leaves A(leaf)/A(root)·leaf·blocks`.

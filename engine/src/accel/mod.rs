@@ -57,7 +57,8 @@
 
 mod binned;
 pub mod blas;
-pub mod bounds;
+mod flatten;
+
 mod bvh2;
 mod collapse;
 pub mod origin;
@@ -68,17 +69,12 @@ mod upkeep_deform;
 mod upkeep_instances;
 mod upkeep_report;
 
+pub use crate::scene::Aabb;
 pub use blas::{Blas, BlasParams, build_blas, build_blas_with, build_blas_with_params};
-pub use bounds::Aabb;
 pub use bvh2::BuildQuality;
 pub use refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 pub use tlas::build_tlas;
 pub use upkeep::{REBUILD_RATIO, Upkeep, UpkeepStats};
 pub use upkeep_report::MeshCost;
 
-/// Deepest tree (levels of 8-wide nodes) the builders emit and the tracers' fixed stacks hold.
-/// A traversal pushes at most 7 entries per level plus 8 at the deepest node, so
-/// `7 · (MAX_DEPTH - 1) + 8` entries (239) fit the 256-entry stacks of [`crate::trace`] with
-/// room for one 8-lane vector store. Builds that would be deeper fall back to a balanced
-/// binary tree, whose depth is at most `log2(primitives) + 1` (at most 33 for `u32` counts).
-pub const MAX_DEPTH: u32 = 34;
+pub use crate::trace::MAX_DEPTH;

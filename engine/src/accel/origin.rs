@@ -19,7 +19,7 @@
 use glam::{Mat4, Vec3};
 
 use super::upkeep::Upkeep;
-use crate::render::scene_writes::SceneWrite;
+use crate::scene::SceneWrite;
 
 /// Metres: the origin is always a multiple of this (so subtracting it is exact).
 pub const ORIGIN_GRID: f32 = 64.0;

@@ -8,10 +8,10 @@
 use obvhs::aabb::Aabb as ObAabb;
 
 use super::blas::collapse_bounded;
-use super::bounds::Aabb;
 use super::bvh2::BuildQuality;
 use super::collapse::Costs;
 use crate::layout::{GpuBvh8Node, LEAF_BIT};
+use crate::scene::Aabb;
 
 /// SAH constants of the TLAS: an instance leaf costs a ray transform plus a BLAS root visit,
 /// about two node visits.

@@ -19,16 +19,16 @@ use glam::{Mat4, Vec3};
 use rayon::prelude::*;
 
 use super::blas::{Blas, BlasParams, build_blas_with_params};
-use super::bounds::Aabb;
 use super::refit::{sah_cost, triangle_area_ratio};
 use super::tlas::build_tlas;
 use crate::assets::{Material, Model};
 use crate::ecs::ModelHandle;
 use crate::layout::{GpuBvh8Node, GpuTriangle, GpuVertex};
-use crate::render::lights::{LightTable, build_lights};
-use crate::render::materials::{pack_textures, to_gpu_material};
-use crate::render::scene::{RenderScene, SceneStats, mesh_vertices};
-use crate::render::scene_writes::{SceneHeader, SceneWrite};
+use crate::scene::Aabb;
+use crate::scene::lights::{LightTable, build_lights};
+use crate::scene::materials::{pack_textures, to_gpu_material};
+use crate::scene::{RenderScene, SceneStats, mesh_vertices};
+use crate::scene::{SceneHeader, SceneWrite};
 use crate::trace::TraceBuffer;
 
 /// Rebuild a deforming mesh's BLAS when its SAH cost after refitting exceeds this multiple of

@@ -11,7 +11,7 @@ use super::blas::build_blas_with_params;
 use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
 use super::upkeep::{REBUILD_RATIO, Upkeep};
 use crate::ecs::ModelHandle;
-use crate::render::scene_writes::SceneWrite;
+use crate::scene::SceneWrite;
 
 impl Upkeep {
     /// New object-space positions (and optionally normals) for mesh `mesh` of `model`: refits

@@ -8,11 +8,11 @@
 use glam::Mat4;
 use hecs::Entity;
 
-use super::bounds::Aabb;
 use super::upkeep::Upkeep;
 use crate::ecs::ModelHandle;
 use crate::layout::{GpuInstance, INSTANCE_FLAG_EMISSION_OFF, INSTANCE_FLAG_IDENTITY, INVALID};
-use crate::render::scene_writes::SceneWrite;
+use crate::scene::Aabb;
+use crate::scene::SceneWrite;
 
 fn affine_rows(m: Mat4) -> [[f32; 4]; 3] {
     let r = m.transpose().to_cols_array_2d();

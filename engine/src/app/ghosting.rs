@@ -170,7 +170,7 @@ impl GhostSetup {
 fn run_policy(
     setup: &GhostSetup,
     policy: ConvergePolicy,
-) -> Result<(Film, crate::render::RenderScene), EngineError> {
+) -> Result<(Film, crate::scene::RenderScene), EngineError> {
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
         width: setup.width,
@@ -186,8 +186,8 @@ fn run_policy(
         base_color: Vec3::splat(0.5),
         ..Default::default()
     };
-    let backdrop = engine.upkeep.add_model(&square(40.0, backdrop_material));
-    let lamp = engine.upkeep.add_model(&square(
+    let backdrop = engine.add_model(&square(40.0, backdrop_material));
+    let lamp = engine.add_model(&square(
         setup.object_size,
         Material {
             emission: Vec3::splat(setup.object_radiance),
@@ -196,7 +196,7 @@ fn run_policy(
             ..Default::default()
         },
     ));
-    engine.world.spawn((
+    engine.world_mut().spawn((
         Transform::from_translation(Vec3::Z * -0.5),
         Renderable {
             model: backdrop,
@@ -204,7 +204,7 @@ fn run_policy(
         },
         Static,
     ));
-    let mover = engine.world.spawn((
+    let mover = engine.world_mut().spawn((
         Transform::from_translation(Vec3::X * setup.object_x(0)),
         Renderable {
             model: lamp,
@@ -213,26 +213,26 @@ fn run_policy(
     ));
     let mut film = None;
     for frame in 0..setup.frames {
-        if let Ok(mut t) = engine.world.get::<&mut Transform>(mover) {
+        if let Ok(mut t) = engine.world_mut().get::<&mut Transform>(mover) {
             t.translation.x = setup.object_x(frame);
         }
         if frame + 1 == setup.frames {
             engine.capture_next();
         }
-        engine.frame(1.0 / 60.0, |_, _, _| {})?;
+        engine.frame(1.0 / 60.0, &mut |_: &mut super::Step<'_>| {})?;
         // Lock step: the game side's scene is then the one the render thread rendered.
         if let Some(rendered) = engine.wait_rendered() {
             film = rendered?.film.or(film);
         }
     }
-    let scene = engine.upkeep.scene().clone();
+    let scene = engine.scene().clone();
     let _ = engine.shutdown();
     let film = film.ok_or_else(|| RenderError::Device("no film came back".into()))?;
     Ok((film, scene))
 }
 
 /// A fresh render of `scene` with `setup.reference_spp` samples per pixel and no history.
-fn reference(setup: &GhostSetup, scene: &crate::render::RenderScene) -> Result<Film, RenderError> {
+fn reference(setup: &GhostSetup, scene: &crate::scene::RenderScene) -> Result<Film, RenderError> {
     let environment = setup.environment();
     let mut tracer = CpuTracer::new();
     let mut settings = FrameSettings::new(

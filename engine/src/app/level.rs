@@ -16,6 +16,7 @@ use super::waves::Waves;
 use crate::assets::SceneDesc;
 use crate::audio::{Bus, SoundEmitter};
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
+use crate::level::PlayableLevel;
 use crate::sim::physics::SensorContacts;
 use crate::sim::triggers::LevelLogic;
 
@@ -44,8 +45,10 @@ impl Environment {
 
 impl Engine {
     /// Registers the level's models and materials with the upkeep and spawns one entity per
-    /// instance; sets the environment from the level.
-    pub fn spawn_level(&mut self, desc: &SceneDesc) -> SpawnedLevel {
+    /// instance (with its body, if it has one); sets the environment from the level; starts
+    /// its gameplay.
+    pub fn spawn_level(&mut self, level: &PlayableLevel) -> SpawnedLevel {
+        let desc = &level.scene;
         self.environment = Environment::of(desc);
         self.set_default_camera(desc.camera);
         self.upkeep.add_level_materials(&desc.level_materials);
@@ -58,7 +61,7 @@ impl Engine {
             models,
             ..Default::default()
         };
-        for instance in &desc.instances {
+        for (i, instance) in desc.instances.iter().enumerate() {
             let Some(&model) = spawned.models.get(instance.model) else {
                 continue;
             };
@@ -86,7 +89,7 @@ impl Engine {
                 };
                 let _ = self.world.insert(entity, (waves, deformable));
             }
-            if let Some(physics) = &instance.body {
+            if let Some(Some(physics)) = level.bodies.get(i) {
                 let _ = self
                     .world
                     .insert(entity, (physics.body, physics.collider.clone()));
@@ -99,12 +102,12 @@ impl Engine {
             }
             spawned.entities.push(entity);
         }
-        for &group in &desc.gameplay.lights_off {
+        for &group in &level.gameplay.lights_off {
             self.upkeep.set_light_group(group, false);
         }
-        self.logic = LevelLogic::new(&desc.gameplay, &spawned.entities, &mut self.world);
-        let sounds = &desc.gameplay.sounds;
-        for emitter in &desc.gameplay.emitters {
+        self.logic = LevelLogic::new(&level.gameplay, &spawned.entities, &mut self.world);
+        let sounds = &level.gameplay.sounds;
+        for emitter in &level.gameplay.emitters {
             if let (Some(&entity), Some(sound)) = (
                 spawned.entities.get(emitter.instance),
                 sounds.get(emitter.sound),
@@ -113,7 +116,7 @@ impl Engine {
                 let _ = self.world.insert_one(entity, looping);
             }
         }
-        if let Some((sound, volume)) = desc.gameplay.music
+        if let Some((sound, volume)) = level.gameplay.music
             && let Some(music) = sounds.get(sound)
         {
             self.audio.set_volume(Bus::Music, volume);

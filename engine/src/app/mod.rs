@@ -6,10 +6,13 @@
 mod clock;
 mod engine;
 mod fly_camera;
+mod frame;
 mod frame_limiter;
+mod game;
 mod ghosting;
 mod input;
 mod level;
+mod phase;
 mod script;
 mod script_bind;
 mod script_check;
@@ -24,12 +27,14 @@ mod window_app;
 mod work;
 
 pub use clock::FixedClock;
-pub use engine::{Engine, EngineError, Environment, FrameReport};
+pub use engine::{Engine, EngineError, Environment};
 pub use fly_camera::{FlyCamera, fly_camera_system};
 pub use frame_limiter::FrameLimiter;
+pub use game::{Command, Commands, FrameInput, Game, LevelEvent, SetupError, Step};
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
+pub use phase::{FrameReport, Phase, PhaseTimes};
 pub use script::{
     CameraKey, Interpolation, LightSwitch, Motion, MotionEntry, ObjectKey, Screenshot, Script,
     ScriptError, ScriptLevel, ScriptRender, ScriptTracer,
@@ -40,9 +45,7 @@ pub use script_run::{FrameTiming, RunOptions, ScriptReport, ShotResult, run_scri
 pub use stats::FrameStats;
 pub use stats_overlay::StatsOverlay;
 pub use waves::{Waves, waves_system};
-pub use window::{
-    WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport, display_problem, run_window,
-};
+pub use window::{WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_window};
 pub use work::{FrameWork, WorkTotals};
 
 /// Action names of the fly camera.

@@ -9,7 +9,8 @@ use std::collections::HashSet;
 use std::path::{Path, PathBuf};
 
 use super::script::{Script, ScriptError};
-use crate::assets::{AssetRoot, SceneDesc, load_level};
+use crate::assets::{AssetRoot, SceneDesc};
+use crate::level::{PlayableLevel, load_level};
 
 /// Level instances (indices into `SceneDesc::instances`, level order) of each motion entry.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -86,7 +87,7 @@ impl Script {
 
     /// Loads the level the script names (paths relative to the script's folder; the asset
     /// root defaults to the level's folder).
-    pub fn load_level(&self) -> Result<SceneDesc, ScriptError> {
+    pub fn load_level(&self) -> Result<PlayableLevel, ScriptError> {
         let Some(level) = &self.level else {
             return Err(ScriptError::NoLevel {
                 path: self.source.clone(),

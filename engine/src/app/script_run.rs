@@ -34,14 +34,16 @@ use std::time::Instant;
 
 use glam::Vec3;
 
-use super::engine::{Engine, Environment, FrameReport};
+use super::engine::{Engine, Environment};
+use super::game::Step;
+use super::phase::FrameReport;
 use super::script::{Script, ScriptError, ScriptTracer};
 use super::script_motion::{apply_motion, camera_at, camera_transform, cut_at};
-use super::waves::waves_system;
 use super::work::FrameWork;
 use crate::accel::UpkeepStats;
-use crate::assets::{Needs, SceneDesc};
+use crate::assets::Needs;
 use crate::ecs::{CameraRig, Transform};
+use crate::level::PlayableLevel;
 use crate::render::film::{ConvergePolicy, Film, TonemapSettings, write_exr, write_png};
 use crate::render::{RenderConfig, RenderError, Rendered, TracerChoice};
 
@@ -120,7 +122,6 @@ impl Collector<'_> {
         if let Some(t) = self.report.frames.get_mut(rendered.frame as usize) {
             t.apply_seconds = rendered.apply_seconds;
             t.render_seconds = rendered.render_seconds;
-            t.upkeep = rendered.upkeep;
         }
         let Some(film) = rendered.film else {
             return Ok(());
@@ -166,15 +167,16 @@ impl Collector<'_> {
     }
 }
 
-/// Runs `script` on the level `desc` (checked and bound first). `on_frame(n)` is called after
+/// Runs `script` on `level` (checked and bound first). `on_frame(n)` is called after
 /// frame `n` was handed to the render thread (for progress bars).
 pub fn run_script(
     script: &Script,
-    desc: &SceneDesc,
+    level: &PlayableLevel,
     options: &RunOptions,
     on_frame: &mut dyn FnMut(u32),
 ) -> Result<ScriptReport, ScriptError> {
     script.validate()?;
+    let desc = &level.scene;
     let bound = script.bind(desc)?;
     let tracer = options.tracer.unwrap_or(script.render.tracer);
     let (width, height) = options
@@ -198,7 +200,7 @@ pub fn run_script(
     };
     let mut engine = Engine::new(config, Environment::of(desc))
         .map_err(|super::EngineError::Render(e)| render_error(e))?;
-    let spawned = engine.spawn_level(desc);
+    let spawned = engine.spawn_level(level);
     let entity_of = |k: usize| {
         desc.instances[k]
             .name
@@ -216,7 +218,7 @@ pub fn run_script(
     moved.dedup();
     let camera = (!script.camera.is_empty()).then(|| {
         let view = camera_at(&script.camera, 0, &desc.camera);
-        engine.world.spawn((
+        engine.world_mut().spawn((
             camera_transform(&view),
             CameraRig {
                 vertical_fov: view.vertical_fov_deg.to_radians(),
@@ -243,12 +245,12 @@ pub fn run_script(
         let seconds = frame as f64 * spf;
         if let Some(entity) = camera {
             let view = camera_at(&script.camera, frame, &desc.camera);
-            if let Ok(mut rig) = engine.world.get::<&mut CameraRig>(entity) {
+            if let Ok(mut rig) = engine.world_mut().get::<&mut CameraRig>(entity) {
                 rig.vertical_fov = view.vertical_fov_deg.to_radians();
                 rig.focus_distance =
                     (Vec3::from(view.look_at) - Vec3::from(view.position)).length();
             }
-            if let Ok(mut t) = engine.world.get::<&mut Transform>(entity) {
+            if let Ok(mut t) = engine.world_mut().get::<&mut Transform>(entity) {
                 *t = camera_transform(&view);
             }
         }
@@ -272,20 +274,19 @@ pub fn run_script(
                 );
             }
             if let Some(entity) = entity_of(k)
-                && let Ok(mut current) = engine.world.get::<&mut Transform>(entity)
+                && let Ok(mut current) = engine.world_mut().get::<&mut Transform>(entity)
             {
                 *current = t;
             }
         }
         for switch in script.lights.iter().filter(|s| s.frame == frame) {
-            engine.upkeep.set_light_group(switch.group, switch.on);
+            engine.set_light_group(switch.group, switch.on);
         }
-        waves_system(&mut engine.world, seconds);
         if script.screenshots.iter().any(|s| s.frame == frame) {
             engine.capture_next();
         }
         let script_seconds = update_started.elapsed().as_secs_f64();
-        let report: FrameReport = match engine.frame(spf, |_, _, _| {}) {
+        let report: FrameReport = match engine.frame(spf, &mut |_: &mut Step<'_>| {}) {
             Ok(r) => r,
             Err(super::EngineError::Render(e)) => {
                 // The render thread's own error explains a failed hand-off better.
@@ -297,10 +298,11 @@ pub fn run_script(
         };
         collector.report.frames.push(FrameTiming {
             frame,
-            update_seconds: script_seconds + report.update_seconds,
-            upkeep_seconds: report.upkeep_seconds,
-            handoff_seconds: report.handoff_seconds,
+            update_seconds: script_seconds + report.update_seconds(),
+            upkeep_seconds: report.upkeep_seconds(),
+            handoff_seconds: report.handoff_seconds(),
             commit_bytes: report.commit_bytes,
+            upkeep: report.upkeep,
             work: report.work,
             ..Default::default()
         });

@@ -6,7 +6,7 @@
 //! their text lines. Main thread. Must not: draw (the overlay does) or time anything itself
 //! except the wall time between frames it is given.
 
-use super::engine::FrameReport;
+use super::phase::{FrameReport, Phase};
 use crate::render::Rendered;
 
 /// Weight of the newest frame in the running averages (≈ the last 10 frames count).
@@ -25,9 +25,8 @@ pub struct FrameStats {
     /// Which tracer renders and on what ("cpu", "gpu on llvmpipe", …).
     pub tracer: String,
     pub frame: Option<f64>,
-    pub update: Option<f64>,
-    pub upkeep: Option<f64>,
-    pub handoff: Option<f64>,
+    /// Per main-thread [`Phase`], in `Phase::ALL` order.
+    pub phases: [Option<f64>; Phase::ALL.len()],
     pub commit_bytes: Option<f64>,
     pub overlay_bytes: Option<f64>,
     pub apply: Option<f64>,
@@ -49,15 +48,18 @@ impl FrameStats {
     /// Adds the main thread's figures of one frame and its wall time.
     pub fn observe_frame(&mut self, report: &FrameReport, frame_seconds: f64) {
         smooth(&mut self.frame, frame_seconds);
-        smooth(&mut self.update, report.update_seconds);
-        smooth(&mut self.upkeep, report.upkeep_seconds);
-        smooth(&mut self.handoff, report.handoff_seconds);
+        for (average, (_, seconds)) in self.phases.iter_mut().zip(report.phases.iter()) {
+            smooth(average, seconds);
+        }
         smooth(&mut self.commit_bytes, report.commit_bytes as f64);
         smooth(&mut self.overlay_bytes, report.overlay_bytes as f64);
     }
 
     /// Adds the render thread's figures of one frame.
     pub fn observe_rendered(&mut self, rendered: &Rendered) {
+        if self.tracer == "auto" {
+            self.tracer = format!("auto: {}", rendered.tracer);
+        }
         smooth(&mut self.apply, rendered.apply_seconds);
         smooth(&mut self.render, rendered.render_seconds);
         smooth(&mut self.present, rendered.present_seconds);
@@ -74,7 +76,8 @@ impl FrameStats {
         self.frames_rendered += 1;
     }
 
-    /// (label, value) lines for the overlay, in frame order.
+    /// (label, value) lines for the overlay, in frame order: the main thread's phases as
+    /// [`Phase::name`] labels them, then the render thread's figures.
     pub fn lines(&self) -> Vec<(&'static str, String)> {
         let ms = |s: Option<f64>| s.map_or("–".into(), |s| format!("{:.2} ms", s * 1e3));
         let kib = |b: Option<f64>| b.map_or("–".into(), |b| format!("{:.1} KiB", b / 1024.0));
@@ -82,12 +85,14 @@ impl FrameStats {
             .frame
             .filter(|s| *s > 0.0)
             .map_or("–".into(), |s| format!("{:.1} fps", 1.0 / s));
-        vec![
+        let mut lines = vec![
             ("tracer", self.tracer.clone()),
             ("frame", format!("{} ({fps})", ms(self.frame))),
-            ("update", ms(self.update)),
-            ("BVH upkeep", ms(self.upkeep)),
-            ("hand-off wait", ms(self.handoff)),
+        ];
+        for (phase, average) in Phase::ALL.iter().zip(&self.phases) {
+            lines.push((phase.name(), ms(*average)));
+        }
+        lines.extend([
             ("commit apply", ms(self.apply)),
             ("commit size", kib(self.commit_bytes)),
             ("overlay size", kib(self.overlay_bytes)),
@@ -108,7 +113,8 @@ impl FrameStats {
                 ),
             ),
             ("converging", format!("blend {:.3}", self.blend)),
-        ]
+        ]);
+        lines
     }
 }
 
@@ -119,20 +125,15 @@ mod tests {
     #[test]
     fn averages_and_lines() {
         let mut stats = FrameStats::default();
-        let report = FrameReport {
-            update_seconds: 0.002,
+        let mut report = FrameReport {
             commit_bytes: 2048,
             ..Default::default()
         };
+        report.phases.add(Phase::Steps, 0.002);
         stats.observe_frame(&report, 0.020);
-        stats.observe_frame(
-            &FrameReport {
-                update_seconds: 0.012,
-                ..report
-            },
-            0.020,
-        );
-        assert!((stats.update.unwrap_or(0.0) - 0.003).abs() < 1e-12);
+        report.phases.add(Phase::Steps, 0.010);
+        stats.observe_frame(&report, 0.020);
+        assert!((stats.phases[1].unwrap_or(0.0) - 0.003).abs() < 1e-12);
         let lines = stats.lines();
         let get = |label: &str| {
             lines
@@ -142,7 +143,7 @@ mod tests {
                 .unwrap_or_default()
         };
         assert_eq!(get("frame"), "20.00 ms (50.0 fps)");
-        assert_eq!(get("update"), "3.00 ms");
+        assert_eq!(get(Phase::Steps.name()), "3.00 ms");
         assert_eq!(get("commit size"), "2.0 KiB");
         assert_eq!(get("render"), "–");
     }

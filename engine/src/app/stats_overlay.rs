@@ -36,9 +36,14 @@ impl StatsOverlay {
     }
 
     /// Feeds a window event to egui; returns whether egui used it (a click on the overlay
-    /// should not also capture the mouse). Ignored while hidden.
-    pub fn on_window_event(&mut self, window: &Window, event: &winit::event::WindowEvent) -> bool {
-        self.visible && self.state.on_window_event(window, event).consumed
+    /// should not also capture the mouse). Ignored while hidden, unless the game draws a UI.
+    pub fn on_window_event(
+        &mut self,
+        window: &Window,
+        event: &winit::event::WindowEvent,
+        game_ui: bool,
+    ) -> bool {
+        (self.visible || game_ui) && self.state.on_window_event(window, event).consumed
     }
 
     /// Whether the pointer is over the overlay.
@@ -46,13 +51,26 @@ impl StatsOverlay {
         self.visible && self.context.egui_wants_pointer_input()
     }
 
-    /// Runs egui for this frame and tessellates the stats window; `None` while hidden.
-    pub fn build(&mut self, window: &Window, stats: &FrameStats) -> Option<Overlay> {
-        if !self.visible {
+    /// Runs egui for this frame: the game's `ui` (its HUD and menus) when `game_ui` is given,
+    /// then the stats window when it is shown; tessellates both. `None` when there is neither.
+    pub fn build(
+        &mut self,
+        window: &Window,
+        stats: &FrameStats,
+        mut game_ui: Option<&mut dyn FnMut(&egui::Context)>,
+    ) -> Option<Overlay> {
+        if !self.visible && game_ui.is_none() {
             return None;
         }
         let input = self.state.take_egui_input(window);
+        let visible = self.visible;
         let output = self.context.run_pass(input, |context| {
+            if let Some(ui) = game_ui.as_mut() {
+                ui(context);
+            }
+            if !visible {
+                return;
+            }
             egui::Window::new("Candela stats (F3)")
                 .default_pos([8.0, 8.0])
                 .resizable(false)

@@ -2,9 +2,9 @@
 //! runs, presenting every frame on the render thread.
 //!
 //! Owns: [`WindowConfig`] (size, fullscreen, vsync, frame limiter, exposure, overlay, input
-//! map, a frame count with a screenshot, the stop flag Ctrl-C sets), the [`WindowGame`] hooks a
-//! game implements, [`run_window`] and its [`WindowReport`] and typed [`WindowError`]s. The
-//! event handling itself is in `window_app.rs`. Main thread (or any thread on X11).
+//! map, a frame count with a screenshot, the stop flag Ctrl-C sets), [`run_window`] (which
+//! drives a [`Game`]) and its [`WindowReport`] and typed [`WindowError`]s. The event
+//! handling itself is in `window_app.rs`. Main thread (or any thread on X11).
 //! Must not: render or present (the render thread does), or hold game rules.
 
 use std::ffi::OsStr;
@@ -12,13 +12,11 @@ use std::path::PathBuf;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
-use hecs::World;
-
-use super::engine::{Engine, EngineError, Environment};
-use super::input::{InputMap, InputState};
+use super::engine::{EngineError, Environment};
+use super::game::Game;
+use super::input::InputMap;
 use super::stats::FrameStats;
 use super::window_app::WindowApp;
-use crate::query::Queries;
 use crate::render::film::{ImageIoError, TonemapSettings};
 use crate::render::{RenderConfig, RenderError};
 
@@ -68,25 +66,6 @@ impl Default for WindowConfig {
     }
 }
 
-/// What a game plugs into the window runner.
-pub trait WindowGame {
-    /// Once the window and the engine exist: spawn the level, cameras, players.
-    fn start(&mut self, engine: &mut Engine) -> Result<(), String>;
-
-    /// Every rendered frame, before the fixed steps (cameras follow frames, not steps).
-    fn frame(&mut self, _world: &mut World, _input: &InputState, _frame_seconds: f64) {}
-
-    /// Every fixed step of game rules, with ray queries on the previous frame's scene.
-    fn step(
-        &mut self,
-        _world: &mut World,
-        _queries: Queries<'_>,
-        _input: &InputState,
-        _step_seconds: f64,
-    ) {
-    }
-}
-
 /// Why the window loop ended.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum WindowEnd {
@@ -128,8 +107,8 @@ pub enum WindowError {
     Engine(#[from] EngineError),
     #[error(transparent)]
     Render(#[from] RenderError),
-    #[error("game start: {0}")]
-    Game(String),
+    #[error("game setup: {0}")]
+    Game(super::game::SetupError),
     #[error("screenshot: {0}")]
     Screenshot(#[from] ImageIoError),
 }
@@ -152,7 +131,7 @@ pub fn run_window(
     config: WindowConfig,
     render: RenderConfig,
     environment: Environment,
-    game: &mut dyn WindowGame,
+    game: &mut dyn Game,
 ) -> Result<WindowReport, WindowError> {
     if let Some(problem) = display_problem(std::env::var_os("DISPLAY").as_deref()) {
         return Err(problem);

@@ -20,10 +20,11 @@ use winit::window::{CursorGrabMode, Fullscreen, Window, WindowId};
 
 use super::engine::{Engine, Environment};
 use super::frame_limiter::FrameLimiter;
+use super::game::Game;
 use super::input::{InputState, actions};
 use super::stats::FrameStats;
 use super::stats_overlay::StatsOverlay;
-use super::window::{WindowConfig, WindowEnd, WindowError, WindowGame, WindowReport};
+use super::window::{WindowConfig, WindowEnd, WindowError, WindowReport};
 use crate::commit::PresentRequest;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, Rendered, TracerChoice};
@@ -34,7 +35,6 @@ const PIXELS_PER_LINE: f64 = 40.0;
 struct Running {
     window: Arc<Window>,
     engine: Engine,
-    input: InputState,
     overlay: StatsOverlay,
     limiter: FrameLimiter,
     stats: FrameStats,
@@ -72,7 +72,7 @@ pub(super) struct WindowApp<'g> {
     config: WindowConfig,
     render: RenderConfig,
     environment: Option<Environment>,
-    game: &'g mut dyn WindowGame,
+    game: &'g mut dyn Game,
     running: Option<Running>,
     started: Instant,
     error: Option<WindowError>,
@@ -85,7 +85,7 @@ impl<'g> WindowApp<'g> {
         config: WindowConfig,
         render: RenderConfig,
         environment: Environment,
-        game: &'g mut dyn WindowGame,
+        game: &'g mut dyn Game,
     ) -> Self {
         Self {
             config,
@@ -136,9 +136,11 @@ impl<'g> WindowApp<'g> {
             .take()
             .ok_or_else(|| WindowError::Window("the window was opened twice".into()))?;
         let mut engine = Engine::new_windowed(render, environment, target)?;
-        self.game.start(&mut engine).map_err(WindowError::Game)?;
+        *engine.input_mut() = InputState::new(&self.config.input);
+        self.game.setup(&mut engine).map_err(WindowError::Game)?;
         let stats = FrameStats {
             tracer: match render.tracer {
+                TracerChoice::Auto => "auto".into(),
                 TracerChoice::Gpu => "gpu (wgpu)".into(),
                 TracerChoice::Cpu => format!("cpu ({} threads)", rayon::current_num_threads()),
             },
@@ -148,7 +150,6 @@ impl<'g> WindowApp<'g> {
             overlay: StatsOverlay::new(&window, self.config.show_stats),
             window,
             engine,
-            input: InputState::new(&self.config.input),
             limiter: FrameLimiter::new(self.config.max_fps),
             stats,
             last_frame: Instant::now(),
@@ -217,7 +218,7 @@ impl<'g> WindowApp<'g> {
         let Some(running) = self.running.as_mut() else {
             return;
         };
-        let input = &running.input;
+        let input = running.engine.input();
         if input.pressed_this_frame(actions::TOGGLE_STATS) {
             running.overlay.visible = !running.overlay.visible;
         }
@@ -268,12 +269,10 @@ impl<'g> WindowApp<'g> {
         let Running {
             window,
             engine,
-            input,
             overlay,
             stats,
             ..
         } = running;
-        self.game.frame(&mut engine.world, input, frame_seconds);
         let size = window.inner_size();
         stats.output_size = (size.width, size.height);
         let last = self.config.frames.is_some_and(|n| running.frames + 1 >= n);
@@ -281,14 +280,15 @@ impl<'g> WindowApp<'g> {
             surface_size: (size.width, size.height),
             tonemap: self.config.tonemap,
             vsync: running.vsync,
-            overlay: overlay.build(window, stats),
+            overlay: if self.game.has_ui() {
+                let game = &mut *self.game;
+                overlay.build(window, stats, Some(&mut |ctx| game.ui(ctx)))
+            } else {
+                overlay.build(window, stats, None)
+            },
             screenshot: last && self.config.screenshot.is_some(),
         });
-        let game = &mut *self.game;
-        let frame = engine.frame(frame_seconds, |world, queries, step_seconds| {
-            game.step(world, queries, input, step_seconds);
-            input.end_step();
-        });
+        let frame = engine.frame(frame_seconds, &mut *self.game);
         let report = match frame {
             Ok(report) => report,
             Err(e) => {
@@ -301,7 +301,6 @@ impl<'g> WindowApp<'g> {
             }
         };
         running.stats.observe_frame(&report, frame_seconds);
-        running.input.end_frame();
         running.frames += 1;
         let mut results = running.engine.rendered();
         if last {
@@ -359,11 +358,14 @@ impl ApplicationHandler for WindowApp<'_> {
         let Some(running) = self.running.as_mut() else {
             return;
         };
-        let egui_used = running.overlay.on_window_event(&running.window, &event);
+        let egui_used =
+            running
+                .overlay
+                .on_window_event(&running.window, &event, self.game.has_ui());
         match event {
             WindowEvent::CloseRequested => self.end(event_loop, WindowEnd::Closed),
             WindowEvent::Focused(false) => {
-                running.input.release_all();
+                running.engine.input_mut().release_all();
                 running.set_captured(false);
             }
             WindowEvent::KeyboardInput { event, .. } => {
@@ -371,12 +373,18 @@ impl ApplicationHandler for WindowApp<'_> {
                 if let PhysicalKey::Code(code) = event.physical_key
                     && (!egui_used || !event.state.is_pressed())
                 {
-                    running.input.key(code, event.state.is_pressed());
+                    running
+                        .engine
+                        .input_mut()
+                        .key(code, event.state.is_pressed());
                 }
             }
             WindowEvent::MouseInput { state, button, .. } => {
                 if !egui_used || !state.is_pressed() {
-                    running.input.mouse_button(button, state.is_pressed());
+                    running
+                        .engine
+                        .input_mut()
+                        .mouse_button(button, state.is_pressed());
                 }
             }
             WindowEvent::MouseWheel { delta, .. } if !egui_used => {
@@ -384,7 +392,7 @@ impl ApplicationHandler for WindowApp<'_> {
                     MouseScrollDelta::LineDelta(_, y) => y as f64,
                     MouseScrollDelta::PixelDelta(p) => p.y / PIXELS_PER_LINE,
                 };
-                running.input.wheel(lines as f32);
+                running.engine.input_mut().wheel(lines as f32);
             }
             WindowEvent::RedrawRequested => self.redraw(event_loop),
             _ => {}
@@ -395,7 +403,10 @@ impl ApplicationHandler for WindowApp<'_> {
         if let (Some(running), DeviceEvent::MouseMotion { delta }) = (self.running.as_mut(), event)
             && running.captured
         {
-            running.input.mouse_motion(delta.0 as f32, delta.1 as f32);
+            running
+                .engine
+                .input_mut()
+                .mouse_motion(delta.0 as f32, delta.1 as f32);
         }
     }
 

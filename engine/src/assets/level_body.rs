@@ -1,10 +1,9 @@
-//! Physics in a level file: an instance's optional `body`, and turning it into the physics
-//! components the instance's entity gets.
+//! Physics in a level file: an instance's optional `body`, as the file spells it.
 //!
-//! Owns: the serde types [`BodyEntry`] and [`ShapeEntry`], and [`resolve_body`], which checks
-//! the numbers, derives boxes, hulls and triangle meshes from the instance's model (scaled by
-//! the instance's transform) and builds the collider, so that bad data fails at load time with
-//! a message naming the item. Must not: spawn entities or step physics.
+//! Owns: the serde types [`BodyEntry`] and [`ShapeEntry`]. Turning them into physics
+//! components (checking the numbers, deriving shapes from the model, building the collider)
+//! is `level::body`'s, at load time. Must not: build colliders, spawn entities or step
+//! physics.
 //!
 //! ```ron
 //! instances: [
@@ -17,11 +16,7 @@
 //! Sizes given explicitly (`Cuboid`, `Sphere`, `Capsule`) are metres in the world and are not
 //! scaled by the instance; shapes taken from the model (`Box`, `ConvexHull`, `Trimesh`) are.
 
-use glam::{Mat4, Vec3};
 use serde::{Deserialize, Serialize};
-
-use super::model::Model;
-use crate::sim::physics::{Collider, ColliderShape, RigidBody};
 
 /// How an instance takes part in physics.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -65,74 +60,4 @@ pub enum ShapeEntry {
     ConvexHull,
     /// The model's triangles, scaled by the instance (static and kinematic bodies only).
     Trimesh,
-}
-
-/// The physics components of an instance, ready to insert on its entity.
-#[derive(Clone, Debug)]
-pub struct InstanceBody {
-    pub body: RigidBody,
-    pub collider: Collider,
-}
-
-impl InstanceBody {
-    /// Whether the body can move (so its instance is not static for rendering).
-    pub fn moves(&self) -> bool {
-        self.body.kind != crate::sim::physics::BodyKind::Static
-    }
-}
-
-/// Builds the body of an instance of `model` placed by `world_from_model`. The error is a
-/// sentence about the body only; the caller adds the level file and the instance.
-pub fn resolve_body(
-    entry: &BodyEntry,
-    model: &Model,
-    world_from_model: Mat4,
-) -> Result<InstanceBody, String> {
-    let (scale, _, _) = world_from_model.to_scale_rotation_translation();
-    let (shape_entry, body) = match entry {
-        BodyEntry::Static { shape } => (shape, RigidBody::fixed()),
-        BodyEntry::Dynamic { shape, ccd, .. } => {
-            if *shape == ShapeEntry::Trimesh {
-                return Err(
-                    "a dynamic body cannot use Trimesh (use Box, Cuboid, Sphere, Capsule or ConvexHull)"
-                        .into(),
-                );
-            }
-            let body = RigidBody::dynamic();
-            (shape, if *ccd { body.with_ccd() } else { body })
-        }
-        BodyEntry::Kinematic { shape } => (shape, RigidBody::kinematic()),
-        BodyEntry::Sensor { shape } => (shape, RigidBody::fixed()),
-    };
-    let mut offset = Vec3::ZERO;
-    let shape = match shape_entry {
-        ShapeEntry::Box => {
-            let (shape, centre) = ColliderShape::bounds_of(model, scale)
-                .ok_or_else(|| "shape Box: the model has no vertices".to_string())?;
-            offset = centre;
-            shape
-        }
-        ShapeEntry::Cuboid { half_extents } => ColliderShape::Box {
-            half_extents: Vec3::from(*half_extents),
-        },
-        ShapeEntry::Sphere { radius } => ColliderShape::Sphere { radius: *radius },
-        ShapeEntry::Capsule {
-            half_height,
-            radius,
-        } => ColliderShape::Capsule {
-            half_height: *half_height,
-            radius: *radius,
-        },
-        ShapeEntry::ConvexHull => ColliderShape::hull_of(model, scale),
-        ShapeEntry::Trimesh => ColliderShape::trimesh_of(model, scale),
-    };
-    let mut collider = Collider::new(&shape).map_err(|e| format!("shape {shape_entry:?}: {e}"))?;
-    collider.offset = offset;
-    if let BodyEntry::Dynamic { mass, .. } = entry {
-        collider = collider.with_mass(*mass).map_err(|e| e.to_string())?;
-    }
-    if let BodyEntry::Sensor { .. } = entry {
-        collider = collider.as_sensor();
-    }
-    Ok(InstanceBody { body, collider })
 }

@@ -3,7 +3,7 @@
 //! laser beams, and the rules that turn what happens in volumes into actions.
 //!
 //! Owns: the serde types of the level's `gameplay` section. Checking the names they use is
-//! `level_gameplay_check`; running them is `sim::triggers`. Must not: load files or spawn
+//! `level::gameplay_check`; running them is `sim::triggers`. Must not: load files or spawn
 //! anything.
 //!
 //! Names refer to other items: instances by their `name`, level materials, sounds, clips and
@@ -25,7 +25,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::sim::animation::{AuthoredClip, PlayMode};
+use super::clip_desc::{AuthoredClip, PlayMode};
 
 /// The `gameplay` section of a level. Everything is optional.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -1,9 +1,10 @@
-//! Loading a level: the RON file and every model it names, into a [`SceneDesc`].
+//! Loading what a level renders: the RON file and every model it names, into a [`SceneDesc`].
 //!
 //! Owns: resolving model paths through the [`AssetRoot`], loading each model once, turning
-//! level materials into engine materials, and checking every name the level uses (models,
-//! materials) with an error that names the level and the item.
-//! Must not: build BVHs or touch the GPU.
+//! level materials into engine materials, marking instances that move (bodies, clips) as
+//! dynamic, and checking every name the scene uses (models, materials) with an error that
+//! names the level and the item. Main thread or a loader thread.
+//! Must not: build BVHs, colliders or gameplay (`level::load_level` does), or touch the GPU.
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -13,13 +14,15 @@ use rayon::prelude::*;
 
 use super::error::{AssetError, AssetResult};
 use super::level::{Level, LevelMaterial};
+use super::level_body::BodyEntry;
 use super::model::Material;
-use super::needs::Needs;
 use super::root::AssetRoot;
 use super::scene_desc::{SceneDesc, SceneInstance};
 
-/// Reads `level_path` and loads everything it names from `root` (models in parallel).
-pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<SceneDesc> {
+/// Reads `level_path` and loads what it renders from `root` (models in parallel): its
+/// models, materials, instances, camera, sun, sky and render settings. Its bodies and gameplay
+/// are checked and built by `level::load_level`, which a game uses.
+pub fn load_scene(level_path: &Path, root: &AssetRoot) -> AssetResult<SceneDesc> {
     let level = Level::read(level_path)?;
     scene_from_level(level_path, &level, root)
 }
@@ -116,7 +119,6 @@ pub fn scene_from_level(
             dynamic: instance.dynamic || instance.waves.is_some(),
             light_group: instance.light_group,
             waves: instance.waves,
-            body: None,
         });
     }
     let camera = &level.camera;
@@ -146,29 +148,24 @@ pub fn scene_from_level(
         }
     }
     models.extend(grids);
-    for (i, (entry, scene_instance)) in level.instances.iter().zip(&mut instances).enumerate() {
-        let Some(body) = &entry.body else {
-            continue;
-        };
-        let Some(model) = models.get(scene_instance.model) else {
-            continue;
-        };
-        let resolved =
-            super::level_body::resolve_body(body, model, scene_instance.world_from_model).map_err(
-                |message| {
-                    let name = entry.name.as_deref().unwrap_or(&entry.model);
-                    level_error(format!("instance {i} ({name:?}): body: {message}"))
-                },
-            )?;
-        scene_instance.dynamic |= resolved.moves();
-        scene_instance.body = Some(resolved);
+    for (entry, scene_instance) in level.instances.iter().zip(&mut instances) {
+        // A body that moves, or a clip that moves the instance: compared every frame, never
+        // written once and forgotten.
+        let moving_body = matches!(
+            entry.body,
+            Some(BodyEntry::Dynamic { .. } | BodyEntry::Kinematic { .. })
+        );
+        let clip_target = entry.name.as_deref().is_some_and(|name| {
+            level
+                .gameplay
+                .animations
+                .iter()
+                .flat_map(|clip| &clip.tracks)
+                .any(|track| track.target == name)
+        });
+        scene_instance.dynamic |= moving_body || clip_target;
     }
-    let gameplay = super::level_gameplay_check::plan_gameplay(level_path, level, root)?;
-    for &i in &gameplay.clip_targets {
-        // Moved by clips: compared every frame, never written once and forgotten.
-        instances[i].dynamic = true;
-    }
-    let desc = SceneDesc {
+    Ok(SceneDesc {
         source: level_path.to_path_buf(),
         models,
         level_materials: level.materials.iter().map(level_material).collect(),
@@ -177,27 +174,7 @@ pub fn scene_from_level(
         sun: level.sun,
         sky: level.sky,
         render: level.render,
-        gameplay,
-    };
-    let mut used = Needs::of_scene(&desc);
-    used.add_switched_materials(&desc);
-    match level.needs {
-        Some(declared) => {
-            let missing = declared.undeclared(&used);
-            if !missing.is_empty() {
-                return Err(level_error(format!(
-                    "the level uses {} but its `needs` does not declare {}",
-                    missing.join(", "),
-                    if missing.len() == 1 { "it" } else { "them" }
-                )));
-            }
-        }
-        None => log::info!(
-            "{}: declares no `needs`; its content uses: {used}",
-            level_path.display()
-        ),
-    }
-    Ok(desc)
+    })
 }
 
 fn level_material(m: &LevelMaterial) -> Material {

@@ -33,6 +33,11 @@ pub use model::{Material, MaterialKind, Mesh, Model, Placement, Texture, Texture
 pub use root::AssetRoot;
 pub use shapes::{BoxEntry, TerrainEntry, box_model, terrain_model};
 
+mod clip_desc;
+pub use clip_desc::{
+    AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack, ClipEvent, Interpolation, PlayMode,
+    Property,
+};
 mod level;
 pub use level::{
     CameraDesc, GridEntry, InstanceEntry, Level, LevelMaterial, ModelEntry, RenderSettings,
@@ -43,9 +48,8 @@ mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_body;
-pub use level_body::{BodyEntry, InstanceBody, ShapeEntry, resolve_body};
+pub use level_body::{BodyEntry, ShapeEntry};
 mod level_gameplay;
-mod level_gameplay_check;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry, LaserEntry,
     MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
@@ -53,5 +57,5 @@ pub use level_gameplay::{
 mod level_load;
 mod level_shapes;
 mod needs;
-pub use level_load::{load_level, scene_from_level};
+pub use level_load::{load_scene, scene_from_level};
 pub use needs::Needs;

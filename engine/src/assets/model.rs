@@ -2,7 +2,7 @@
 //! instances, in the engine's conventions (right-handed, +Y up, metres; linear colour).
 //!
 //! Owns: the in-memory, loader-independent description of loaded art. Loaders (`obj`, `gltf`)
-//! fill it; `render::scene` flattens it into the `layout` buffers.
+//! fill it; `accel` flattens it into the `layout` buffers of `scene::RenderScene`.
 //! Must not: know any file format, or anything about BVHs or GPUs.
 
 use glam::{Mat4, Vec2, Vec3, Vec4};

@@ -52,19 +52,17 @@ fn material_needs(m: &Material, n: &mut Needs) {
 }
 
 impl Needs {
-    /// Adds what the level materials that gameplay rules switch instances to use (a wall that
-    /// becomes a mirror or a lamp at run time).
-    pub fn add_switched_materials(&mut self, desc: &SceneDesc) {
-        use crate::sim::triggers::Action;
-        for rule in &desc.gameplay.rules {
-            for action in rule.then.iter().chain(&rule.otherwise) {
-                if let Action::Material {
-                    material: Some(m), ..
-                } = action
-                    && let Some(m) = desc.level_materials.get(*m as usize)
-                {
-                    material_needs(m, self);
-                }
+    /// Adds what the level materials `switched_to` (indices into `desc.level_materials`:
+    /// those gameplay rules switch instances to at run time, a wall that becomes a mirror or a
+    /// lamp) use.
+    pub fn add_switched_materials(
+        &mut self,
+        desc: &SceneDesc,
+        switched_to: impl IntoIterator<Item = usize>,
+    ) {
+        for m in switched_to {
+            if let Some(m) = desc.level_materials.get(m) {
+                material_needs(m, self);
             }
         }
     }

@@ -1,7 +1,7 @@
 //! A scene as loaded: models, level materials, placed instances, camera, sun, sky, settings.
 //!
 //! Owns: [`SceneDesc`], the hand-over from loading (a level file, or code in tests and tools)
-//! to the renderer, which flattens it (`render::scene`). Plain data, no logic.
+//! to the renderer, which flattens it (`accel`, into a `scene::RenderScene`). Plain data, no logic.
 //! Must not: hold GPU or BVH data.
 
 use std::path::PathBuf;
@@ -24,9 +24,6 @@ pub struct SceneDesc {
     pub sun: Option<SunDesc>,
     pub sky: SkyDesc,
     pub render: RenderSettings,
-    /// Sounds, clips, trigger volumes, lasers and rules, by index (instances in `instances`
-    /// order).
-    pub gameplay: crate::sim::triggers::GameplayPlan,
 }
 
 /// One placed copy of a model.
@@ -44,8 +41,6 @@ pub struct SceneInstance {
     pub dynamic: bool,
     pub light_group: Option<u32>,
     pub waves: Option<super::level::WaveDesc>,
-    /// Physics components for the instance's entity, checked at load time.
-    pub body: Option<super::level_body::InstanceBody>,
 }
 
 impl SceneInstance {
@@ -59,7 +54,6 @@ impl SceneInstance {
             dynamic: false,
             light_group: None,
             waves: None,
-            body: None,
         }
     }
 }
@@ -76,7 +70,6 @@ impl SceneDesc {
             sun: None,
             sky: SkyDesc::default(),
             render: RenderSettings::default(),
-            gameplay: Default::default(),
         }
     }
 }

@@ -1,12 +1,10 @@
 //! What a window asks of the render thread for one frame: [`PresentRequest`] (surface size,
 //! tonemapping, vsync, a screenshot) and the stats [`Overlay`] drawn over the frame.
 //!
-//! Owns: the overlay as egui leaves it after tessellation on the main thread (clipped
+//! Owns: [`TonemapSettings`] (applied by the render thread's film), the overlay as egui leaves it after tessellation on the main thread (clipped
 //! primitives, texture changes, pixels per point) — plain data, so it travels inside the sealed
 //! commit and the render thread, which owns the wgpu device, draws it after tonemapping.
 //! Must not: reference the ECS, winit or the device (the render thread never sees game state).
-
-use crate::render::film::TonemapSettings;
 
 /// An egui overlay, tessellated on the main thread, drawn by the render thread.
 #[derive(Clone, Default)]
@@ -69,4 +67,22 @@ pub struct PresentRequest {
     pub overlay: Option<Overlay>,
     /// Read the presented image back (the window's content, overlay included).
     pub screenshot: bool,
+}
+
+/// How radiance becomes a displayed colour.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TonemapSettings {
+    /// Exposure in stops (EV): radiance is multiplied by 2^exposure_ev.
+    pub exposure_ev: f32,
+    /// Apply a filmic-like curve (ACES fit by Narkowicz 2015) instead of clamping.
+    pub filmic: bool,
+}
+
+impl Default for TonemapSettings {
+    fn default() -> Self {
+        Self {
+            exposure_ev: 0.0,
+            filmic: false,
+        }
+    }
 }

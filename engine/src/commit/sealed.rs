@@ -3,13 +3,13 @@
 //! Owns: the sealed frame — buffer writes (instances, refitted or rebuilt BLAS data, deformed
 //! vertices, materials, light table, TLAS) with the header they leave behind, the view, sun, sky
 //! and render settings, how much moved (for converging), and in a window what to present (with
-//! the stats overlay). Static data travels once, in the first commit after it is loaded. Must not: reference the ECS (the render thread never sees
-//! game state).
+//! the stats overlay). Static data travels once, in the first commit after it is loaded.
+//! Must not: reference the ECS (the render thread never sees game state) or carry the main
+//! thread's telemetry (timers and upkeep counts stay in its `FrameReport`).
 
 use super::present::PresentRequest;
-use crate::accel::UpkeepStats;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
-use crate::render::scene_writes::{SceneHeader, SceneWrite};
+use crate::scene::{SceneHeader, SceneWrite};
 
 /// What moved since the previous commit, for the converging policy.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -33,12 +33,8 @@ pub struct Commit {
     pub sky: SkyDesc,
     pub render: RenderSettings,
     pub motion: Motion,
-    /// What the upkeep did to produce `writes`.
-    pub upkeep: UpkeepStats,
     /// Read the converged film back after rendering this frame (screenshots, captures).
     pub capture: bool,
-    /// Seconds the main thread spent on game update (fixed steps) for this frame.
-    pub update_seconds: f64,
     /// What to show in the window after rendering (`None` headless: nothing is presented).
     pub present: Option<PresentRequest>,
 }

@@ -1,12 +1,11 @@
-//! The entity-component world (hecs) and the order its systems run in.
+//! The entity-component world (hecs): the engine's components and the transform hierarchy.
+//! The order systems run in is the frame's phases (`app::Phase`).
 
 mod components;
 mod hierarchy;
-mod schedule;
 
 pub use components::{
     CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Parent, Renderable, Restyled,
     Static, Transform,
 };
 pub use hierarchy::propagate_transforms;
-pub use schedule::SYSTEM_ORDER;

@@ -4,4 +4,5 @@
 
 mod queries;
 
+pub use crate::scene::Optics;
 pub use queries::{Queries, QueryHit};

@@ -11,7 +11,8 @@ use hecs::Entity;
 use rayon::prelude::*;
 
 use crate::accel::Upkeep;
-use crate::render::cpu::surface::resolve;
+use crate::scene::surface::resolve;
+use crate::scene::{Optics, optics_of};
 use crate::trace::Ray;
 
 /// What a query ray hit (world space, metres).
@@ -75,9 +76,14 @@ impl Queries<'_> {
         })
     }
 
-    /// Material `index` of the scene (as in [`QueryHit::material`]).
-    pub fn material(&self, index: u32) -> Option<&crate::layout::GpuMaterial> {
-        self.upkeep.scene().materials.get(index as usize)
+    /// What material `index` of the scene (as in [`QueryHit::material`]) does to an ideal ray
+    /// such as a laser; an index the scene does not have is [`Optics::Opaque`].
+    pub fn optics(&self, index: u32) -> Optics {
+        self.upkeep
+            .scene()
+            .materials
+            .get(index as usize)
+            .map_or(Optics::Opaque, optics_of)
     }
 
     /// Whether anything blocks `ray` within `(t_min, t_max)`.

@@ -10,10 +10,10 @@
 
 use glam::Vec3;
 
-use super::lights::fill_sun_and_sky;
-use super::scene_writes::SceneHeader;
 use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
 use crate::layout::GpuFrameUniforms;
+use crate::scene::SceneHeader;
+use crate::scene::lights::fill_sun_and_sky;
 
 /// What one render call needs besides the scene.
 #[derive(Clone, Copy, Debug)]

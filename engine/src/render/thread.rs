@@ -17,15 +17,21 @@ use std::time::Instant;
 use super::film::{Converge, ConvergePolicy, Film};
 use super::present::{PresentTarget, Presenter, Screenshot};
 use super::scaling::{Scaling, ScalingTarget};
-use super::scene::RenderScene;
 use super::tracer::{RenderError, RenderStats, Tracer};
 use super::{FrameSettings, frame_uniforms};
 use crate::commit::{Commit, CommitReceiver, CommitSender, commit_channel};
+use crate::scene::RenderScene;
 
 /// Which tracer the render thread runs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum TracerChoice {
+    /// The GPU tracer on a real GPU, the CPU tracer when the only adapter is a software one or
+    /// there is none (`render/auto.rs`); one log line says which and why.
+    #[default]
+    Auto,
+    /// The WGSL tracer on wgpu (a real GPU, or lavapipe on the CPU).
     Gpu,
+    /// The Rust tracer on all CPU cores.
     Cpu,
 }
 
@@ -65,6 +71,8 @@ impl RenderConfig {
 #[derive(Clone, Debug)]
 pub struct Rendered {
     pub frame: u64,
+    /// The tracer that rendered it ("gpu" or "cpu"; what `auto` chose).
+    pub tracer: &'static str,
     pub stats: RenderStats,
     /// Seconds spent applying the commit (CPU copy and GPU upload).
     pub apply_seconds: f64,
@@ -81,9 +89,6 @@ pub struct Rendered {
     /// Emissive triangles in the render side's light sampling distribution (its alias table)
     /// this frame.
     pub lights: u32,
-    /// Main-thread figures carried through for the stats overlay.
-    pub update_seconds: f64,
-    pub upkeep: crate::accel::UpkeepStats,
     /// The converged film, when the commit asked for it.
     pub film: Option<Film>,
     /// Seconds spent presenting (tonemap, overlay, copy, present, readback); 0 headless.
@@ -116,8 +121,8 @@ fn open(
         }
         None => (None, None),
     };
-    let tracer: Box<dyn Tracer> = match choice {
-        TracerChoice::Cpu => Box::new(super::cpu::CpuTracer::new()),
+    let tracer: Box<dyn Tracer> = match super::auto::resolve(choice, context.as_deref()) {
+        TracerChoice::Cpu | TracerChoice::Auto => Box::new(super::cpu::CpuTracer::new()),
         TracerChoice::Gpu => {
             let context = match context {
                 Some(context) => context,
@@ -170,6 +175,7 @@ fn render_one(
     };
     Ok(Rendered {
         frame: commit.frame,
+        tracer: tracer.name(),
         stats,
         apply_seconds,
         render_seconds,
@@ -179,8 +185,6 @@ fn render_one(
         film_size: (width, height),
         commit_bytes: commit.bytes(),
         lights: scene.lights.count,
-        update_seconds: commit.update_seconds,
-        upkeep: commit.upkeep,
         film,
         present_seconds: 0.0,
         present_skipped: None,

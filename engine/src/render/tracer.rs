@@ -7,9 +7,9 @@
 
 pub use super::cpu::integrator::RayCounts;
 use super::film::Film;
-use super::scene::RenderScene;
-use super::scene_writes::SceneWrite;
 use crate::layout::GpuFrameUniforms;
+use crate::scene::RenderScene;
+use crate::scene::SceneWrite;
 
 /// What one `render` call did.
 #[derive(Clone, Copy, Debug, Default)]

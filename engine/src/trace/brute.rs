@@ -9,11 +9,11 @@
 use glam::Vec3;
 
 use super::ray::{Hit, Ray, to_object_space};
+use super::triangle::tri_lane;
 use super::triangle::{TriRay, intersect_triangle};
-use crate::accel::blas::tri_lane;
 use crate::layout::{GpuInstance, INVALID};
 
-/// A mesh as given to [`crate::accel::build_blas`].
+/// A mesh as the BLAS builder (`accel::build_blas`) takes it.
 #[derive(Clone, Copy, Debug)]
 pub struct BruteMesh<'a> {
     pub positions: &'a [Vec3],

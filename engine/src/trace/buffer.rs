@@ -1,7 +1,7 @@
 //! [`TraceBuffer`]: the read-only storage of the node and block arrays the CPU tracer walks,
 //! aligned to 2 MiB and advised to the kernel as transparent-huge-page memory.
 //!
-//! Input: a slice (usually a [`crate::accel::Blas`]'s or a scene's freshly built vectors).
+//! Input: a slice (usually a `accel::Blas`'s or a scene's freshly built vectors).
 //! Output: a copy that dereferences to the same slice type. Any thread; the only `unsafe` is the
 //! allocation, the advice and the copies below. Must not: be written while shared (the tracers
 //! share it across threads; [`TraceBuffer::write_range`] needs `&mut`).

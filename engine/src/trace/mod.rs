@@ -3,7 +3,8 @@
 //!
 //! Inputs: borrowed node / block / instance buffers ([`TraceScene`], or one BLAS) and a [`Ray`].
 //! Outputs: the closest [`Hit`] or an occlusion flag. Any thread, read only, no allocation.
-//! Must not: build or modify trees (see [`crate::accel`]).
+//! Must not: build or modify trees (`accel` does; it sits above this module and builds within
+//! [`MAX_DEPTH`]).
 //!
 //! Files: [`ray`] (ray, hit, safe reciprocal, instance transform), `triangle` (the one
 //! triangle test), `scalar` (reference traversal, the algorithm the WGSL twin follows), `scene`
@@ -45,10 +46,17 @@ pub use ray::{Hit, Ray};
 pub(crate) use scalar::leaf_blocks;
 pub use scene::{TraceScene, closest_blas, closest_blas_with, occluded_blas, occluded_blas_with};
 
+/// Deepest tree (levels of 8-wide nodes) the builders emit and the tracers' fixed stacks hold.
+/// A traversal pushes at most 7 entries per level plus 8 at the deepest node, so
+/// `7 · (MAX_DEPTH - 1) + 8` entries (239) fit the 256-entry stacks of the traversal kernels with
+/// room for one 8-lane vector store. Builds that would be deeper fall back to a balanced
+/// binary tree, whose depth is at most `log2(primitives) + 1` (at most 33 for `u32` counts).
+pub const MAX_DEPTH: u32 = 34;
+
 /// Entries of every traversal stack (node index + entry distance): enough for
-/// [`crate::accel::MAX_DEPTH`] levels plus one 8-lane store.
+/// [`MAX_DEPTH`] levels plus one 8-lane store.
 pub(crate) const STACK_SIZE: usize = 256;
-const _: () = assert!(7 * (crate::accel::MAX_DEPTH as usize - 1) + 8 + 8 <= STACK_SIZE);
+const _: () = assert!(7 * (MAX_DEPTH as usize - 1) + 8 + 8 <= STACK_SIZE);
 
 /// A traversal implementation. All kernels return the same hits (bit-identical `t`, `u`, `v`;
 /// where two triangles tie in `t` either may be returned).

@@ -188,7 +188,7 @@ impl TraceScene<'_> {
     }
 }
 
-/// Closest hit in a single BLAS (`nodes`, `blocks` as [`crate::accel::Blas`] holds them), in its
+/// Closest hit in a single BLAS (`nodes`, `blocks` as `accel::Blas` holds them), in its
 /// own space; `Hit::instance` is `INVALID`. Fastest kernel of this CPU.
 pub fn closest_blas(nodes: &[GpuBvh8Node], blocks: &[GpuTri4], ray: &Ray) -> Option<Hit> {
     closest_blas_with(Kernel::best(), nodes, blocks, ray)

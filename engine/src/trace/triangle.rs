@@ -231,3 +231,9 @@ mod tests {
         assert!(hit(o, d, v0, v1 - v0, v2 - v0, f32::INFINITY).is_none());
     }
 }
+
+/// The stored form of a triangle: `[v0, e1 = v1 - v0, e2 = v2 - v0]`. Every consumer (blocks,
+/// the brute-force reference) uses this function so that all of them intersect the same numbers.
+pub fn tri_lane(v0: Vec3, v1: Vec3, v2: Vec3) -> [Vec3; 3] {
+    [v0, v1 - v0, v2 - v0]
+}

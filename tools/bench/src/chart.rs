@@ -18,7 +18,8 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use candela::assets::SceneDesc;
-use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, Tracer, frame_uniforms};
+use candela::scene::RenderScene;
 
 use super::chart_methods::{Config, Layout, METHODS, Method};
 use super::chart_plan::{ChartArgs, Plan};

@@ -7,8 +7,8 @@
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-use candela::assets::{AssetRoot, SceneDesc, load_level};
-use candela::render::RenderScene;
+use candela::assets::{AssetRoot, SceneDesc, load_scene};
+use candela::scene::RenderScene;
 
 use super::chart_methods::Layout;
 
@@ -92,7 +92,7 @@ impl SceneSpec {
             Root::External(dir) => external.join(dir),
             Root::Repo(dir) => PathBuf::from(dir),
         };
-        Ok(load_level(Path::new(self.level), &AssetRoot::new(&root)?)?)
+        Ok(load_scene(Path::new(self.level), &AssetRoot::new(&root)?)?)
     }
 
     /// The folder holding Mitsuba's `reference.exr` and `reference_stderr.exr`, if it has one.
@@ -146,7 +146,7 @@ mod tests {
             assert_eq!(spec.cpu_size % spec.gpu_size, 0, "{}", spec.name);
             if let Root::Repo(dir) = spec.root {
                 let root = AssetRoot::new(repo.join(dir))?;
-                let desc = load_level(&repo.join(spec.level), &root)?;
+                let desc = load_scene(&repo.join(spec.level), &root)?;
                 let scene = RenderScene::build(&desc);
                 assert!(!scene.triangles.is_empty(), "{}", spec.name);
             }

@@ -20,7 +20,8 @@ use candela::assets::SceneDesc;
 use candela::layout::METHOD_DEFAULT;
 use candela::render::cpu::CpuTracer;
 use candela::render::film::write_exr;
-use candela::render::{FrameSettings, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, Tracer, frame_uniforms};
+use candela::scene::RenderScene;
 use glam::Vec3;
 
 /// Seed of the self-reference renders; the curves use 7 (see `chart.rs`).
@@ -206,7 +207,7 @@ mod tests {
         let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
         let root = candela::assets::AssetRoot::new(repo.join("assets/test_scenes"))?;
         let mut desc =
-            candela::assets::load_level(&repo.join("assets/test_scenes/cornell_box.ron"), &root)?;
+            candela::assets::load_scene(&repo.join("assets/test_scenes/cornell_box.ron"), &root)?;
         let scene = RenderScene::build(&desc);
         let k = key(&scene, &desc, 64, 1024);
         assert_eq!(k, key(&scene, &desc, 64, 1024));

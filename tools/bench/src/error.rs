@@ -11,9 +11,10 @@
 
 use std::path::PathBuf;
 
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::render::film::read_exr;
-use candela::render::{FrameSettings, RenderScene, frame_uniforms};
+use candela::render::{FrameSettings, frame_uniforms};
+use candela::scene::RenderScene;
 use clap::Args;
 use glam::Vec3;
 
@@ -73,7 +74,7 @@ pub fn run(args: &ErrorArgs) -> anyhow::Result<()> {
         mitsuba_time
     );
     let level = PathBuf::from("assets/test_scenes/reference/cornell_box.ron");
-    let desc = load_level(&level, &AssetRoot::new(&dir)?)?;
+    let desc = load_scene(&level, &AssetRoot::new(&dir)?)?;
     let scene = RenderScene::build(&desc);
     let mut tracers: Vec<Box<dyn candela::render::Tracer>> =
         vec![Box::new(candela::render::cpu::CpuTracer::new())];

@@ -20,6 +20,7 @@ use anyhow::Context;
 use candela::accel::{Aabb, Blas, build_blas, build_tlas};
 use candela::app::{RunOptions, Script, ScriptTracer, run_script};
 use candela::assets::SceneDesc;
+use candela::level::PlayableLevel;
 use clap::{Args, ValueEnum};
 use rayon::prelude::*;
 
@@ -68,21 +69,22 @@ pub fn run(args: &PipelineArgs) -> anyhow::Result<()> {
     }
     println!("rayon threads: {}\n", rayon::current_num_threads());
     let script = Script::read(&args.script)?;
-    let desc = script.load_level()?;
+    let level = script.load_level()?;
+    let desc = &level.scene;
     std::fs::create_dir_all(&args.out_dir)
         .with_context(|| format!("cannot create {}", args.out_dir.display()))?;
     let wants = |p| args.only.is_empty() || args.only.contains(&p);
     if wants(Part::Upkeep) {
-        upkeep(&script, &desc, args)?;
+        upkeep(&script, &level, args)?;
     }
     if wants(Part::Refit) {
-        crate::pipeline_refit::run(&desc, args)?;
+        crate::pipeline_refit::run(desc, args)?;
     }
     if wants(Part::Queries) {
-        crate::pipeline_queries::run(&desc, args)?;
+        crate::pipeline_queries::run(desc, args)?;
     }
     if wants(Part::Overlap) {
-        crate::pipeline_overlap::run(&desc, args)?;
+        crate::pipeline_overlap::run(&level, args)?;
     }
     Ok(())
 }
@@ -135,7 +137,8 @@ fn full_rebuild(desc: &SceneDesc) -> (f64, f64) {
     (blas_seconds, started.elapsed().as_secs_f64())
 }
 
-fn upkeep(script: &Script, desc: &SceneDesc, args: &PipelineArgs) -> anyhow::Result<()> {
+fn upkeep(script: &Script, level: &PlayableLevel, args: &PipelineArgs) -> anyhow::Result<()> {
+    let desc = &level.scene;
     println!("## Upkeep per frame: {}\n", args.script.display());
     let options = RunOptions {
         out_dir: None,
@@ -143,7 +146,7 @@ fn upkeep(script: &Script, desc: &SceneDesc, args: &PipelineArgs) -> anyhow::Res
         size: Some((16, 9)),
         spp: Some(1),
     };
-    let report = run_script(script, desc, &options, &mut |_| {})?;
+    let report = run_script(script, level, &options, &mut |_| {})?;
     // Frame 0 loads the level (every BLAS built once); the steady state is frames 1…
     let steady = &report.frames[1..];
     let ms = |get: &dyn Fn(&candela::app::FrameTiming) -> f64| -> (f64, f64) {

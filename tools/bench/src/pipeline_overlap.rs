@@ -13,8 +13,8 @@
 
 use std::time::{Duration, Instant};
 
-use candela::app::{Engine, Environment, FixedClock, waves_system};
-use candela::assets::SceneDesc;
+use candela::app::{Engine, Environment, FixedClock, Step, waves_system};
+use candela::level::PlayableLevel;
 use candela::render::film::ConvergePolicy;
 use candela::render::{RenderConfig, TracerChoice};
 
@@ -34,7 +34,7 @@ struct Outcome {
     handoff: f64,
 }
 
-fn engine(desc: &SceneDesc, spp: u32) -> anyhow::Result<Engine> {
+fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
         width: 96,
@@ -44,16 +44,16 @@ fn engine(desc: &SceneDesc, spp: u32) -> anyhow::Result<Engine> {
         converge: ConvergePolicy::default(),
         scaling: None,
     };
-    let mut engine = Engine::new(config, Environment::of(desc))?;
+    let mut engine = Engine::new(config, Environment::of(&desc.scene))?;
     engine.spawn_level(desc);
-    engine.clock = FixedClock::new(60.0);
+    *engine.clock_mut() = FixedClock::new(60.0);
     Ok(engine)
 }
 
 /// Runs `frames` frames with `load` of update per frame; returns per-frame means.
-fn measure(desc: &SceneDesc, spp: u32, load: Duration, busy: bool) -> anyhow::Result<Outcome> {
+fn measure(desc: &PlayableLevel, spp: u32, load: Duration, busy: bool) -> anyhow::Result<Outcome> {
     let mut engine = engine(desc, spp)?;
-    let step = engine.clock.step_seconds;
+    let step = engine.clock().step_seconds;
     let mut time = 0.0;
     let mut main = Vec::new();
     let mut handoff = Vec::new();
@@ -63,7 +63,9 @@ fn measure(desc: &SceneDesc, spp: u32, load: Duration, busy: bool) -> anyhow::Re
         if frame == WARM_UP {
             started = Instant::now();
         }
-        let report = engine.frame(step, |world, _, dt| {
+        let report = engine.frame(step, &mut |step: &mut Step<'_>| {
+            let world = &mut *step.world;
+            let dt = step.step_seconds;
             time += dt;
             waves_system(world, time);
             if busy {
@@ -81,8 +83,8 @@ fn measure(desc: &SceneDesc, spp: u32, load: Duration, busy: bool) -> anyhow::Re
             report.steps
         );
         if frame >= WARM_UP {
-            main.push(report.update_seconds + report.upkeep_seconds);
-            handoff.push(report.handoff_seconds);
+            main.push(report.update_seconds() + report.upkeep_seconds());
+            handoff.push(report.handoff_seconds());
         }
         for r in engine.rendered() {
             let r = r?;
@@ -113,11 +115,11 @@ fn measure(desc: &SceneDesc, spp: u32, load: Duration, busy: bool) -> anyhow::Re
 }
 
 /// Samples per pixel for a render of about `RENDER_MS`.
-fn calibrate(desc: &SceneDesc) -> anyhow::Result<u32> {
+fn calibrate(desc: &PlayableLevel) -> anyhow::Result<u32> {
     let mut engine = engine(desc, 1)?;
     let mut times = Vec::new();
     for _ in 0..6 {
-        engine.frame(engine.clock.step_seconds, |_, _, _| {})?;
+        engine.frame(engine.clock().step_seconds, &mut |_: &mut Step<'_>| {})?;
         if let Some(r) = engine.wait_rendered() {
             times.push(r?.render_seconds);
         }
@@ -127,7 +129,7 @@ fn calibrate(desc: &SceneDesc) -> anyhow::Result<u32> {
     Ok(((RENDER_MS * 1e-3 / one).round() as u32).max(1))
 }
 
-pub fn run(desc: &SceneDesc, args: &PipelineArgs) -> anyhow::Result<()> {
+pub fn run(desc: &PlayableLevel, args: &PipelineArgs) -> anyhow::Result<()> {
     let kind = if args.busy { "busy work" } else { "sleep" };
     println!(
         "## Overlap of game update and render (update loaded by {kind}, {} rayon threads)\n",

@@ -15,12 +15,13 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::layout::{GpuRay, INVALID};
 use candela::render::cpu::rng::Rng;
 use candela::render::cpu::sampling::{basis, cosine_hemisphere, to_world, uniform_triangle};
 use candela::render::cpu::surface::{offset_origin, resolve};
-use candela::render::{FrameSettings, RenderScene, frame_uniforms};
+use candela::render::{FrameSettings, frame_uniforms};
+use candela::scene::RenderScene;
 use candela::trace::Ray;
 use clap::Args;
 use glam::{Vec2, Vec3};
@@ -64,7 +65,7 @@ fn make_rays(
         None,
         &Default::default(),
         &settings,
-        &candela::render::SceneHeader {
+        &candela::scene::SceneHeader {
             light_count: 0,
             light_weight_total: 0.0,
             ..scene.header()
@@ -201,7 +202,7 @@ pub fn run(args: &RaysArgs) -> anyhow::Result<()> {
             .map(PathBuf::from)
             .unwrap_or_else(|| PathBuf::from(".")),
     };
-    let desc = load_level(&args.level, &AssetRoot::new(root_dir)?)?;
+    let desc = load_scene(&args.level, &AssetRoot::new(root_dir)?)?;
     let scene = RenderScene::build(&desc);
     let kinds = make_rays(&scene, args, &desc.camera, desc.sun.map(|s| s.direction));
     let name = args

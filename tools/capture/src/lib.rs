@@ -9,9 +9,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context;
-use candela::assets::{AssetRoot, load_level};
+use candela::assets::{AssetRoot, load_scene};
 use candela::render::film::{TonemapSettings, write_exr, write_png};
-use candela::render::{FrameSettings, RenderError, RenderScene, Tracer, frame_uniforms};
+use candela::render::{FrameSettings, RenderError, Tracer, TracerChoice, frame_uniforms};
+use candela::scene::RenderScene;
 use clap::{Parser, ValueEnum};
 
 mod script_mode;
@@ -20,6 +21,9 @@ pub use script_mode::{ScriptSummary, run_script_mode};
 /// Which tracer renders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum TracerKind {
+    /// The GPU tracer on a real GPU, the CPU tracer when the only adapter is a software one
+    /// (lavapipe) or there is none; the log says which.
+    Auto,
     /// wgpu compute (a real GPU, or Mesa's lavapipe on the CPU when there is none).
     Gpu,
     /// The Rust tracer on all CPU cores.
@@ -40,7 +44,8 @@ pub struct CaptureArgs {
     /// Folder for the script's screenshots and `frames.csv`.
     #[arg(long, default_value = "capture_out")]
     pub out_dir: PathBuf,
-    /// Tracer [default: gpu; with --script: the script's].
+    /// Tracer [default: auto (the GPU tracer on a real GPU, else the CPU tracer); with --script:
+    /// the script's].
     #[arg(long, value_enum)]
     pub tracer: Option<TracerKind>,
     /// Samples per pixel [default: 64; with --script: the script's, per frame].
@@ -109,13 +114,24 @@ impl std::fmt::Display for CaptureReport {
 
 /// Opens the requested tracer over `scene`.
 pub fn open_tracer(kind: TracerKind, scene: &RenderScene) -> Result<Box<dyn Tracer>, RenderError> {
-    Ok(match kind {
-        TracerKind::Cpu => Box::new(candela::render::cpu::CpuTracer::new()),
+    Ok(match resolve(kind) {
+        TracerKind::Cpu | TracerKind::Auto => Box::new(candela::render::cpu::CpuTracer::new()),
         TracerKind::Gpu => {
             let context = candela::render::gpu::GpuContext::headless()?;
             Box::new(candela::render::gpu::GpuTracer::new(context, scene)?)
         }
     })
+}
+
+/// `kind` with `Auto` resolved to the GPU or the CPU tracer (`candela::render::auto`).
+pub fn resolve(kind: TracerKind) -> TracerKind {
+    match kind {
+        TracerKind::Auto => match candela::render::auto::resolve(TracerChoice::Auto, None) {
+            TracerChoice::Gpu => TracerKind::Gpu,
+            _ => TracerKind::Cpu,
+        },
+        other => other,
+    }
 }
 
 fn level_root(level: &Path, asset_root: Option<&Path>) -> anyhow::Result<AssetRoot> {
@@ -140,13 +156,13 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         args.width.unwrap_or(640),
         args.height.unwrap_or(360),
     );
-    let tracer_kind = args.tracer.unwrap_or(TracerKind::Gpu);
+    let tracer_kind = args.tracer.unwrap_or(TracerKind::Auto);
     if spp == 0 || width == 0 || height == 0 {
         anyhow::bail!("--spp, --width and --height must be positive");
     }
     let root = level_root(level, args.asset_root.as_deref())?;
     let started = Instant::now();
-    let desc = load_level(level, &root)?;
+    let desc = load_scene(level, &root)?;
     let scene = RenderScene::build(&desc);
     let build_seconds = started.elapsed().as_secs_f64();
     let mut tracer = open_tracer(tracer_kind, &scene)

@@ -147,9 +147,9 @@ pub fn run_script_mode(args: &CaptureArgs) -> anyhow::Result<ScriptSummary> {
     };
     let options = RunOptions {
         out_dir: Some(args.out_dir.clone()),
-        tracer: args.tracer.map(|t| match t {
-            TracerKind::Cpu => ScriptTracer::Cpu,
+        tracer: args.tracer.map(|t| match super::resolve(t) {
             TracerKind::Gpu => ScriptTracer::Gpu,
+            TracerKind::Cpu | TracerKind::Auto => ScriptTracer::Cpu,
         }),
         size,
         spp: args.spp,

@@ -13,10 +13,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Context;
 use candela::app::{
-    Engine, Environment, FlyCamera, InputMap, InputState, WindowConfig, WindowGame, WindowReport,
-    fly_camera_system, run_window,
+    Engine, Environment, FlyCamera, FrameInput, Game, InputMap, SetupError, WindowConfig,
+    WindowReport, fly_camera_system, run_window,
 };
-use candela::assets::{AssetRoot, SceneDesc, load_level};
+use candela::assets::{AssetRoot, SceneDesc};
+use candela::level::{PlayableLevel, load_level};
 use candela::render::film::{ConvergePolicy, TonemapSettings};
 use candela::render::scaling::ScalingTarget;
 use candela::render::{RenderConfig, TracerChoice};
@@ -26,6 +27,9 @@ use glam::{Vec3, Vec4Swizzles};
 /// Which tracer renders.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum TracerKind {
+    /// The GPU tracer on a real GPU, the CPU tracer when the only adapter is a software one
+    /// (lavapipe, where the CPU tracer is far faster) or there is none.
+    Auto,
     /// wgpu compute on the window's device (a real GPU, or Mesa's lavapipe).
     Gpu,
     /// The Rust tracer on all CPU cores; its film is uploaded for presenting.
@@ -42,7 +46,7 @@ pub struct ViewArgs {
     /// Folder every path of the level must stay in (default: the level file's folder).
     #[arg(long)]
     pub asset_root: Option<PathBuf>,
-    #[arg(long, value_enum, default_value = "gpu")]
+    #[arg(long, value_enum, default_value = "auto")]
     pub tracer: TracerKind,
     /// Samples per pixel per frame (the start when --target-fps scales the workload).
     #[arg(long, default_value_t = 1)]
@@ -130,20 +134,20 @@ pub fn level_extent(desc: &SceneDesc) -> f32 {
 
 /// The game `view` plays: the level and a fly camera.
 struct ViewGame {
-    desc: SceneDesc,
+    level: PlayableLevel,
     speed: f32,
 }
 
-impl WindowGame for ViewGame {
-    fn start(&mut self, engine: &mut Engine) -> Result<(), String> {
-        engine.spawn_level(&self.desc);
-        let (camera, transform, rig) = FlyCamera::from_view(&self.desc.camera, self.speed);
-        engine.world.spawn((camera, transform, rig));
+impl Game for ViewGame {
+    fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {
+        engine.spawn_level(&self.level);
+        let (camera, transform, rig) = FlyCamera::from_view(&self.level.scene.camera, self.speed);
+        engine.world_mut().spawn((camera, transform, rig));
         Ok(())
     }
 
-    fn frame(&mut self, world: &mut hecs::World, input: &InputState, frame_seconds: f64) {
-        fly_camera_system(world, input, frame_seconds as f32);
+    fn frame(&mut self, frame: &mut FrameInput<'_>) {
+        fly_camera_system(frame.world, frame.input, frame.frame_seconds as f32);
     }
 }
 
@@ -163,7 +167,8 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
         anyhow::bail!("--spp, --width and --height must be positive");
     }
     let root = level_root(&args.level, args.asset_root.as_deref())?;
-    let desc = load_level(&args.level, &root)?;
+    let level = load_level(&args.level, &root)?;
+    let desc = &level.scene;
     let mut input = InputMap::fly_camera_defaults();
     if let Some(path) = &args.input {
         input = input.merged(InputMap::load(path)?);
@@ -187,6 +192,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
     };
     let render = RenderConfig {
         tracer: match args.tracer {
+            TracerKind::Auto => TracerChoice::Auto,
             TracerKind::Gpu => TracerChoice::Gpu,
             TracerKind::Cpu => TracerChoice::Cpu,
         },
@@ -202,9 +208,9 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
     };
     let speed = args
         .speed
-        .unwrap_or_else(|| (level_extent(&desc) / 10.0).clamp(0.5, 100.0));
-    let environment = Environment::of(&desc);
-    let mut game = ViewGame { desc, speed };
+        .unwrap_or_else(|| (level_extent(desc) / 10.0).clamp(0.5, 100.0));
+    let environment = Environment::of(desc);
+    let mut game = ViewGame { level, speed };
     run_window(config, render, environment, &mut game)
         .with_context(|| format!("cannot view {}", args.level.display()))
 }

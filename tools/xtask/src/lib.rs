@@ -7,7 +7,7 @@ pub mod packages;
 pub const RENDER_ARGS: &[&str] = &[
     "assets/test_scenes/cornell_box.ron",
     "--tracer",
-    "gpu",
+    "auto",
     "--spp",
     "64",
     "--width",

@@ -18,7 +18,7 @@ use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{
     GpuFrameUniforms, INVALID, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE, SKY_GRADIENT,
 };
-use crate::render::scene::RenderScene;
+use crate::scene::RenderScene;
 use crate::trace::{Ray, TraceScene};
 
 /// Rays traced, by kind.
@@ -382,7 +382,7 @@ fn hit_area(scene: &RenderScene, hit: &crate::trace::Hit) -> f32 {
     let inst = &scene.instances[hit.instance as usize];
     let tri = scene.triangles[(inst.triangle_base + hit.triangle) as usize];
     let p = tri.indices.map(|i| {
-        crate::render::lights::world_point(
+        crate::scene::lights::world_point(
             inst,
             scene.vertices[(inst.vertex_base + i) as usize].position,
         )

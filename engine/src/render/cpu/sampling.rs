@@ -9,11 +9,7 @@ use glam::{Vec2, Vec3};
 
 pub const PI: f32 = std::f32::consts::PI;
 
-/// Rec.709 luminance of a linear RGB colour.
-#[inline]
-pub fn luminance(c: Vec3) -> f32 {
-    c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
-}
+pub use crate::scene::luminance;
 
 /// An orthonormal basis (t, b, n) around unit `n` (Duff et al., "Building an Orthonormal Basis,
 /// Revisited", JCGT 2017).

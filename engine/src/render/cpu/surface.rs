@@ -1,9 +1,7 @@
-//! What a ray hit, in world space, and the material resolved there (twin:
-//! `shaders/shared/surface.wgsl`).
+//! The material resolved where a ray hit (twin: `shaders/shared/surface.wgsl`; resolving the
+//! hit itself, [`resolve`], is shared with the game's ray queries in `scene/surface.rs`).
 //!
-//! Owns: interpolating vertex attributes at a hit (position, shading normal, UV, tangent), the
-//! front-facing geometric normal (which follows the instance's handedness: a mirroring transform
-//! flips the winding, as glTF requires), applying textures and normal maps, and the
+//! Owns: applying textures and normal maps at a resolved [`Surface`], and the
 //! self-intersection-free ray origin (Wächter & Binder, Ray Tracing Gems ch. 6).
 //! Must not: choose directions or accumulate radiance (the integrator does).
 
@@ -11,97 +9,9 @@ use glam::{Vec2, Vec3, Vec4};
 
 use super::bsdf::Bsdf;
 use super::texture;
-use crate::layout::{
-    GpuInstance, GpuMaterial, INSTANCE_FLAG_EMISSION_OFF, INVALID, MATERIAL_DIELECTRIC,
-    MATERIAL_METAL_ROUGH,
-};
-use crate::render::scene::RenderScene;
-use crate::trace::Hit;
-
-/// A hit resolved in world space.
-#[derive(Clone, Copy, Debug)]
-pub struct Surface {
-    pub position: Vec3,
-    /// Unit normal of the triangle's front face (counter-clockwise winding in object space).
-    pub geometric_normal: Vec3,
-    /// Unit interpolated vertex normal (the geometric normal when the mesh has none), on the
-    /// same side as `geometric_normal`.
-    pub shading_normal: Vec3,
-    /// World tangent (xyz) and bitangent sign (w); zero when there is no tangent frame.
-    pub tangent: Vec4,
-    pub uv: Vec2,
-    pub material: u32,
-    /// False when the instance's light group is off (`INSTANCE_FLAG_EMISSION_OFF`).
-    pub emits: bool,
-}
-
-/// Object-space vector to world space with the instance's 3×3 part.
-fn world_vector(i: &GpuInstance, v: Vec3) -> Vec3 {
-    let r = &i.world_from_object;
-    Vec3::new(
-        r[0][0] * v.x + r[0][1] * v.y + r[0][2] * v.z,
-        r[1][0] * v.x + r[1][1] * v.y + r[1][2] * v.z,
-        r[2][0] * v.x + r[2][1] * v.y + r[2][2] * v.z,
-    )
-}
-
-/// Object-space normal to world space: transpose of `object_from_world`'s 3×3 part.
-fn world_normal(i: &GpuInstance, n: Vec3) -> Vec3 {
-    let r = &i.object_from_world;
-    Vec3::new(
-        r[0][0] * n.x + r[1][0] * n.y + r[2][0] * n.z,
-        r[0][1] * n.x + r[1][1] * n.y + r[2][1] * n.z,
-        r[0][2] * n.x + r[1][2] * n.y + r[2][2] * n.z,
-    )
-}
-
-/// Resolves `hit` of a ray with direction `direction`.
-pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
-    let inst = &scene.instances[hit.instance as usize];
-    let tri = scene.triangles[(inst.triangle_base + hit.triangle) as usize];
-    let vertex = |k: usize| scene.vertices[(inst.vertex_base + tri.indices[k]) as usize];
-    let (a, b, c) = (vertex(0), vertex(1), vertex(2));
-    let (w, u, v) = (1.0 - hit.u - hit.v, hit.u, hit.v);
-    let (pa, pb, pc) = (
-        Vec3::from(a.position),
-        Vec3::from(b.position),
-        Vec3::from(c.position),
-    );
-    let p_object = pa * w + pb * u + pc * v;
-    let position = super::super::lights::world_point(inst, p_object.to_array());
-    let mut geometric_normal = world_normal(inst, (pb - pa).cross(pc - pa)).normalize_or_zero();
-    if geometric_normal == Vec3::ZERO {
-        geometric_normal = -direction.normalize_or_zero();
-    }
-    let n_object = Vec3::from(a.normal) * w + Vec3::from(b.normal) * u + Vec3::from(c.normal) * v;
-    let mut shading_normal = world_normal(inst, n_object).normalize_or_zero();
-    if shading_normal == Vec3::ZERO {
-        shading_normal = geometric_normal;
-    } else if shading_normal.dot(geometric_normal) < 0.0 {
-        shading_normal = -shading_normal;
-    }
-    let t_object = Vec3::from_slice(&a.tangent[..3]) * w
-        + Vec3::from_slice(&b.tangent[..3]) * u
-        + Vec3::from_slice(&c.tangent[..3]) * v;
-    let tangent = world_vector(inst, t_object)
-        .normalize_or_zero()
-        .extend(a.tangent[3]);
-    let uv = Vec2::new(a.u, a.v) * w + Vec2::new(b.u, b.v) * u + Vec2::new(c.u, c.v) * v;
-    let material = if inst.material_override != INVALID {
-        inst.material_override
-    } else {
-        tri.material
-    };
-    Surface {
-        position,
-        geometric_normal,
-        shading_normal,
-        tangent,
-        uv,
-        material,
-        emits: inst.flags & INSTANCE_FLAG_EMISSION_OFF == 0,
-    }
-}
+use crate::layout::{GpuMaterial, INVALID, MATERIAL_DIELECTRIC, MATERIAL_METAL_ROUGH};
+use crate::scene::RenderScene;
+pub use crate::scene::surface::{Surface, resolve};
 
 /// The material at a surface: its BSDF, emitted radiance, and the shading normal after
 /// normal mapping (unchanged without a normal texture or tangent frame).

@@ -66,7 +66,7 @@ pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2
 mod tests {
     use super::*;
     use crate::layout::WRAP_REPEAT;
-    use crate::render::materials::pack_texel;
+    use crate::scene::materials::pack_texel;
 
     #[test]
     fn bilinear_and_wrap() {

@@ -13,8 +13,8 @@ use rayon::prelude::*;
 use super::integrator::{RayCounts, radiance};
 use crate::layout::GpuFrameUniforms;
 use crate::render::film::Film;
-use crate::render::scene::RenderScene;
 use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
+use crate::scene::RenderScene;
 
 /// Tile edge in pixels.
 const TILE: u32 = 16;
@@ -113,7 +113,7 @@ impl Tracer for CpuTracer {
     fn update(
         &mut self,
         _scene: &RenderScene,
-        _writes: &[crate::render::scene_writes::SceneWrite],
+        _writes: &[crate::scene::SceneWrite],
     ) -> Result<(), RenderError> {
         Ok(())
     }

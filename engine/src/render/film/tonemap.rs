@@ -5,23 +5,7 @@
 
 use glam::Vec3;
 
-/// How radiance becomes a displayed colour.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TonemapSettings {
-    /// Exposure in stops (EV): radiance is multiplied by 2^exposure_ev.
-    pub exposure_ev: f32,
-    /// Apply a filmic-like curve (ACES fit by Narkowicz 2015) instead of clamping.
-    pub filmic: bool,
-}
-
-impl Default for TonemapSettings {
-    fn default() -> Self {
-        Self {
-            exposure_ev: 0.0,
-            filmic: false,
-        }
-    }
-}
+pub use crate::commit::TonemapSettings;
 
 fn srgb_encode(c: f32) -> f32 {
     if c <= 0.003_130_8 {

@@ -29,6 +29,19 @@ impl GpuContext {
         Self::open(&instance, None)
     }
 
+    /// The adapter [`GpuContext::headless`] would open, without opening a device (`None`: no
+    /// adapter at all). For choosing a tracer.
+    pub fn probe() -> Option<wgpu::AdapterInfo> {
+        let instance =
+            wgpu::Instance::new(wgpu::InstanceDescriptor::new_without_display_handle_from_env());
+        pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            ..Default::default()
+        }))
+        .ok()
+        .map(|adapter| adapter.get_info())
+    }
+
     /// Opens the best adapter that can present to `surface`, made by `instance` (which must
     /// have been created with the window system's display handle).
     pub fn for_surface(

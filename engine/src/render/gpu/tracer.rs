@@ -16,8 +16,8 @@ use super::context::GpuContext;
 use super::shaders::{TRACE, compose};
 use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
-use crate::render::scene::RenderScene;
 use crate::render::tracer::{FilmView, RayCounts, RenderError, RenderStats, Tracer};
+use crate::scene::RenderScene;
 
 /// Workgroup edge of `trace_main` (8×8 invocations).
 const WORKGROUP: u32 = 8;
@@ -329,7 +329,7 @@ impl Tracer for GpuTracer {
     fn update(
         &mut self,
         scene: &RenderScene,
-        writes: &[crate::render::scene_writes::SceneWrite],
+        writes: &[crate::scene::SceneWrite],
     ) -> Result<(), RenderError> {
         self.upload(scene, writes)
     }

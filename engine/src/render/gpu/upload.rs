@@ -6,9 +6,9 @@
 //! Must not: decide what to write (the commit says).
 
 use super::tracer::GpuTracer;
-use crate::render::scene::RenderScene;
-use crate::render::scene_writes::SceneWrite;
 use crate::render::tracer::RenderError;
+use crate::scene::RenderScene;
+use crate::scene::SceneWrite;
 
 /// The write of `data` at element `first` of binding `index`: the binding, the byte offset (from
 /// the element type's size) and the bytes.

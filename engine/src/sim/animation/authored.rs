@@ -1,8 +1,8 @@
 //! Clips authored by hand in level files (doors, elevators, moving platforms): a RON
 //! description of named targets and keyframe tracks, checked and turned into [`Clip`]s.
 //!
-//! Owns: [`AuthoredClipSet`] and its parts (serde), [`AuthoredClipSet::load`] / `from_ron`,
-//! [`AuthoredClipSet::to_clips`]. Must not: know what the targets are (the level or the ECS
+//! Owns: [`AuthoredClipSet::load`] / `from_ron` and [`AuthoredClipSet::to_clips`] (the serde
+//! types themselves are `assets::clip_desc`'s, since level files embed them). Must not: know what the targets are (the level or the ECS
 //! binds target names to entities), or read files other than the one it is given. Level
 //! files can embed an `AuthoredClipSet` (targets = instance names) once triggers drive doors;
 //! `assets/test_scenes/anim/door_and_lift.ron` is an example.
@@ -24,54 +24,12 @@
 
 use std::path::Path;
 
-use serde::{Deserialize, Serialize};
-
-use super::clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
+use super::clip::{Channel, Clip, Interpolation, Property, check_clip};
 use super::error::{AnimError, AnimResult};
-use crate::assets::AssetError;
+use crate::assets::{AssetError, AuthoredClipSet};
 
-/// Targets and the clips that animate them.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct AuthoredClipSet {
-    /// Target names; a clip's channel target is an index into this list.
-    pub targets: Vec<String>,
-    pub clips: Vec<AuthoredClip>,
-}
-
-/// One authored clip.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct AuthoredClip {
-    pub name: String,
-    pub tracks: Vec<AuthoredTrack>,
-    #[serde(default)]
-    pub events: Vec<ClipEvent>,
-}
-
-/// One property of one target over time.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct AuthoredTrack {
-    pub target: String,
-    pub property: Property,
-    pub interpolation: Interpolation,
-    pub keys: Vec<AuthoredKey>,
-}
-
-/// One key: a time and a value (3 floats for translation and scale, 4 for rotation, one per
-/// weight), with tangents (units per second) for cubic splines, zero when left out.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct AuthoredKey {
-    pub time_seconds: f32,
-    pub value: Vec<f32>,
-    #[serde(default)]
-    pub in_tangent: Option<Vec<f32>>,
-    #[serde(default)]
-    pub out_tangent: Option<Vec<f32>>,
-}
-
+/// Reading, checking and sampling authored clips (the types are `assets::clip_desc`'s: level
+/// files embed them).
 impl AuthoredClipSet {
     /// Reads and parses the RON file at `path`.
     pub fn load(path: &Path) -> AnimResult<Self> {

@@ -2,62 +2,16 @@
 //! rotation, scale or morph weights) of one target, and the checks every clip passes before
 //! use, whichever file it came from (glTF or a level file).
 //!
-//! Owns: [`Clip`], [`Channel`], [`Interpolation`], [`Property`], [`ClipEvent`], and
-//! [`check_clip`]. Sampling lives in `sample`; applying samples to a pose in `pose`.
+//! Owns: [`Clip`], [`Channel`] and [`check_clip`] (the vocabulary files spell clips in —
+//! [`Interpolation`], [`Property`], [`ClipEvent`] — is `assets::clip_desc`'s). Sampling lives in `sample`; applying samples to a pose in `pose`.
 //! Must not: read files, or know about nodes beyond their index (`target`).
 //! Units: key times in seconds (float32, as glTF stores them); translation in metres,
 //! rotation as an (x, y, z, w) quaternion, scale as a factor, weights unitless.
 
 use std::path::Path;
 
-use serde::{Deserialize, Serialize};
-
 use super::error::{AnimError, AnimResult};
-
-/// How values between two keys are found (glTF 2.0 §3.11 "interpolation").
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Interpolation {
-    /// The value of the key at or before the time.
-    Step,
-    /// Component-wise lerp; rotations by slerp (shortest path).
-    Linear,
-    /// Hermite spline; each key stores (in-tangent, value, out-tangent).
-    CubicSpline,
-}
-
-/// The property a channel drives.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Property {
-    /// Local translation, metres (3 components).
-    Translation,
-    /// Local rotation quaternion x, y, z, w (4 components).
-    Rotation,
-    /// Local scale factors (3 components).
-    Scale,
-    /// Morph target weights (one component per target).
-    Weights,
-}
-
-impl Property {
-    /// Components per value, `None` for weights (one per morph target, set by the mesh).
-    pub fn components(self) -> Option<usize> {
-        match self {
-            Property::Translation | Property::Scale => Some(3),
-            Property::Rotation => Some(4),
-            Property::Weights => None,
-        }
-    }
-
-    /// The glTF name of the property.
-    pub fn name(self) -> &'static str {
-        match self {
-            Property::Translation => "translation",
-            Property::Rotation => "rotation",
-            Property::Scale => "scale",
-            Property::Weights => "weights",
-        }
-    }
-}
+pub use crate::assets::{ClipEvent, Interpolation, Property};
 
 /// One animated property of one target.
 #[derive(Clone, Debug, PartialEq)]
@@ -84,15 +38,6 @@ impl Channel {
             _ => 1,
         }
     }
-}
-
-/// Something a game wants to hear about when playback passes a time in a clip (a door's
-/// "latched" sound, a footstep).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct ClipEvent {
-    /// When, in seconds from the start of the clip.
-    pub time_seconds: f64,
-    pub name: String,
 }
 
 /// A named set of channels played together, with events at times.

@@ -29,7 +29,7 @@ mod sample;
 mod skin;
 mod skinned_entities;
 
-pub use authored::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
+pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
     Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,

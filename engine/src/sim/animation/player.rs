@@ -15,20 +15,10 @@
 
 use super::clip::{Clip, ClipEvent};
 use super::pose::Pose;
+pub use crate::assets::PlayMode;
 
 /// Cycles (loops or ping-pong legs) one tick walks through before skipping the rest.
 pub const MAX_CYCLES_PER_TICK: u32 = 64;
-
-/// What happens at the ends of a clip.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-pub enum PlayMode {
-    /// Play to the end (the start, if reversed) and hold there; the playback is finished.
-    Once,
-    /// Wrap around to the other end.
-    Loop,
-    /// Turn around at each end.
-    PingPong,
-}
 
 /// One clip being played.
 #[derive(Clone, Debug, PartialEq)]

@@ -10,12 +10,9 @@
 use glam::{Mat4, Vec3};
 use hecs::Entity;
 
-use crate::layout::{MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_METAL_ROUGH};
-use crate::query::Queries;
+use crate::query::{Optics, Queries};
 use crate::trace::Ray;
 
-/// Roughness below which a conductor reflects a beam like a mirror.
-pub const MIRROR_ROUGHNESS: f32 = 0.1;
 /// Hits on the beam's own entity skipped before giving up (a beam starting inside its model).
 const SELF_HITS: u32 = 4;
 
@@ -45,27 +42,6 @@ impl LaserPath {
     /// The straight pieces of the beam.
     pub fn segments(&self) -> impl Iterator<Item = (Vec3, Vec3)> + '_ {
         self.points.windows(2).map(|w| (w[0], w[1]))
-    }
-}
-
-/// What a beam does at a surface.
-enum Turn {
-    Reflect,
-    Refract { ior: f32 },
-    Stop,
-}
-
-fn turn_at(queries: &Queries<'_>, material: u32) -> Turn {
-    let Some(m) = queries.material(material) else {
-        return Turn::Stop;
-    };
-    match m.kind {
-        MATERIAL_CONDUCTOR if m.roughness < MIRROR_ROUGHNESS => Turn::Reflect,
-        MATERIAL_METAL_ROUGH if m.metallic >= 0.9 && m.roughness < MIRROR_ROUGHNESS => {
-            Turn::Reflect
-        }
-        MATERIAL_DIELECTRIC if m.ior.is_finite() && m.ior > 0.0 => Turn::Refract { ior: m.ior },
-        _ => Turn::Stop,
     }
 }
 
@@ -126,10 +102,10 @@ pub fn trace_laser(
             return path;
         }
         let n = hit.geometric_normal;
-        direction = match turn_at(queries, hit.material) {
-            Turn::Reflect => (direction - 2.0 * direction.dot(n) * n).normalize_or_zero(),
-            Turn::Refract { ior } => refract(direction, n, ior),
-            Turn::Stop => {
+        direction = match queries.optics(hit.material) {
+            Optics::Mirror => (direction - 2.0 * direction.dot(n) * n).normalize_or_zero(),
+            Optics::Glass { ior } => refract(direction, n, ior),
+            Optics::Opaque => {
                 path.stopped_at = hit.entity;
                 return path;
             }

@@ -16,7 +16,7 @@ mod plan;
 mod runtime;
 mod volumes;
 
-pub use laser::{LaserBeam, LaserPath, MIRROR_ROUGHNESS, trace_laser};
+pub use laser::{LaserBeam, LaserPath, trace_laser};
 pub use logic::{Facts, RuleBook, RuleFiring};
 pub use plan::{
     Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedVolume,

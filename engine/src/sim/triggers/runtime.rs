@@ -68,6 +68,8 @@ pub struct LevelLogic {
     outcome: Option<Outcome>,
     last: StepLog,
     steps: u64,
+    /// Events sent by the game ([`LevelLogic::send_event`]) for the next step's rules.
+    sent: Vec<String>,
 }
 
 impl LevelLogic {
@@ -114,6 +116,7 @@ impl LevelLogic {
             outcome: None,
             last: StepLog::default(),
             steps: 0,
+            sent: Vec::new(),
         }
     }
 
@@ -147,6 +150,22 @@ impl LevelLogic {
         &self.last
     }
 
+    /// Sends event `name` to the rules: `Event(name)` conditions see it in the next step, as
+    /// they see clip events (a "use" on a switch, a game's own trigger).
+    pub fn send_event(&mut self, name: impl Into<String>) {
+        self.sent.push(name.into());
+    }
+
+    /// The name of rule `index` (level order).
+    pub fn rule_name(&self, index: usize) -> Option<&str> {
+        self.rules.rules().get(index).map(|r| r.name.as_str())
+    }
+
+    /// The name of volume `index` (level order).
+    pub fn volume_name(&self, index: usize) -> Option<&str> {
+        self.volume_names.get(index).map(String::as_str)
+    }
+
     /// Fixed steps run so far.
     pub fn steps(&self) -> u64 {
         self.steps
@@ -167,7 +186,11 @@ impl LevelLogic {
         let facts = self
             .volumes
             .step(world, physics, &beams, &mut volume_events);
-        let names: Vec<String> = clip_events.iter().map(|e| e.name.clone()).collect();
+        let names: Vec<String> = clip_events
+            .iter()
+            .map(|e| e.name.clone())
+            .chain(self.sent.drain(..))
+            .collect();
         let (firings, actions) = self.rules.step(&Facts {
             volumes: &facts,
             events: &names,

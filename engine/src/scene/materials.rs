@@ -13,7 +13,6 @@ use crate::layout::{
     MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH, TEXTURE_FLAG_NEAREST, WRAP_CLAMP,
     WRAP_MIRROR, WRAP_REPEAT,
 };
-use crate::render::cpu::sampling::luminance;
 
 fn wrap_bits(w: Wrap) -> u32 {
     match w {
@@ -193,4 +192,12 @@ pub fn to_gpu_material(m: &Material, texture_base: u32, texture_means: &[f32]) -
         metal_rough_texture: tex(m.metal_rough_texture),
         _padding: 0,
     }
+}
+
+/// Rec.709 luminance of a linear RGB colour (light power for the light table, texture means;
+/// the integrators' sampling uses the same weights: twin `luminance` in
+/// `shaders/shared/sampling.wgsl`).
+#[inline]
+pub fn luminance(c: Vec3) -> f32 {
+    c.dot(Vec3::new(0.2126, 0.7152, 0.0722))
 }

@@ -1,17 +1,19 @@
-//! The render-side scene both tracers read: a [`SceneDesc`] flattened into `layout` buffers.
+//! The flattened scene both tracers read: a level's `SceneDesc` into `layout` buffers.
 //!
 //! Owns: the [`RenderScene`] container — one BLAS per mesh (shared by every placement of that
 //! mesh), the TLAS over all instances, global material/texture/vertex/triangle tables and the
-//! emissive-triangle light list — and the one-shot build from a [`SceneDesc`], which runs the
-//! same `accel::Upkeep` a game runs frame by frame. The GPU tracer uploads these vectors
-//! unchanged; the CPU tracer walks them in place; commits change them by `SceneWrite`s.
-//! Must not: read files (assets did that) or talk to the GPU.
+//! emissive-triangle light list. Both sides use it: the main thread's `accel::Upkeep` keeps the
+//! authoritative copy (ray queries read it) and builds it (`RenderScene::build` lives in
+//! `accel/flatten.rs`); the render thread keeps its own copy, changed only by the commit's
+//! [`SceneWrite`](super::SceneWrite)s. The GPU tracer uploads these vectors unchanged; the CPU
+//! tracer walks them in place. Any thread (plain data).
+//! Must not: read files (assets did that), build trees (accel does) or talk to the GPU.
 
 use glam::Vec3;
 
+use super::bounds::Aabb;
 use super::lights::LightTable;
-use crate::accel::{Aabb, BlasParams};
-use crate::assets::{Model, SceneDesc};
+use crate::assets::Model;
 use crate::layout::{
     GpuBvh8Node, GpuInstance, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
 };
@@ -57,77 +59,6 @@ pub struct RenderScene {
 }
 
 impl RenderScene {
-    /// Flattens `desc` in one go, through the same [`Upkeep`](crate::accel::Upkeep) path a
-    /// running game uses frame by frame (so a one-shot build and an incremental one agree).
-    /// Render space's origin is snapped near the camera (camera-relative rendering, see
-    /// `accel::origin`).
-    pub fn build(desc: &SceneDesc) -> RenderScene {
-        let origin = crate::accel::origin::snap_origin(Vec3::from(desc.camera.position));
-        Self::build_with_origin(desc, origin)
-    }
-
-    /// [`RenderScene::build`] with render space's origin at `origin` (world metres, snapped to
-    /// `accel::origin::ORIGIN_GRID`); `Vec3::ZERO` renders in world space as it is.
-    pub fn build_with_origin(desc: &SceneDesc, origin: Vec3) -> RenderScene {
-        Self::build_from(desc, origin, BlasParams::default())
-    }
-
-    /// [`RenderScene::build`] with every BLAS built with `params` (a build preset or leaf size
-    /// other than the default, for measurements such as `bench chart`). Both tracers read the
-    /// result like any other scene: the image is the same, only the traversal speed differs.
-    pub fn build_with_blas_params(desc: &SceneDesc, params: BlasParams) -> RenderScene {
-        let origin = crate::accel::origin::snap_origin(Vec3::from(desc.camera.position));
-        Self::build_from(desc, origin, params)
-    }
-
-    fn build_from(desc: &SceneDesc, origin: Vec3, params: BlasParams) -> RenderScene {
-        let started = std::time::Instant::now();
-        let mut upkeep = crate::accel::Upkeep::with_blas_params(params);
-        upkeep.set_origin(origin);
-        upkeep.add_level_materials(&desc.level_materials);
-        let handles: Vec<_> = desc.models.iter().map(|m| upkeep.add_model(m)).collect();
-        let blas_build_seconds = started.elapsed().as_secs_f64();
-        let mut ids = hecs::World::new();
-        for instance in &desc.instances {
-            let Some(&model) = handles.get(instance.model) else {
-                continue;
-            };
-            let entity = ids.spawn(());
-            let material_override = instance.material_override.map(|m| m as u32);
-            upkeep.set_instance(
-                entity,
-                model,
-                instance.world_from_model,
-                material_override,
-                None,
-            );
-        }
-        let started = std::time::Instant::now();
-        upkeep.finish_frame();
-        let tlas_build_seconds = started.elapsed().as_secs_f64();
-        let mut scene = upkeep.into_scene();
-        scene.stats = SceneStats {
-            meshes: desc.models.iter().map(|m| m.meshes.len()).sum(),
-            unique_triangles: desc
-                .models
-                .iter()
-                .flat_map(|m| m.meshes.iter())
-                .map(|m| m.triangles.len())
-                .sum(),
-            instanced_triangles: desc
-                .instances
-                .iter()
-                .filter_map(|i| desc.models.get(i.model))
-                .map(model_triangles)
-                .sum(),
-            instances: scene.instances.len(),
-            lights: scene.lights.count as usize,
-            blas_build_seconds,
-            tlas_build_seconds,
-        };
-        scene
-    }
-
     /// A scene with nothing in it (the render thread's copy before the first commit).
     pub fn empty() -> RenderScene {
         RenderScene {

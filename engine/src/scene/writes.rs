@@ -7,8 +7,8 @@
 //! (`Tracer::update`), so both sides stay byte-identical.
 //! Must not: decide what changed (the game side's upkeep does).
 
+use super::flattened::RenderScene;
 use super::lights::LightTable;
-use super::scene::RenderScene;
 use crate::layout::{
     GpuBvh8Node, GpuInstance, GpuLight, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
 };

@@ -4,19 +4,17 @@
 //!
 //! Owns: [`plan_gameplay`]. Sound files are resolved through the [`AssetRoot`] and decoded
 //! here (`audio::decode_sound`), so a sound that does not decode fails the level load.
-//! Must not: spawn entities or run rules.
+//! Main thread (level loading). Must not: spawn entities or run rules.
 
 use std::collections::{HashMap, HashSet};
 use std::path::Path;
 
 use glam::Vec3;
 
-use super::error::{AssetError, AssetResult};
-use super::level::Level;
-use super::level_body::BodyEntry;
-use super::level_gameplay::{ActionEntry, ConditionEntry};
-use super::root::AssetRoot;
-use crate::sim::animation::AuthoredClipSet;
+use crate::assets::{
+    ActionEntry, AssetError, AssetResult, AssetRoot, AuthoredClipSet, BodyEntry, ConditionEntry,
+    Level,
+};
 use crate::sim::triggers::{
     Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedVolume,
     Rule,
@@ -53,7 +51,7 @@ fn find(
 }
 
 /// Checks `level.gameplay` (read from `level_path`) and resolves its names.
-pub(super) fn plan_gameplay(
+pub fn plan_gameplay(
     level_path: &Path,
     level: &Level,
     root: &AssetRoot,

@@ -1,0 +1,305 @@
+//! [`Engine::frame`]: one frame of the Brigade pipeline on the main thread, one function per
+//! [`Phase`] (`app/phase.rs` lists them and says what each does).
+//!
+//! Owns: the order of the engine's work in a frame, carrying out the game's [`Commands`] and
+//! the level logic's effects, and delivering [`LevelEvent`]s to the game. Main thread.
+//! Must not: render (the render thread does) or block on anything but the hand-off.
+
+use std::time::Instant;
+
+use super::engine::{Engine, EngineError};
+use super::game::{Command, FrameInput, Game, LevelEvent, Step};
+use super::phase::{FrameReport, Phase, PhaseTimes};
+use super::waves::waves_system;
+use super::work::FrameWork;
+use crate::accel::UpkeepStats;
+use crate::audio::{PlayOptions, sync_emitters};
+use crate::commit::{Commit, Motion};
+use crate::ecs::propagate_transforms;
+use crate::scene::{SceneHeader, SceneWrite};
+use crate::sim::animation::{deform_skinned, tick_skinned};
+use crate::sim::triggers::Effect;
+
+/// What the upkeep phase leaves for sealing.
+struct Prepared {
+    writes: Vec<SceneWrite>,
+    header: SceneHeader,
+    stats: UpkeepStats,
+    work: FrameWork,
+    motion: Motion,
+}
+
+/// Times consecutive phases.
+struct PhaseTimer {
+    times: PhaseTimes,
+    lap: Instant,
+}
+
+impl PhaseTimer {
+    fn start() -> Self {
+        Self {
+            times: PhaseTimes::default(),
+            lap: Instant::now(),
+        }
+    }
+
+    /// Ends `phase`: the time since the previous lap is its.
+    fn lap(&mut self, phase: Phase) {
+        let now = Instant::now();
+        self.times.add(phase, (now - self.lap).as_secs_f64());
+        self.lap = now;
+    }
+}
+
+impl Engine {
+    /// Runs one frame of `frame_seconds` wall-clock time: the game's frame hook, the fixed
+    /// steps that time holds (each with the game's rules, physics, animation, the level's
+    /// logic and its events), posing the world, the scene upkeep, sealing the commit and
+    /// handing it to the render thread.
+    pub fn frame<G: Game + ?Sized>(
+        &mut self,
+        frame_seconds: f64,
+        game: &mut G,
+    ) -> Result<FrameReport, EngineError> {
+        let mut timer = PhaseTimer::start();
+        self.input_phase(game, frame_seconds);
+        timer.lap(Phase::Input);
+        let steps = self.fixed_steps(game, frame_seconds);
+        timer.lap(Phase::Steps);
+        self.pose();
+        timer.lap(Phase::Pose);
+        let prepared = self.upkeep_scene();
+        timer.lap(Phase::Upkeep);
+        let (upkeep, work) = (prepared.stats, prepared.work);
+        let commit = self.seal(prepared);
+        let commit_bytes = commit.bytes();
+        let overlay_bytes = commit
+            .present
+            .as_ref()
+            .and_then(|p| p.overlay.as_ref())
+            .map_or(0, |o| o.bytes());
+        timer.lap(Phase::Seal);
+        self.render.submit(commit)?;
+        timer.lap(Phase::HandOff);
+        self.input.end_frame();
+        let report = FrameReport {
+            frame: self.frame,
+            steps,
+            phases: timer.times,
+            commit_bytes,
+            overlay_bytes,
+            upkeep,
+            work,
+        };
+        self.frame += 1;
+        Ok(report)
+    }
+
+    /// [`Phase::Input`]: the game's per-frame hook.
+    fn input_phase<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) {
+        game.frame(&mut FrameInput {
+            world: &mut self.world,
+            input: &self.input,
+            frame_seconds,
+            commands: &mut self.commands,
+        });
+        self.carry_out_commands();
+    }
+
+    /// [`Phase::Steps`]: as many fixed steps as `frame_seconds` holds.
+    fn fixed_steps<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) -> u32 {
+        let steps = self.clock.advance(frame_seconds);
+        let first = self.clock.steps - u64::from(steps);
+        for index in first..self.clock.steps {
+            self.fixed_step(game, index);
+        }
+        steps
+    }
+
+    /// One fixed step: game rules → physics → skinned animation players → level logic and its
+    /// effects → level events to the game → audio.
+    fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
+        let dt = self.clock.step_seconds;
+        game.fixed_step(&mut Step {
+            world: &mut self.world,
+            queries: self.upkeep.queries(),
+            physics: &mut self.physics,
+            input: &self.input,
+            index,
+            step_seconds: dt,
+            commands: &mut self.commands,
+        });
+        self.carry_out_commands();
+        self.physics.step(&mut self.world, dt);
+        tick_skinned(&mut self.world, dt);
+        let ended_before = self.logic.outcome().is_some();
+        let effects = self
+            .logic
+            .step(&mut self.world, &self.physics, self.upkeep.queries(), dt);
+        self.carry_out(effects);
+        let events = self.level_events(ended_before);
+        if !events.is_empty() {
+            let mut step = Step {
+                world: &mut self.world,
+                queries: self.upkeep.queries(),
+                physics: &mut self.physics,
+                input: &self.input,
+                index,
+                step_seconds: dt,
+                commands: &mut self.commands,
+            };
+            for event in &events {
+                game.level_event(&mut step, event);
+            }
+            self.carry_out_commands();
+        }
+        self.audio.tick(dt);
+        self.input.end_step();
+    }
+
+    /// [`Phase::Pose`]: the world as it is to be rendered — physics interpolated between the
+    /// last two steps (the clock's leftover fraction), level waves at the simulated time,
+    /// skinned meshes deformed, transforms propagated.
+    fn pose(&mut self) {
+        self.physics
+            .interpolate(&mut self.world, self.clock.alpha());
+        let seconds = self.time_seconds();
+        waves_system(&mut self.world, seconds);
+        deform_skinned(&mut self.world);
+        propagate_transforms(&mut self.world);
+    }
+
+    /// [`Phase::Upkeep`]: typed scene changes into the flattened scene (instance rows, BLAS
+    /// refits and rebuilds, TLAS, light table), the render-space origin near the camera, and
+    /// the listener and emitters following their entities.
+    fn upkeep_scene(&mut self) -> Prepared {
+        let extracted = self.extractor.extract(&mut self.world);
+        let objects = !extracted.changes.is_empty();
+        self.upkeep.apply_changes(extracted.changes);
+        if let Some(camera) = extracted.camera {
+            self.camera = camera;
+        }
+        self.follow_with_audio();
+        // Camera-relative rendering: keep render space's origin near the camera.
+        self.upkeep
+            .follow_camera(glam::Vec3::from(self.camera.position));
+        let (writes, header, stats) = self.upkeep.finish_frame();
+        let mut work = FrameWork::of(&self.world, &self.upkeep, &stats, &self.environment.render);
+        work.awake_bodies = self.physics.awake_bodies() as u32;
+        let motion = Motion {
+            cut: std::mem::take(&mut self.cut),
+            camera: if extracted.camera.is_some() {
+                extracted.camera_motion
+            } else {
+                0.0
+            },
+            objects,
+        };
+        Prepared {
+            writes,
+            header,
+            stats,
+            work,
+            motion,
+        }
+    }
+
+    /// [`Phase::Seal`]: the frame's commit.
+    fn seal(&mut self, prepared: Prepared) -> Commit {
+        Commit {
+            frame: self.frame,
+            writes: prepared.writes,
+            header: prepared.header,
+            camera: self.camera,
+            sun: self.environment.sun,
+            sky: self.environment.sky,
+            render: self.environment.render,
+            motion: prepared.motion,
+            capture: std::mem::take(&mut self.capture_next),
+            present: self.present_next.take(),
+        }
+    }
+
+    /// Carries out what the game's hooks queued.
+    fn carry_out_commands(&mut self) {
+        let commands: Vec<Command> = self.commands.drain().collect();
+        for command in commands {
+            match command {
+                Command::Lights { group, on } => self.upkeep.set_light_group(group, on),
+                Command::Cut => self.cut = true,
+                Command::Event(name) => self.logic.send_event(name),
+            }
+        }
+    }
+
+    /// What the level's logic reported in the step that just ran, for the game.
+    fn level_events(&self, ended_before: bool) -> Vec<LevelEvent> {
+        let log = self.logic.last_step();
+        let mut events = Vec::new();
+        for firing in &log.firings {
+            let name = self.logic.rule_name(firing.rule).unwrap_or_default();
+            events.push(LevelEvent::Rule {
+                name: name.to_string(),
+                firing: firing.clone(),
+            });
+        }
+        for event in &log.volume_events {
+            let name = self.logic.volume_name(event.volume).unwrap_or_default();
+            events.push(LevelEvent::Volume {
+                name: name.to_string(),
+                event: event.clone(),
+            });
+        }
+        events.extend(log.clip_events.iter().cloned().map(LevelEvent::Clip));
+        if !ended_before && let Some(outcome) = self.logic.outcome() {
+            events.push(LevelEvent::Ended(outcome.clone()));
+        }
+        events
+    }
+
+    /// Carries out what the level's rules asked for in a step.
+    fn carry_out(&mut self, effects: Vec<Effect>) {
+        for effect in effects {
+            match effect {
+                Effect::Lights { group, on } => self.upkeep.set_light_group(group, on),
+                Effect::ToggleLights(group) => {
+                    let on = self.upkeep.light_group_on(group);
+                    self.upkeep.set_light_group(group, !on);
+                }
+                Effect::Sound { sound, at, volume } => {
+                    let Some(planned) = self.logic.sounds().get(sound) else {
+                        continue;
+                    };
+                    let at = at.and_then(|e| {
+                        crate::sim::triggers::world_from_model(&self.world, e)
+                            .map(|m| m.w_axis.truncate())
+                    });
+                    let options = PlayOptions {
+                        volume,
+                        looped: false,
+                        at,
+                    };
+                    if let Err(e) = self.audio.play(&planned.sound, options) {
+                        log::warn!("sound {:?}: {e}", planned.name);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Puts the listener at the camera and moves spatial emitters with their entities.
+    fn follow_with_audio(&mut self) {
+        let c = &self.camera;
+        let position = glam::Vec3::from(c.position);
+        let forward = (glam::Vec3::from(c.look_at) - position).normalize_or_zero();
+        let right = forward.cross(glam::Vec3::from(c.up)).normalize_or_zero();
+        if forward != glam::Vec3::ZERO && right != glam::Vec3::ZERO {
+            // The listener looks along its local −Z with +Y up (right-handed).
+            let up = right.cross(forward);
+            let basis = glam::Mat3::from_cols(right, up, -forward);
+            self.audio
+                .set_listener(position, glam::Quat::from_mat3(&basis).normalize());
+        }
+        sync_emitters(&mut self.audio, &mut self.world);
+    }
+}

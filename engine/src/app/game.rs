@@ -1,0 +1,138 @@
+//! The game-facing API: what a game implements ([`Game`]) and what it gets in each hook
+//! ([`Step`], [`FrameInput`]), the level events delivered to it ([`LevelEvent`]) and the
+//! commands it queues for the engine ([`Commands`]). [`super::Engine`]'s public methods are the
+//! rest of the surface (spawning levels, light groups, physics, audio, queries).
+//!
+//! A game is a thin crate over this module and [`super::Engine`]'s public methods: it never
+//! reaches into the renderer, the upkeep or the commit. Hooks run on the main thread, inside
+//! [`super::Engine::frame`]: `frame` once per frame (phase `Input`), `fixed_step` and then
+//! `level_event` for each event of that step (phase `Steps`), all before the scene is posed
+//! and sealed. The window runner also calls `ui` while it builds the frame's overlay.
+//! Must not: hold references into the engine between hooks (everything is lent per call).
+
+use hecs::World;
+
+use super::input::InputState;
+use crate::query::Queries;
+use crate::sim::animation::FiredEvent;
+use crate::sim::physics::PhysicsWorld;
+use crate::sim::triggers::{Outcome, RuleFiring, VolumeEvent};
+
+/// Why a game could not set itself up (a level that does not load, a missing asset).
+pub type SetupError = Box<dyn std::error::Error + Send + Sync>;
+
+/// What a game does, hook by hook. Every hook has a default that does nothing.
+pub trait Game {
+    /// Once the engine exists (and, in a window, the window): spawn the level, cameras,
+    /// players. Runs before the first frame.
+    fn setup(&mut self, _engine: &mut super::Engine) -> Result<(), SetupError> {
+        Ok(())
+    }
+
+    /// Every frame, before its fixed steps (cameras that follow frames, menus that read the
+    /// frame's input).
+    fn frame(&mut self, _frame: &mut FrameInput<'_>) {}
+
+    /// Every fixed step (1/60 s by default), before physics: the game's rules, with ray
+    /// queries on the scene as of the last commit.
+    fn fixed_step(&mut self, _step: &mut Step<'_>) {}
+
+    /// Each thing the level's logic reported in the step that just ran (after physics and the
+    /// level's rules): rule firings, volume and clip events, winning or losing.
+    fn level_event(&mut self, _step: &mut Step<'_>, _event: &LevelEvent) {}
+
+    /// Whether the game draws a UI: the window runner then runs egui every frame and calls
+    /// [`Game::ui`] (egui costs a few milliseconds a frame on a software adapter).
+    fn has_ui(&self) -> bool {
+        false
+    }
+
+    /// Windowed only, when [`Game::has_ui`]: the game's HUD and menus, drawn over the frame.
+    fn ui(&mut self, _ctx: &egui::Context) {}
+}
+
+/// A [`Game`] that is one closure run every fixed step (tools, tests, scripts).
+impl<F: FnMut(&mut Step<'_>)> Game for F {
+    fn fixed_step(&mut self, step: &mut Step<'_>) {
+        self(step)
+    }
+}
+
+/// What a fixed-step hook gets: the world, ray queries, physics and input, for one step.
+pub struct Step<'a> {
+    pub world: &'a mut World,
+    /// Ray queries on the flattened scene of the last sealed commit (full detail).
+    pub queries: Queries<'a>,
+    /// Characters, carrying, bodies; stepped after `fixed_step` returns.
+    pub physics: &'a mut PhysicsWorld,
+    /// Actions as of this step (pressed-this-step flags clear after it).
+    pub input: &'a InputState,
+    /// Index of this step since the engine started (0-based).
+    pub index: u64,
+    /// Length of a step, seconds.
+    pub step_seconds: f64,
+    /// Work for the engine after the step.
+    pub commands: &'a mut Commands,
+}
+
+/// What the per-frame hook gets.
+pub struct FrameInput<'a> {
+    pub world: &'a mut World,
+    /// Actions as of this frame (pressed-this-frame flags clear after it).
+    pub input: &'a InputState,
+    /// Wall-clock seconds since the previous frame.
+    pub frame_seconds: f64,
+    pub commands: &'a mut Commands,
+}
+
+/// Something the level's logic did in a step, for the game.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LevelEvent {
+    /// A rule's condition changed: `rising` ran its `then`, falling its `otherwise`.
+    Rule { name: String, firing: RuleFiring },
+    /// Something entered, stayed in or left a trigger volume.
+    Volume { name: String, event: VolumeEvent },
+    /// A clip passed one of its named events.
+    Clip(FiredEvent),
+    /// A rule with a `Win` or `Lose` action fired.
+    Ended(Outcome),
+}
+
+/// Work a hook asks of the engine, carried out in order right after the hook returns.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Commands {
+    queue: Vec<Command>,
+}
+
+/// One queued [`Commands`] entry.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Command {
+    /// Switch a light group (its emitters leave or join the light distribution).
+    Lights { group: u32, on: bool },
+    /// Forget the converged image (a teleport, a level change).
+    Cut,
+    /// An event the level's rules see as `Event(name)` in the next step.
+    Event(String),
+}
+
+impl Commands {
+    /// Switches light group `group` on or off.
+    pub fn set_light_group(&mut self, group: u32, on: bool) {
+        self.queue.push(Command::Lights { group, on });
+    }
+
+    /// Marks a camera cut: the converged image restarts.
+    pub fn cut(&mut self) {
+        self.queue.push(Command::Cut);
+    }
+
+    /// Sends `name` to the level's rules (seen by `Event(name)` conditions in the next step).
+    pub fn send_event(&mut self, name: impl Into<String>) {
+        self.queue.push(Command::Event(name.into()));
+    }
+
+    /// Takes the queued commands, oldest first.
+    pub(super) fn drain(&mut self) -> std::vec::Drain<'_, Command> {
+        self.queue.drain(..)
+    }
+}

@@ -1,0 +1,119 @@
+//! Loading a level to play: what it renders (`assets::load_scene`), its bodies, its gameplay,
+//! and the check that its declared `needs` cover what it uses.
+//!
+//! Owns: [`PlayableLevel`], [`load_level`] and [`playable_from_level`]. Every problem is an [`AssetError`] naming the
+//! level file and the item. Main thread (or a loader thread).
+//! Must not: spawn entities (`Engine::spawn_level` does) or touch the GPU.
+
+use std::path::Path;
+
+use super::body::{InstanceBody, resolve_body};
+use super::gameplay_check::plan_gameplay;
+use crate::assets::{
+    AssetError, AssetResult, AssetRoot, Level, Needs, SceneDesc, scene_from_level,
+};
+use crate::sim::triggers::{Action, GameplayPlan};
+
+/// A level ready to spawn: its scene, the physics components of its instances and its
+/// gameplay, every name resolved.
+#[derive(Clone, Debug)]
+pub struct PlayableLevel {
+    pub scene: SceneDesc,
+    /// Per instance (in `scene.instances` order), its body and collider.
+    pub bodies: Vec<Option<InstanceBody>>,
+    /// Sounds, clips, trigger volumes, lasers and rules, by index.
+    pub gameplay: GameplayPlan,
+}
+
+impl PlayableLevel {
+    /// A level of `scene` with no bodies and no gameplay (scenes built in code).
+    pub fn of_scene(scene: SceneDesc) -> Self {
+        Self {
+            bodies: vec![None; scene.instances.len()],
+            scene,
+            gameplay: GameplayPlan::default(),
+        }
+    }
+}
+
+/// Reads `level_path` and loads everything it names from `root`: models (in parallel),
+/// bodies, gameplay (sounds decoded); checks `needs`.
+pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<PlayableLevel> {
+    let level = Level::read(level_path)?;
+    playable_from_level(level_path, &level, root)
+}
+
+/// [`load_level`] of an already parsed `level` (read from `level_path`).
+pub fn playable_from_level(
+    level_path: &Path,
+    level: &Level,
+    root: &AssetRoot,
+) -> AssetResult<PlayableLevel> {
+    let scene = scene_from_level(level_path, level, root)?;
+    let level_error = |message: String| AssetError::Level {
+        path: level_path.to_path_buf(),
+        message,
+    };
+    let mut bodies = Vec::with_capacity(level.instances.len());
+    for (i, (entry, instance)) in level.instances.iter().zip(&scene.instances).enumerate() {
+        let body = match (&entry.body, scene.models.get(instance.model)) {
+            (Some(body), Some(model)) => Some(
+                resolve_body(body, model, instance.world_from_model).map_err(|message| {
+                    let name = entry.name.as_deref().unwrap_or(&entry.model);
+                    level_error(format!("instance {i} ({name:?}): body: {message}"))
+                })?,
+            ),
+            _ => None,
+        };
+        bodies.push(body);
+    }
+    let gameplay = plan_gameplay(level_path, level, root)?;
+    check_needs(level_path, level, &scene, &gameplay)?;
+    Ok(PlayableLevel {
+        scene,
+        bodies,
+        gameplay,
+    })
+}
+
+/// The level's declared `needs` must cover what its content and its rules' material switches
+/// use; a level that declares none is told what it uses.
+fn check_needs(
+    level_path: &Path,
+    level: &Level,
+    scene: &SceneDesc,
+    gameplay: &GameplayPlan,
+) -> AssetResult<()> {
+    let mut used = Needs::of_scene(scene);
+    let switched = gameplay
+        .rules
+        .iter()
+        .flat_map(|rule| rule.then.iter().chain(&rule.otherwise))
+        .filter_map(|action| match action {
+            Action::Material {
+                material: Some(m), ..
+            } => Some(*m as usize),
+            _ => None,
+        });
+    used.add_switched_materials(scene, switched);
+    match level.needs {
+        Some(declared) => {
+            let missing = declared.undeclared(&used);
+            if !missing.is_empty() {
+                return Err(AssetError::Level {
+                    path: level_path.to_path_buf(),
+                    message: format!(
+                        "the level uses {} but its `needs` does not declare {}",
+                        missing.join(", "),
+                        if missing.len() == 1 { "it" } else { "them" }
+                    ),
+                });
+            }
+        }
+        None => log::info!(
+            "{}: declares no `needs`; its content uses: {used}",
+            level_path.display()
+        ),
+    }
+    Ok(())
+}

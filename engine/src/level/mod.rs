@@ -1,0 +1,16 @@
+//! A level to play: loading a level file with everything a game needs from it — the scene it
+//! renders (`assets`), the physics components of its instances, its gameplay checked and
+//! planned (sounds decoded, clips built, names resolved) — so that every problem is found at
+//! load time and names the file and the item.
+//!
+//! Sits above `sim` and `audio` (it builds their types) and below `app` (which spawns a
+//! [`PlayableLevel`] into the engine). Main thread or a loader thread.
+//! Must not: spawn entities, run systems or touch the GPU.
+
+mod body;
+mod gameplay_check;
+mod load;
+
+pub use body::{InstanceBody, resolve_body};
+pub use gameplay_check::plan_gameplay;
+pub use load::{PlayableLevel, load_level, playable_from_level};

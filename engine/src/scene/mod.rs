@@ -1,0 +1,27 @@
+//! The flattened scene: the one data model both sides of the hand-off share. The main thread's
+//! upkeep (`accel`) builds and changes it, the render thread applies the same changes to its
+//! copy, and both tracers and the game's ray queries read it.
+//!
+//! Owns: [`RenderScene`] (the `layout` buffers of one scene), [`SceneWrite`] / [`SceneHeader`]
+//! (the deltas a commit carries, and applying them), the light table ([`lights`]: emissive
+//! triangles, alias table, light groups, sun and sky), material and texture packing
+//! ([`materials`]), what a surface does to a laser ([`optics`]) and the box type [`Aabb`].
+//! Any thread (plain data and pure functions).
+//! Must not: build trees (`accel`), trace rays (`trace`), or know about the ECS, the commit or
+//! either thread.
+
+mod bounds;
+mod flattened;
+pub mod lights;
+pub mod materials;
+pub mod optics;
+pub mod surface;
+mod writes;
+
+pub use bounds::Aabb;
+pub(crate) use flattened::mesh_vertices;
+pub use flattened::{RenderScene, SceneStats, model_triangles};
+pub use lights::LightTable;
+pub use materials::luminance;
+pub use optics::{Optics, optics_of};
+pub use writes::{SceneHeader, SceneWrite};

@@ -1,0 +1,251 @@
+//! The engine's top-level modules form layers without cycles: a module uses only the modules
+//! `engine/src/lib.rs` declares before it. This test reads every `crate::` path (plain,
+//! grouped as `crate::{a::…, b::…}`, and `super::` chains that climb to the crate root) in the
+//! code of `engine/src`, comments left out, and fails naming the file, the line and the two
+//! modules of every upward use.
+
+use std::collections::BTreeSet;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+/// The top-level modules in the order `lib.rs` declares them (`pub mod x;` / `mod x;`).
+fn layers() -> Vec<String> {
+    let lib = fs::read_to_string(src().join("lib.rs")).expect("engine/src/lib.rs");
+    lib.lines()
+        .map(str::trim)
+        .filter_map(|l| {
+            l.strip_prefix("pub mod ")
+                .or_else(|| l.strip_prefix("mod "))
+        })
+        .filter_map(|l| l.strip_suffix(';'))
+        .map(str::to_string)
+        .collect()
+}
+
+fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+    let mut entries: Vec<_> = fs::read_dir(dir)
+        .expect("readable source folder")
+        .map(|e| e.expect("entry").path())
+        .collect();
+    entries.sort();
+    for path in entries {
+        if path.is_dir() {
+            rust_files(&path, out);
+        } else if path.extension().is_some_and(|e| e == "rs") {
+            out.push(path);
+        }
+    }
+}
+
+/// The code of `text` without comments (line comments, doc comments and block comments) and
+/// without the contents of string literals, line by line.
+fn code_lines(text: &str) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut in_block = 0u32;
+    for line in text.lines() {
+        let mut out = String::new();
+        let chars: Vec<char> = line.chars().collect();
+        let mut i = 0;
+        let mut in_string = false;
+        while i < chars.len() {
+            let c = chars[i];
+            let next = chars.get(i + 1).copied();
+            if in_block > 0 {
+                if c == '*' && next == Some('/') {
+                    in_block -= 1;
+                    i += 2;
+                } else if c == '/' && next == Some('*') {
+                    in_block += 1;
+                    i += 2;
+                } else {
+                    i += 1;
+                }
+                continue;
+            }
+            if in_string {
+                if c == '\\' {
+                    i += 2;
+                    continue;
+                }
+                if c == '"' {
+                    in_string = false;
+                    out.push('"');
+                }
+                i += 1;
+                continue;
+            }
+            match (c, next) {
+                ('/', Some('/')) => break,
+                ('/', Some('*')) => {
+                    in_block += 1;
+                    i += 2;
+                }
+                ('"', _) => {
+                    in_string = true;
+                    out.push('"');
+                    i += 1;
+                }
+                _ => {
+                    out.push(c);
+                    i += 1;
+                }
+            }
+        }
+        lines.push(out);
+    }
+    lines
+}
+
+fn is_ident(c: char) -> bool {
+    c.is_ascii_alphanumeric() || c == '_'
+}
+
+/// The identifier starting at `rest` (after any whitespace).
+fn ident(rest: &str) -> String {
+    rest.trim_start()
+        .chars()
+        .take_while(|&c| is_ident(c))
+        .collect()
+}
+
+/// Top-level modules named by `crate::` paths in `code` (the whole file's code, so that a
+/// grouped `use` over several lines is read whole), with the line each appears on.
+fn crate_uses(code: &[String], file_depth: usize) -> Vec<(usize, String)> {
+    let joined: String = code.iter().map(|l| format!("{l}\n")).collect();
+    let line_of = |offset: usize| joined[..offset].matches('\n').count() + 1;
+    let mut uses = Vec::new();
+    let bytes = joined.as_bytes();
+    let mut at = 0;
+    while let Some(found) = joined[at..].find("crate::") {
+        let start = at + found;
+        at = start + "crate::".len();
+        if start > 0 && is_ident(bytes[start - 1] as char) {
+            continue; // `mycrate::`
+        }
+        let rest = &joined[at..];
+        if rest.trim_start().starts_with('{') {
+            // crate::{a::x, b::{y, z}}: the first identifier of each top-level item.
+            let open = at + rest.find('{').unwrap_or(0);
+            let mut depth = 0;
+            let mut item_start = true;
+            for (k, c) in joined[open..].char_indices() {
+                match c {
+                    '{' => {
+                        depth += 1;
+                        if depth == 1 {
+                            item_start = true;
+                            continue;
+                        }
+                    }
+                    '}' => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    ',' if depth == 1 => {
+                        item_start = true;
+                        continue;
+                    }
+                    _ => {}
+                }
+                if depth == 1 && item_start && is_ident(c) {
+                    let name = ident(&joined[open + k..]);
+                    uses.push((line_of(open + k), name));
+                    item_start = false;
+                }
+            }
+        } else {
+            uses.push((line_of(start), ident(rest)));
+        }
+    }
+    // `super::super::x` from a file `file_depth` folders below the crate root.
+    for (n, line) in code.iter().enumerate() {
+        let mut from = 0;
+        while let Some(found) = line[from..].find("super::") {
+            let start = from + found;
+            let mut supers = 0;
+            let mut rest = &line[start..];
+            while let Some(r) = rest.strip_prefix("super::") {
+                supers += 1;
+                rest = r;
+            }
+            from = line.len() - rest.len();
+            if supers >= file_depth && supers > 0 {
+                uses.push((n + 1, ident(rest)));
+            }
+        }
+    }
+    uses
+}
+
+#[test]
+fn top_level_modules_only_use_the_layers_below_them() {
+    let layers = layers();
+    assert!(
+        layers.len() >= 12,
+        "lib.rs declares only {layers:?}: the layer list was not read"
+    );
+    let position = |m: &str| layers.iter().position(|l| l == m);
+    let mut files = Vec::new();
+    rust_files(&src(), &mut files);
+    let mut problems = Vec::new();
+    let mut edges = BTreeSet::new();
+    for file in &files {
+        let relative = file.strip_prefix(src()).expect("under src");
+        let parts: Vec<&str> = relative
+            .iter()
+            .map(|p| p.to_str().expect("utf-8 path"))
+            .collect();
+        if parts == ["lib.rs"] {
+            continue;
+        }
+        let top = parts[0].trim_end_matches(".rs");
+        let Some(own) = position(top) else {
+            problems.push(format!(
+                "{}: module `{top}` is not declared in lib.rs",
+                relative.display()
+            ));
+            continue;
+        };
+        // Depth below the crate root of the module the file is: `a.rs` and `a/mod.rs` are
+        // depth 1, `a/b.rs` depth 2 (a `super::` from `a/b.rs` is `a`).
+        let is_mod = parts.last().is_some_and(|p| *p == "mod.rs");
+        let depth = parts.len() - usize::from(is_mod);
+        let text = fs::read_to_string(file).expect("readable source");
+        for (line, used) in crate_uses(&code_lines(&text), depth) {
+            if used == top || used.is_empty() {
+                continue;
+            }
+            let Some(theirs) = position(&used) else {
+                continue; // crate::SomeReexport at the root (none today) or a macro path
+            };
+            edges.insert((top.to_string(), used.clone()));
+            if theirs > own {
+                problems.push(format!(
+                    "{}:{line}: `{top}` uses `{used}`, which lib.rs declares after it (a layer may use only the layers before it)",
+                    relative.display()
+                ));
+            }
+        }
+    }
+    assert!(
+        edges.len() > 20,
+        "only {} module-to-module uses found: the path reader is broken ({edges:?})",
+        edges.len()
+    );
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_path_reader_sees_every_form_of_use() {
+    let code = code_lines(
+        "use crate::{a::X,\n    b::{Y, Z}};\n// crate::c::Hidden\nlet s = \"crate::d\";\nfn f() { crate::e::g(); }\n/* crate::h */ super::super::k::L;",
+    );
+    let names: Vec<String> = crate_uses(&code, 2).into_iter().map(|(_, n)| n).collect();
+    assert_eq!(names, ["a", "b", "e", "k"]);
+}
