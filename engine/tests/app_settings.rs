@@ -81,12 +81,13 @@ fn a_changed_setting_survives_a_restart() -> Result<()> {
 fn an_older_file_with_missing_fields_loads() -> Result<()> {
     let dir = Scratch::new("settings_older");
     let path = dir.join("settings.ron");
-    std::fs::write(&path, "(vsync: false, music_volume: 0.5)")?;
+    std::fs::write(&path, "(vsync: false, music_volume: 0.5, target_fps: None)")?;
     let loaded = Settings::load(&path, &ActionSet::standard());
     assert_eq!(loaded.warning, None);
     let expected = Settings {
         vsync: false,
         music_volume: 0.5,
+        target_fps: None,
         ..Settings::default()
     };
     assert_eq!(loaded.value, expected);
