@@ -1,9 +1,10 @@
 //! Input mapped to named actions: an [`InputMap`] (data, not code: games configure it in RON)
 //! and the [`InputState`] the window runner feeds from window events and games read.
 //!
-//! Owns: bindings (keyboard keys by physical position, mouse buttons, mouse motion, the wheel)
-//! and per-action state: held, pressed since the last fixed step, pressed this frame, and
-//! motion accumulated this frame. Main thread. Must not: know winit's event types (the runner
+//! Owns: bindings (keyboard keys by physical position, mouse buttons, mouse motion, the wheel,
+//! gamepad buttons and stick axes) and per-action state: held, pressed since the last fixed
+//! step, pressed this frame, motion accumulated this frame and since the last fixed step, and
+//! the current value of analog axes. Main thread. Must not: know winit's event types (the runner
 //! translates them, so tests and scripted input drive this directly) or any game's rules.
 
 use std::collections::{BTreeMap, HashMap, HashSet};
@@ -12,6 +13,8 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 pub use winit::event::MouseButton;
 pub use winit::keyboard::KeyCode;
+
+use super::pad::{PadAxis, PadButton};
 
 /// One physical input that can trigger an action.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -25,6 +28,10 @@ pub enum Binding {
     MouseY,
     /// Mouse wheel, lines, positive away from the user.
     Wheel,
+    /// A gamepad button (any connected gamepad).
+    Pad(PadButton),
+    /// A gamepad stick axis, [−1, 1] after the dead zone (any connected gamepad).
+    PadAxis(PadAxis),
 }
 
 /// Errors of reading an input map, naming the file.
@@ -139,18 +146,30 @@ pub struct InputState {
     pressed_step: HashSet<String>,
     pressed_frame: HashSet<String>,
     motion: HashMap<String, f32>,
+    motion_step: HashMap<String, f32>,
+    /// Action → its analog bindings, and each analog binding's current value.
+    action_axes: HashMap<String, Vec<Binding>>,
+    axis_values: HashMap<Binding, f32>,
 }
 
 impl InputState {
     pub fn new(map: &InputMap) -> Self {
         let mut index: HashMap<Binding, Vec<String>> = HashMap::new();
+        let mut action_axes: HashMap<String, Vec<Binding>> = HashMap::new();
         for (action, bindings) in &map.actions {
             for binding in bindings {
                 index.entry(*binding).or_default().push(action.clone());
+                if matches!(binding, Binding::PadAxis(_)) {
+                    action_axes
+                        .entry(action.clone())
+                        .or_default()
+                        .push(*binding);
+                }
             }
         }
         Self {
             index,
+            action_axes,
             ..Default::default()
         }
     }
@@ -179,6 +198,7 @@ impl InputState {
     fn add_motion(&mut self, binding: Binding, amount: f32) {
         for action in self.index.get(&binding).into_iter().flatten() {
             *self.motion.entry(action.clone()).or_insert(0.0) += amount;
+            *self.motion_step.entry(action.clone()).or_insert(0.0) += amount;
         }
     }
 
@@ -201,6 +221,22 @@ impl InputState {
     /// Wheel motion in lines (away from the user positive).
     pub fn wheel(&mut self, lines: f32) {
         self.add_motion(Binding::Wheel, lines);
+    }
+
+    /// A gamepad button went down or up.
+    pub fn pad_button(&mut self, button: PadButton, down: bool) {
+        self.button(Binding::Pad(button), down);
+    }
+
+    /// A gamepad axis now reads `value` ([−1, 1], dead zone already applied; a value that is
+    /// not finite reads as 0).
+    pub fn pad_axis(&mut self, axis: PadAxis, value: f32) {
+        let value = if value.is_finite() {
+            value.clamp(-1.0, 1.0)
+        } else {
+            0.0
+        };
+        self.axis_values.insert(Binding::PadAxis(axis), value);
     }
 
     /// Lets go of everything (the window lost focus: its key releases will not arrive).
@@ -234,9 +270,28 @@ impl InputState {
         self.motion.get(action).copied().unwrap_or(0.0)
     }
 
-    /// Ends a fixed step: presses are now old news for game rules.
+    /// Motion bound to `action` accumulated since the last fixed step ended (for game rules
+    /// and recordings: every count reaches exactly one step, whatever the frame rate).
+    pub fn motion_since_step(&self, action: &str) -> f32 {
+        self.motion_step.get(action).copied().unwrap_or(0.0)
+    }
+
+    /// The value of `action`'s analog bindings now: their sum, clamped to [−1, 1] (0 unbound).
+    pub fn analog(&self, action: &str) -> f32 {
+        let sum: f32 = self
+            .action_axes
+            .get(action)
+            .into_iter()
+            .flatten()
+            .map(|b| self.axis_values.get(b).copied().unwrap_or(0.0))
+            .sum();
+        sum.clamp(-1.0, 1.0)
+    }
+
+    /// Ends a fixed step: presses and step motion are now old news for game rules.
     pub fn end_step(&mut self) {
         self.pressed_step.clear();
+        self.motion_step.clear();
     }
 
     /// Ends a frame: per-frame presses and motion start again from zero.
@@ -300,6 +355,13 @@ mod tests {
         input.end_frame();
         assert_eq!(input.motion("look_x"), 0.0);
         assert!(!input.pressed_this_frame("fire") && input.held("fire"));
+        assert_eq!(
+            input.motion_since_step("look_x"),
+            2.0,
+            "frames do not end steps"
+        );
+        input.end_step();
+        assert_eq!(input.motion_since_step("look_x"), 0.0);
         input.release_all();
         assert!(!input.held("fire") && !input.held("back"));
         // Unbound input changes nothing.

@@ -1,40 +1,71 @@
 //! The runner: the frame loop that drives the world, the upkeep and the render thread, headless
-//! ([`Engine`]) or in a window ([`run_window`]); the fixed-step clock; input mapped to actions;
+//! ([`Engine`]) or in a window ([`run_window`]), phase by phase ([`Phase`]); the game-facing API
+//! ([`Game`]); the fixed-step clock; input mapped to actions;
 //! the fly camera; the stats overlay; capture scripts (RON) that drive the loop for a fixed
-//! number of frames.
+//! number of frames. The game platform's pieces: named game actions and the player's
+//! bindings, gamepads, per-step action frames with recording and replay, settings and
+//! progress saves in the user's folders, written atomically.
 
+mod action_frame;
+mod action_set;
+mod atomic_file;
+mod bindings;
 mod clock;
 mod engine;
 mod fly_camera;
 mod frame;
 mod frame_limiter;
 mod game;
+mod gamepad;
 mod ghosting;
 mod input;
 mod level;
+mod pad;
 mod phase;
+mod replay;
+mod replay_error;
+mod replay_format;
+mod saves;
 mod script;
 mod script_bind;
 mod script_check;
 mod script_error;
 mod script_motion;
 mod script_run;
+mod settings;
 mod stats;
 mod stats_overlay;
+mod step_input;
+mod stored;
+mod user_dirs;
 mod waves;
 mod window;
 mod window_app;
 mod work;
 
+pub use action_frame::{AXIS_ONE, ActionFrame, MOTION_PER_COUNT, quantise_axis, quantise_motion};
+pub use action_set::{
+    ActionDef, ActionId, ActionKind, ActionSet, ActionSetError, MAX_ACTIONS, game_actions,
+};
+pub use atomic_file::{AtomicFileError, keep_aside, write_atomic};
+pub use bindings::{BindingProblem, Bindings, BindingsError};
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment};
 pub use fly_camera::{FlyCamera, fly_camera_system};
 pub use frame_limiter::FrameLimiter;
 pub use game::{Command, Commands, FrameInput, Game, LevelEvent, SetupError, Step};
+pub use gamepad::{DEFAULT_DEAD_ZONE, Gamepads, apply_dead_zone, pad_button};
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use level::SpawnedLevel;
+pub use pad::{PadAxis, PadButton};
 pub use phase::{FrameReport, Phase, PhaseTimes};
+pub use replay::{Recorder, Replay, ReplayTarget};
+pub use replay_error::ReplayError;
+pub use replay_format::{
+    FORMAT_VERSION, RecordedAction, Recording, RecordingHeader, Run, fnv1a64, level_hash,
+};
+pub use saves::Progress;
 pub use script::{
     CameraKey, Interpolation, LightSwitch, Motion, MotionEntry, ObjectKey, Screenshot, Script,
     ScriptError, ScriptLevel, ScriptRender, ScriptTracer,
@@ -42,8 +73,14 @@ pub use script::{
 pub use script_bind::{BoundScript, matches};
 pub use script_motion::{apply_motion, camera_at, camera_transform, cut_at};
 pub use script_run::{FrameTiming, RunOptions, ScriptReport, ShotResult, run_script};
+pub use settings::Settings;
 pub use stats::FrameStats;
 pub use stats_overlay::StatsOverlay;
+pub use step_input::StepInput;
+pub use stored::{
+    LoadWarning, Loaded, StoreError, describe_ron_error, load_or_default, parse_checked, save_ron,
+};
+pub use user_dirs::{UserDirs, UserDirsError};
 pub use waves::{Waves, waves_system};
 pub use window::{WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_window};
 pub use work::{FrameWork, WorkTotals};

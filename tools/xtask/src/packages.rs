@@ -8,16 +8,19 @@ use std::process::Command;
 
 /// What rendering needs: the Vulkan loader and Mesa's software Vulkan driver (lavapipe), so
 /// that wgpu finds an adapter on a machine with no GPU; and, to build the engine at all, ALSA's
-/// headers (kira's cpal backend links `libasound`; `alsa-sys` finds it with pkg-config).
+/// headers (kira's cpal backend links `libasound`; `alsa-sys` finds it with pkg-config) and
+/// udev's (gilrs reads gamepads through `libudev`; `libudev-sys` finds it with pkg-config).
 pub const RENDER: &[&str] = &[
     "libvulkan1",
     "mesa-vulkan-drivers",
     "pkg-config",
     "libasound2-dev",
+    "libudev-dev",
 ];
 
 /// Everything the tests need: rendering, a C toolchain and pkg-config for -sys crates, ALSA's
-/// headers for kira's cpal backend (the audio tests themselves use the silent recorder), and for
+/// headers for kira's cpal backend (the audio tests themselves use the silent recorder), udev's
+/// headers for gilrs (the gamepad tests run without a gamepad), and for
 /// the window test an X virtual framebuffer (`Xvfb`), `xwd` to grab its root window and
 /// ImageMagick to decode the grab.
 pub const ALL: &[&str] = &[
@@ -26,6 +29,7 @@ pub const ALL: &[&str] = &[
     "build-essential",
     "pkg-config",
     "libasound2-dev",
+    "libudev-dev",
     "xvfb",
     "x11-apps",
     "imagemagick",
