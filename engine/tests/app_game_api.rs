@@ -19,6 +19,8 @@ use glam::{Mat4, Vec3};
 #[derive(Default)]
 struct Recorder {
     calls: Vec<String>,
+    /// Per call, the event it delivered (`None` for frame and step calls).
+    events_at: Vec<Option<LevelEvent>>,
     events: Vec<LevelEvent>,
     send_at: Option<(u64, &'static str)>,
     lights_off_at: Option<(u64, u32)>,
@@ -28,10 +30,12 @@ impl Game for Recorder {
     fn frame(&mut self, frame: &mut FrameInput<'_>) {
         assert!(frame.frame_seconds > 0.0);
         self.calls.push("frame".into());
+        self.events_at.push(None);
     }
 
     fn fixed_step(&mut self, step: &mut Step<'_>) {
         self.calls.push(format!("step {}", step.index));
+        self.events_at.push(None);
         if let Some((at, name)) = self.send_at
             && step.index == at
         {
@@ -46,6 +50,7 @@ impl Game for Recorder {
 
     fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
         self.calls.push(format!("event {}", step.index));
+        self.events_at.push(Some(event.clone()));
         self.events.push(event.clone());
     }
 }
@@ -124,13 +129,15 @@ fn hooks_run_in_frame_order_and_level_events_reach_the_game() {
 #[test]
 fn commands_switch_lights_and_send_events_to_the_rules() {
     let level;
-    // A rule on an event only the game sends: it wins the level.
+    // A rule on an event only the game sends (declared in `events`): it loses the level.
     let text = std::fs::read_to_string(repo().join("assets/test_scenes/gameplay/plate_door.ron"))
         .expect("level text");
-    let with_rule = text.replace(
-        "(name: \"door_opened\", when: Event(\"door_opened\"), then: [Win], once: true),",
-        "(name: \"door_opened\", when: Event(\"door_opened\"), then: [Win], once: true),\n            (name: \"used\", when: Event(\"switch_used\"), then: [Lose], once: true),",
-    );
+    let with_rule = text
+        .replace(
+            "(name: \"door_opened\", when: Event(\"door_opened\"), then: [Win], once: true),",
+            "(name: \"door_opened\", when: Event(\"door_opened\"), then: [Win], once: true),\n            (name: \"used\", when: Event(\"switch_used\"), then: [Lose], once: true),",
+        )
+        .replace("        rules: [", "        events: [\"switch_used\"],\n        rules: [");
     assert_ne!(with_rule, text, "the rule was added");
     let dir = std::env::temp_dir().join(format!("candela_game_api_{}", std::process::id()));
     std::fs::create_dir_all(dir.join("common/sounds")).expect("temp dir");
@@ -167,12 +174,16 @@ fn commands_switch_lights_and_send_events_to_the_rules() {
         Some(&Outcome::Lost("used".into())),
         "the sent event reached the rule"
     );
-    let fired_at = game
+    // Sent from the step hook, the event reaches the rules in the same step (the level's
+    // logic runs after the game's rules), and the game hears the rule fire in that step.
+    let step_of_rule: Vec<&str> = game
         .calls
         .iter()
-        .position(|c| c == "event 4")
-        .expect("an event in step 4, the step after the one that sent it");
-    assert!(game.calls[..fired_at].iter().all(|c| c != "event 3"));
+        .zip(&game.events_at)
+        .filter(|(_, e)| matches!(e, Some(LevelEvent::Rule { name, .. }) if name == "used"))
+        .map(|(c, _)| c.as_str())
+        .collect();
+    assert_eq!(step_of_rule, ["event 3"]);
     let _ = engine.shutdown();
 }
 

@@ -11,9 +11,13 @@
 
 use hecs::World;
 
+use super::action_frame::ActionFrame;
+use super::action_set::ActionSet;
 use super::clock::FixedClock;
 use super::game::Commands;
 use super::input::InputState;
+use super::replay_error::ReplayError;
+use super::step_input::StepInput;
 use crate::accel::Upkeep;
 use crate::assets::{CameraDesc, Model, RenderSettings, SkyDesc, SunDesc};
 use crate::audio::Audio;
@@ -59,8 +63,16 @@ pub struct Engine {
     /// Sounds, music and spatial emitters; listener at the camera. Headless engines record
     /// silently (`Audio::silent`); windowed ones open the sound device when there is one.
     pub(super) audio: Audio,
-    /// Actions, fed by the runner (window events, a replay), read by the game's hooks.
+    /// Devices' state, fed by the runner (window events), read by the frame hook and menus.
     pub(super) input: InputState,
+    /// The game's named actions: what each fixed step's [`ActionFrame`] holds.
+    pub(super) actions: ActionSet,
+    /// Where each fixed step's actions come from: the devices, recorded or not, or a replay.
+    pub(super) step_input: StepInput,
+    /// This step's actions (what the game's step hooks read).
+    pub(super) step_actions: ActionFrame,
+    /// Set when a replay has played its last step; later steps get no input.
+    pub(super) replay_done: bool,
     /// What the game's hooks asked for, carried out after each hook.
     pub(super) commands: Commands,
     pub(super) extractor: Extractor,
@@ -107,6 +119,10 @@ impl Engine {
             logic: LevelLogic::default(),
             audio,
             input: InputState::default(),
+            step_actions: ActionFrame::empty(&ActionSet::standard()),
+            actions: ActionSet::standard(),
+            step_input: StepInput::Live,
+            replay_done: false,
             commands: Commands::default(),
             extractor: Extractor::new(),
             render,
@@ -220,6 +236,37 @@ impl Engine {
     /// The actions' state, for the runner to feed (window events, a replay).
     pub fn input_mut(&mut self) -> &mut InputState {
         &mut self.input
+    }
+
+    /// The game's named actions (`ActionSet::standard` until [`Engine::set_actions`]).
+    pub fn actions(&self) -> &ActionSet {
+        &self.actions
+    }
+
+    /// Sets the game's named actions; the devices' bindings come from its default map (see
+    /// `Settings::input_map` for the player's own).
+    pub fn set_actions(&mut self, actions: ActionSet) {
+        self.input = InputState::new(&actions.default_map());
+        self.step_actions = ActionFrame::empty(&actions);
+        self.actions = actions;
+    }
+
+    /// Where the fixed steps' actions come from from now on: the devices ([`StepInput::Live`]),
+    /// the devices recorded, or a replay (which then alone drives the game's steps, so a run
+    /// repeats exactly, whatever the frame rate or the tracer).
+    pub fn set_step_input(&mut self, source: StepInput) {
+        self.replay_done = false;
+        self.step_input = source;
+    }
+
+    /// Whether a replay has played its last step.
+    pub fn replay_finished(&self) -> bool {
+        self.replay_done
+    }
+
+    /// Writes the recording, when recording (atomically; every step so far).
+    pub fn finish_recording(&self) -> Result<(), ReplayError> {
+        self.step_input.finish()
     }
 
     /// The fixed-step clock (step length, steps taken).

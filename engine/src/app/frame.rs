@@ -7,6 +7,7 @@
 
 use std::time::Instant;
 
+use super::action_frame::ActionFrame;
 use super::engine::{Engine, EngineError};
 use super::game::{Command, FrameInput, Game, LevelEvent, Step};
 use super::phase::{FrameReport, Phase, PhaseTimes};
@@ -120,11 +121,14 @@ impl Engine {
     /// effects → level events to the game → audio.
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
+        self.step_actions = self.next_actions();
         game.fixed_step(&mut Step {
             world: &mut self.world,
             queries: self.upkeep.queries(),
             physics: &mut self.physics,
             input: &self.input,
+            actions: &self.step_actions,
+            action_set: &self.actions,
             index,
             step_seconds: dt,
             commands: &mut self.commands,
@@ -144,6 +148,8 @@ impl Engine {
                 queries: self.upkeep.queries(),
                 physics: &mut self.physics,
                 input: &self.input,
+                actions: &self.step_actions,
+                action_set: &self.actions,
                 index,
                 step_seconds: dt,
                 commands: &mut self.commands,
@@ -154,7 +160,26 @@ impl Engine {
             self.carry_out_commands();
         }
         self.audio.tick(dt);
-        self.input.end_step();
+    }
+
+    /// This step's actions from the step input (which also ends the step in the devices'
+    /// state); after a replay's last step, or on a recording error (logged), no input.
+    fn next_actions(&mut self) -> ActionFrame {
+        if self.replay_done {
+            self.input.end_step();
+            return ActionFrame::empty(&self.actions);
+        }
+        match self.step_input.next_step(&mut self.input, &self.actions) {
+            Ok(Some(frame)) => frame,
+            Ok(None) => {
+                self.replay_done = true;
+                ActionFrame::empty(&self.actions)
+            }
+            Err(e) => {
+                log::error!("input recording: {e}");
+                ActionFrame::empty(&self.actions)
+            }
+        }
     }
 
     /// [`Phase::Pose`]: the world as it is to be rendered — physics interpolated between the

@@ -12,6 +12,8 @@
 
 use hecs::World;
 
+use super::action_frame::ActionFrame;
+use super::action_set::ActionSet;
 use super::input::InputState;
 use crate::query::Queries;
 use crate::sim::animation::FiredEvent;
@@ -65,8 +67,14 @@ pub struct Step<'a> {
     pub queries: Queries<'a>,
     /// Characters, carrying, bodies; stepped after `fixed_step` returns.
     pub physics: &'a mut PhysicsWorld,
-    /// Actions as of this step (pressed-this-step flags clear after it).
+    /// The devices' state (menus, the runner); game rules read [`Step::actions`] instead,
+    /// which a replay reproduces exactly.
     pub input: &'a InputState,
+    /// This step's actions: held and pressed buttons, fixed-point axes and look motion —
+    /// from the devices, or from a replay.
+    pub actions: &'a ActionFrame,
+    /// Names and ids of the actions (`action_set.id("jump")`).
+    pub action_set: &'a ActionSet,
     /// Index of this step since the engine started (0-based).
     pub index: u64,
     /// Length of a step, seconds.
@@ -111,7 +119,8 @@ pub enum Command {
     Lights { group: u32, on: bool },
     /// Forget the converged image (a teleport, a level change).
     Cut,
-    /// An event the level's rules see as `Event(name)` in the next step.
+    /// An event the level's rules see as `Event(name)` the next time they run (in the same
+    /// step when sent from `fixed_step`, in the next from `level_event` or `frame`).
     Event(String),
 }
 
@@ -126,7 +135,9 @@ impl Commands {
         self.queue.push(Command::Cut);
     }
 
-    /// Sends `name` to the level's rules (seen by `Event(name)` conditions in the next step).
+    /// Sends `name` to the level's rules: `Event(name)` conditions see it the next time the
+    /// rules run (in the same step when sent from `fixed_step`, which runs before them). The
+    /// level declares the names it expects in `gameplay.events`.
     pub fn send_event(&mut self, name: impl Into<String>) {
         self.queue.push(Command::Event(name.into()));
     }

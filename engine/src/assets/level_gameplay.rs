@@ -60,6 +60,10 @@ pub struct GameplayEntry {
     /// Rules, evaluated in this order every fixed step.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub rules: Vec<RuleEntry>,
+    /// Events the game sends to the rules (a "use" on a switch: `Commands::send_event`), so
+    /// that `Event(name)` conditions may wait for them as for clip events.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub events: Vec<String>,
 }
 
 impl GameplayEntry {

@@ -174,6 +174,7 @@ pub fn plan_gameplay(
         .animations
         .iter()
         .flat_map(|c| c.events.iter().map(|e| e.name.as_str()))
+        .chain(g.events.iter().map(String::as_str))
         .collect();
     let refs = Refs {
         volumes: &volumes,
@@ -282,7 +283,7 @@ impl Refs<'_> {
             ConditionEntry::Event(name) => {
                 if !self.events.contains(name.as_str()) {
                     return Err(error(format!(
-                        "{user} waits for the clip event {name:?}, which no clip fires"
+                        "{user} waits for the event {name:?}, which no clip fires and `events` does not declare"
                     )));
                 }
                 Condition::Event(name.clone())

@@ -150,8 +150,9 @@ impl LevelLogic {
         &self.last
     }
 
-    /// Sends event `name` to the rules: `Event(name)` conditions see it in the next step, as
-    /// they see clip events (a "use" on a switch, a game's own trigger).
+    /// Sends event `name` to the rules: `Event(name)` conditions see it in the next
+    /// [`LevelLogic::step`], as they see clip events (a "use" on a switch, a game's own
+    /// trigger).
     pub fn send_event(&mut self, name: impl Into<String>) {
         self.sent.push(name.into());
     }
