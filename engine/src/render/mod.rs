@@ -1,6 +1,7 @@
 //! Rendering: the render-side scene, lights, camera, the `Tracer` trait with its GPU and CPU
 //! implementations, the film, and presenting it in a window.
 
+pub mod balance;
 pub mod camera;
 pub mod cpu;
 pub mod film;
