@@ -14,7 +14,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::Context;
 use candela::render::balance::{
-    Balancer, CostTrace, PerfectSmooth, SchemeKind, SimReport, simulate,
+    Balancer, CostModel, CostTrace, Interleaved, PerfectSmooth, SchemeKind, SimReport, simulate,
 };
 use clap::Args;
 
@@ -49,6 +49,10 @@ pub struct BalanceArgs {
     /// Extra Perfect Smooth rows at these α (the paper gives none; ours defaults to 0.5).
     #[arg(long, value_delimiter = ',', default_value = "0.25,0.75")]
     pub alphas: Vec<f64>,
+    /// Extra rows of our schemes at these cost blends β (ours defaults to
+    /// `candela::render::balance::COST_BLEND`).
+    #[arg(long, value_delimiter = ',', default_value = "0.25,1")]
+    pub blends: Vec<f64>,
     /// Replay ray counts instead of measured times as the cost of a unit.
     #[arg(long)]
     pub rays: bool,
@@ -98,13 +102,28 @@ struct Cell {
 }
 
 /// Every scheme, plus Perfect Smooth at the extra α values, for `tracers` tracers.
-fn schemes(units: usize, tracers: usize, alphas: &[f64]) -> Vec<(Box<dyn Balancer>, bool)> {
+fn schemes(
+    units: usize,
+    tracers: usize,
+    alphas: &[f64],
+    blends: &[f64],
+) -> Vec<(Box<dyn Balancer>, bool)> {
     let mut out: Vec<(Box<dyn Balancer>, bool)> = Vec::new();
     for kind in SchemeKind::ALL {
         out.push((kind.build(units, tracers), !kind.from_paper()));
         if kind == SchemeKind::PerfectSmooth {
             for &a in alphas {
                 out.push((Box::new(PerfectSmooth::new(units, tracers, a)), false));
+            }
+        }
+        if kind == SchemeKind::CostModel {
+            for &b in blends {
+                out.push((Box::new(CostModel::with_blend(units, tracers, b)), true));
+            }
+        }
+        if kind == SchemeKind::Interleaved {
+            for &b in blends {
+                out.push((Box::new(Interleaved::with_blend(units, tracers, b)), true));
             }
         }
     }
@@ -146,7 +165,12 @@ pub fn run(args: &BalanceArgs) -> anyhow::Result<()> {
     let mut cells = Vec::new();
     for (camera, trace) in &traces {
         for (d, devices) in DEVICES.iter().enumerate() {
-            for (mut scheme, ours) in schemes(trace.units(), devices.speeds.len(), &args.alphas) {
+            for (mut scheme, ours) in schemes(
+                trace.units(),
+                devices.speeds.len(),
+                &args.alphas,
+                &args.blends,
+            ) {
                 let report = simulate(trace, devices.speeds, scheme.as_mut());
                 cells.push(Cell {
                     camera,
@@ -195,7 +219,7 @@ pub fn run(args: &BalanceArgs) -> anyhow::Result<()> {
                 reports: cells
                     .iter()
                     .filter(|c| c.devices == d && c.camera == camera)
-                    .filter(|c| !c.report.scheme.contains('α'))
+                    .filter(|c| !c.report.scheme.contains('α') && !c.report.scheme.contains('β'))
                     .map(|c| &c.report)
                     .collect(),
             })
@@ -212,7 +236,9 @@ pub fn run(args: &BalanceArgs) -> anyhow::Result<()> {
 
 /// The Markdown table of mean idle % (worst frame %) for two device sets × two cameras.
 fn table(cells: &[Cell], devices: &[usize], title: &str) -> String {
-    let mut out = format!("### {title}: mean idle % over the frames (worst frame %)\n\n| scheme |");
+    let mut out = format!(
+        "### {title}: mean idle % over the frames (worst frame after the first, %)\n\n| scheme |"
+    );
     let columns: Vec<(usize, &str)> = devices
         .iter()
         .flat_map(|&d| SPINS.iter().map(move |s| (d, s.name)))

@@ -57,6 +57,7 @@ pub fn figure(path: &Path, title: &str, panels: &[Panel<'_>]) -> anyhow::Result<
         let mut mesh = chart.configure_mesh();
         if fonts {
             mesh.x_desc("frame")
+                .x_label_formatter(&|x| format!("{x:.0}"))
                 .y_desc("idle % (log)")
                 .y_label_formatter(&|y| format!("{y}"))
                 .label_style(("sans-serif", 14));

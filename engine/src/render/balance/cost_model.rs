@@ -15,26 +15,36 @@ use super::scheme::Balancer;
 use super::speeds::SpeedEstimate;
 use super::split::Split;
 
+/// Weight of the newest frame in the predicted cost field. Measured unit times carry noise
+/// that the next frame does not repeat (on this shared VM 8 % per unit from frame to frame,
+/// against 1–2 % in what the rows really cost, judged by their ray counts), so the field is
+/// an exponential average; `bench balance --blends` sweeps it.
+pub const COST_BLEND: f64 = 0.5;
+
 /// The next frame's cost per unit (seconds on a speed-one tracer) and the tracers' speeds.
 #[derive(Clone, Debug)]
 struct Predictor {
     units: usize,
     tracers: usize,
     speeds: SpeedEstimate,
+    /// Weight of the newest frame in the smoothed cost field (1: the last frame only).
+    blend: f64,
     costs: Option<Vec<f64>>,
 }
 
 impl Predictor {
-    fn new(units: usize, tracers: usize) -> Self {
+    fn new(units: usize, tracers: usize, blend: f64) -> Self {
         Self {
             units,
             tracers,
             speeds: SpeedEstimate::new(tracers),
+            blend: blend.clamp(1e-3, 1.0),
             costs: None,
         }
     }
 
-    /// Takes in one frame: per-unit times when there are, else each tracer's time spread
+    /// Takes in one frame, blended into the running cost field with weight `blend`: per-unit
+    /// times when there are, else each tracer's time spread
     /// evenly over its units (then the schemes act like a smoothed Perfect).
     fn observe(&mut self, m: &FrameTimes) {
         if m.split.units() != self.units
@@ -60,8 +70,24 @@ impl Predictor {
                 .collect()
         };
         if costs.iter().all(|c| c.is_finite() && *c >= 0.0) && costs.iter().any(|c| *c > 0.0) {
-            self.costs = Some(costs);
+            self.costs = Some(match self.costs.take() {
+                Some(old) => old
+                    .iter()
+                    .zip(&costs)
+                    .map(|(o, c)| self.blend * c + (1.0 - self.blend) * o)
+                    .collect(),
+                None => costs,
+            });
         }
+    }
+}
+
+/// `base`, with the blend when it is not the default.
+fn blend_name(base: &str, blend: f64) -> String {
+    if blend == COST_BLEND {
+        base.into()
+    } else {
+        format!("{base} β={blend}")
     }
 }
 
@@ -73,16 +99,22 @@ pub struct CostModel {
 }
 
 impl CostModel {
+    /// With the default cost blend, [`COST_BLEND`].
     pub fn new(units: usize, tracers: usize) -> Self {
+        Self::with_blend(units, tracers, COST_BLEND)
+    }
+
+    /// `blend` in (0, 1]: the weight of the newest frame in the cost field.
+    pub fn with_blend(units: usize, tracers: usize, blend: f64) -> Self {
         Self {
-            predictor: Predictor::new(units, tracers),
+            predictor: Predictor::new(units, tracers, blend),
         }
     }
 }
 
 impl Balancer for CostModel {
     fn name(&self) -> String {
-        "cost model".into()
+        blend_name("cost model", self.predictor.blend)
     }
 
     fn next(&mut self, last: Option<&FrameTimes>) -> Split {
@@ -111,16 +143,22 @@ pub struct Interleaved {
 }
 
 impl Interleaved {
+    /// With the default cost blend, [`COST_BLEND`].
     pub fn new(units: usize, tracers: usize) -> Self {
+        Self::with_blend(units, tracers, COST_BLEND)
+    }
+
+    /// `blend` in (0, 1]: the weight of the newest frame in the cost field.
+    pub fn with_blend(units: usize, tracers: usize, blend: f64) -> Self {
         Self {
-            predictor: Predictor::new(units, tracers),
+            predictor: Predictor::new(units, tracers, blend),
         }
     }
 }
 
 impl Balancer for Interleaved {
     fn name(&self) -> String {
-        "interleaved".into()
+        blend_name("interleaved", self.predictor.blend)
     }
 
     fn next(&mut self, last: Option<&FrameTimes>) -> Split {

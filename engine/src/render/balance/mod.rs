@@ -27,7 +27,7 @@ mod speeds;
 mod split;
 
 pub use apportion::apportion;
-pub use cost_model::{CostModel, Interleaved};
+pub use cost_model::{COST_BLEND, CostModel, Interleaved};
 pub use costs::CostTrace;
 pub use deal::{deal_interleaved, fill_contiguous};
 pub use error::BalanceError;

@@ -114,11 +114,12 @@ impl SpeedEstimate {
                 return;
             }
             a.swap(col, pivot);
-            for row in 0..n {
-                if row != col {
-                    let f = a[row][col] / a[col][col];
-                    for k in col..=n {
-                        a[row][k] -= f * a[col][k];
+            let pivot_row = a[col].clone();
+            for (r, row) in a.iter_mut().enumerate() {
+                if r != col {
+                    let f = row[col] / pivot_row[col];
+                    for (v, p) in row.iter_mut().zip(&pivot_row).skip(col) {
+                        *v -= f * p;
                     }
                 }
             }
