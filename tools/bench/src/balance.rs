@@ -53,6 +53,14 @@ pub struct BalanceArgs {
     /// `candela::render::balance::COST_BLEND`).
     #[arg(long, value_delimiter = ',', default_value = "0.25,1")]
     pub blends: Vec<f64>,
+    /// Also run every scheme on a real pool of CPU tracers (`--pool-threads`) for
+    /// `--pool-frames` frames of the slow camera.
+    #[arg(long)]
+    pub pool: bool,
+    #[arg(long, default_value_t = 32)]
+    pub pool_frames: u32,
+    #[arg(long, value_delimiter = ',', default_value = "1,1")]
+    pub pool_threads: Vec<usize>,
     /// Replay ray counts instead of measured times as the cost of a unit.
     #[arg(long)]
     pub rays: bool,
@@ -202,6 +210,13 @@ pub fn run(args: &BalanceArgs) -> anyhow::Result<()> {
     println!("{}", table(&cells, &[2, 3], "Unequal tracers"));
     println!("{}", paper_table());
     write_csv(args, &cells)?;
+    if args.pool {
+        let size = (first.width, first.height, args.spp);
+        println!(
+            "{}",
+            super::balance_pool::run(&repo, args.pool_frames, size, &args.pool_threads)?
+        );
+    }
     std::fs::create_dir_all(&args.chart_dir)?;
     for (stem, devices) in [
         ("balance_fig9", [0usize, 1]),

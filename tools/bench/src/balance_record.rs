@@ -47,7 +47,7 @@ const START_YAW_DEG: f32 = 225.0;
 const FOV_DEG: f32 = 50.0;
 
 /// The camera of frame `frame` of `spin`.
-fn camera_at(spin: Spin, frame: u32) -> CameraDesc {
+pub fn camera_at(spin: Spin, frame: u32) -> CameraDesc {
     let yaw = (START_YAW_DEG + spin.deg_per_frame * frame as f32).to_radians();
     let pitch = PITCH_UP_DEG.to_radians();
     let dir = [

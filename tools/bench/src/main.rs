@@ -23,6 +23,7 @@
 
 mod balance;
 mod balance_plot;
+mod balance_pool;
 mod balance_record;
 mod build;
 mod chart;
