@@ -3,6 +3,7 @@
 //! film, and presenting it in a window. The scene it renders is [`crate::scene`]'s.
 
 pub mod auto;
+pub mod balance;
 pub mod camera;
 pub mod cpu;
 pub mod film;

@@ -15,9 +15,16 @@
 //! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
 //!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
 //!   of game update and render (CSV files beside the tables).
+//! * `bench balance [--record]` — Brigade's workload balancers (§4.3, Table 1, Figure 9) and
+//!   ours, replayed on recorded per-unit costs of the demo city on simulated tracers
+//!   (`tools/bench/data/balance/`, tables in `docs/PERFORMANCE.md`, charts in `docs/charts/`).
 //! * `bench ghosting` — error on a fast-moving object and its trail per converging policy
 //!   (`ghosting.csv` beside the table; figures in `docs/ACCURACY.md`).
 
+mod balance;
+mod balance_plot;
+mod balance_pool;
+mod balance_record;
 mod build;
 mod chart;
 mod chart_methods;
@@ -61,6 +68,8 @@ enum Command {
     Pipeline(pipeline::PipelineArgs),
     /// Error on a fast-moving object and its trail per converging policy.
     Ghosting(ghosting::GhostingArgs),
+    /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
+    Balance(balance::BalanceArgs),
 }
 
 fn main() -> anyhow::Result<()> {
@@ -85,5 +94,6 @@ fn main() -> anyhow::Result<()> {
         }
         Command::Pipeline(a) => pipeline::run(&a),
         Command::Ghosting(a) => ghosting::run(&a),
+        Command::Balance(a) => balance::run(&a),
     }
 }

@@ -12,7 +12,7 @@ use plotters::prelude::*;
 use super::chart::Point;
 
 /// Registers a TrueType font for chart text; without one the charts still draw, unlabelled.
-fn register_font() -> bool {
+pub fn register_font() -> bool {
     for path in [
         "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf",
         "/usr/share/fonts/TTF/DejaVuSans.ttf",

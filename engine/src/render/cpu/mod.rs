@@ -10,4 +10,4 @@ pub mod surface;
 pub mod texture;
 mod tracer;
 
-pub use tracer::CpuTracer;
+pub use tracer::{CpuTracer, trace_rect};

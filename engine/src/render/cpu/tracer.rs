@@ -5,6 +5,7 @@
 //! formed in sample order inside each pixel, so the film is bit-identical for any thread count.
 //! Must not: change the scene (it reads the caller's `RenderScene` in place).
 
+use std::ops::Range;
 use std::time::Instant;
 
 use glam::Vec3;
@@ -15,9 +16,35 @@ use crate::layout::GpuFrameUniforms;
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
 use crate::scene::RenderScene;
+use crate::trace::TraceScene;
 
 /// Tile edge in pixels.
 const TILE: u32 = 16;
+
+/// Sums `u.spp` samples (from `u.sample_base`) of every pixel of the rectangle `xs × ys`, on the
+/// calling thread, row by row (left to right, top to bottom). The tile loop below and the
+/// workload balancer's recorder and pool (`render/balance/`) share it, so a split frame holds
+/// the very sums of a whole one.
+pub fn trace_rect(
+    scene: &RenderScene,
+    tracer: &TraceScene<'_>,
+    u: &GpuFrameUniforms,
+    xs: Range<u32>,
+    ys: Range<u32>,
+    counts: &mut RayCounts,
+) -> Vec<Vec3> {
+    let mut sums = Vec::with_capacity(xs.len() * ys.len());
+    for y in ys {
+        for x in xs.clone() {
+            let mut sum = Vec3::ZERO;
+            for s in 0..u.spp {
+                sum += radiance(scene, tracer, u, x, y, u.sample_base + s, counts);
+            }
+            sums.push(sum);
+        }
+    }
+    sums
+}
 
 /// The CPU path tracer. It keeps only the film: the scene is read from the caller.
 pub struct CpuTracer {
@@ -72,17 +99,7 @@ impl Tracer for CpuTracer {
                 let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
                 let (x1, y1) = ((x0 + TILE).min(u.width), (y0 + TILE).min(u.height));
                 let mut counts = RayCounts::default();
-                let mut sums = Vec::with_capacity(((x1 - x0) * (y1 - y0)) as usize);
-                for y in y0..y1 {
-                    for x in x0..x1 {
-                        let mut sum = Vec3::ZERO;
-                        for s in 0..u.spp {
-                            sum +=
-                                radiance(scene, &tracer, u, x, y, u.sample_base + s, &mut counts);
-                        }
-                        sums.push(sum);
-                    }
-                }
+                let sums = trace_rect(scene, &tracer, u, x0..x1, y0..y1, &mut counts);
                 (tile, sums, counts)
             })
             .collect();

@@ -1,0 +1,65 @@
+//! [`record_unit_costs`]: the render cost of every work unit of one frame on the CPU tracer.
+//!
+//! Each unit is rendered whole on one rayon worker with the CPU tracer's own pixel loop
+//! ([`trace_rect`]), and timed by that thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), so other
+//! work on a shared machine inflates the figures far less than wall time would. The film is
+//! thrown away: this measures, it does not render images.
+//! Runs on: the calling thread plus the rayon pool. Must not: change the scene.
+
+use rayon::prelude::*;
+
+use super::split::{unit_count, unit_rows};
+use crate::layout::GpuFrameUniforms;
+use crate::render::cpu::integrator::RayCounts;
+use crate::render::cpu::trace_rect;
+use crate::scene::RenderScene;
+
+/// What one unit cost.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct UnitCost {
+    /// CPU time of the thread that rendered it, seconds.
+    pub seconds: f64,
+    /// Rays traced (camera + bounce + shadow).
+    pub rays: u64,
+}
+
+/// CPU time of the calling thread, seconds (0 where the clock is unavailable).
+pub(super) fn thread_cpu_seconds() -> f64 {
+    let mut ts = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `ts` is a valid, writable timespec for the duration of the call.
+    let rc = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    if rc != 0 {
+        return 0.0;
+    }
+    ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
+}
+
+/// Renders every unit of the frame `u` describes (all `u.spp` samples of every pixel) and
+/// returns each unit's cost, top to bottom.
+pub fn record_unit_costs(scene: &RenderScene, u: &GpuFrameUniforms) -> Vec<UnitCost> {
+    let tracer = scene.trace_scene();
+    (0..unit_count(u.height))
+        .into_par_iter()
+        .map(|unit| {
+            let mut counts = RayCounts::default();
+            let start = thread_cpu_seconds();
+            let sums = trace_rect(
+                scene,
+                &tracer,
+                u,
+                0..u.width,
+                unit_rows(unit, u.height),
+                &mut counts,
+            );
+            let seconds = thread_cpu_seconds() - start;
+            std::hint::black_box(sums);
+            UnitCost {
+                seconds,
+                rays: counts.camera + counts.bounce + counts.shadow,
+            }
+        })
+        .collect()
+}
