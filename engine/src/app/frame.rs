@@ -122,17 +122,7 @@ impl Engine {
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();
-        game.fixed_step(&mut Step {
-            world: &mut self.world,
-            queries: self.upkeep.queries(),
-            physics: &mut self.physics,
-            input: &self.input,
-            actions: &self.step_actions,
-            action_set: &self.actions,
-            index,
-            step_seconds: dt,
-            commands: &mut self.commands,
-        });
+        game.fixed_step(&mut self.step_view(index));
         self.carry_out_commands();
         self.physics.step(&mut self.world, dt);
         tick_skinned(&mut self.world, dt);
@@ -143,23 +133,28 @@ impl Engine {
         self.carry_out(effects);
         let events = self.level_events(ended_before);
         if !events.is_empty() {
-            let mut step = Step {
-                world: &mut self.world,
-                queries: self.upkeep.queries(),
-                physics: &mut self.physics,
-                input: &self.input,
-                actions: &self.step_actions,
-                action_set: &self.actions,
-                index,
-                step_seconds: dt,
-                commands: &mut self.commands,
-            };
+            let mut step = self.step_view(index);
             for event in &events {
                 game.level_event(&mut step, event);
             }
             self.carry_out_commands();
         }
         self.audio.tick(dt);
+    }
+
+    /// What the game's step hooks get for step `index`.
+    fn step_view(&mut self, index: u64) -> Step<'_> {
+        Step {
+            world: &mut self.world,
+            queries: self.upkeep.queries(),
+            physics: &mut self.physics,
+            input: &self.input,
+            actions: &self.step_actions,
+            action_set: &self.actions,
+            index,
+            step_seconds: self.clock.step_seconds,
+            commands: &mut self.commands,
+        }
     }
 
     /// This step's actions from the step input (which also ends the step in the devices'
