@@ -285,7 +285,7 @@ fn still_scene_converges_to_a_direct_render() {
                 if moving {
                     for &p in &platforms {
                         if let Ok(mut t) = world.get::<&mut Transform>(p) {
-                            t.translation.z += 0.05;
+                            t.translation.z += 0.2;
                         }
                     }
                 }
