@@ -21,7 +21,7 @@
 //! normals beyond its last node are not sampled, which only lowers a result (a bound stays a
 //! bound). `bsdf_tests.rs` checks both on the normalisation of visible normals for α ≥ 0.04
 //! and cos θ ≥ 0.15, the range the bounds are used at: never above 1 by more than the
-//! estimate, never below it by 1 % (2.2e-3 at worst, at α 0.05 and cos θ 0.15).
+//! estimate (it does lose up to 1.1 % there, which only lowers a bound).
 //! Must not: use the engine's scattering code (it is what this checks).
 
 use glam::DVec3;
