@@ -4,8 +4,14 @@
 //!   emitter is black, so light bounces off the inner sphere once and is absorbed): every pixel,
 //!   on the sphere or not, must be Le. Exercises emissive-triangle NEE (1,280 lights), BSDF
 //!   sampling and their MIS weights.
-//! * The inside of a closed sphere of albedo a = 0.5 emitting Le: the radiance field is uniform,
-//!   L = Le (1 − a^(B+1)) / (1 − a) with B scattering events. Exercises roulette and long paths.
+//! * The inside of a closed sphere of albedo a emitting Le: the radiance field is uniform,
+//!   L = Le (1 − a^(B+1)) / (1 − a) with B scattering events. Checked twice:
+//!   - the bounce cap: a = 0.8, B = 4, roulette off (it starts after the cap), so the answer
+//!     for B = 4 differs from B = 3 or 5 by ~0.33, far beyond the noise; the test asserts that
+//!     its tolerance does tell B from B ± 1 (with a = 0.5 and B = 12 the cap changes L by
+//!     2.4e-4, below the roulette noise, so a wrong cap passed);
+//!   - long paths with roulette: a = 0.5, B = 12, roulette from the 4th event, which must
+//!     leave the mean unbiased.
 //! * An albedo-1 sphere under a constant sky: no light sampling; exact, zero-variance answer.
 //!
 //! Tolerances: 4.5 standard errors of the image mean, the standard error estimated from the
@@ -37,9 +43,11 @@ fn scene(models: Vec<Model>) -> SceneDesc {
     desc
 }
 
-fn check(which: Which, desc: &SceneDesc, expected: f64, spp: u32, batches: u32) {
+/// Checks the image mean against `expected`; returns the largest tolerance used.
+fn check(which: Which, desc: &SceneDesc, expected: f64, spp: u32, batches: u32) -> f64 {
     let b = render_batches(which, desc, 32, 32, spp, batches, 7).expect("render");
     let stat = b.region(|_, _| true);
+    let mut largest = 0.0f64;
     for c in 0..3 {
         let tolerance = 4.5 * stat.std_error[c] + 1e-5 * expected;
         let error = (stat.mean[c] - expected).abs();
@@ -49,7 +57,9 @@ fn check(which: Which, desc: &SceneDesc, expected: f64, spp: u32, batches: u32) 
             stat.mean[c],
             stat.std_error[c]
         );
+        largest = largest.max(tolerance);
     }
+    largest
 }
 
 fn albedo_one_sphere_in_uniform_light(which: Which) {
@@ -58,12 +68,33 @@ fn albedo_one_sphere_in_uniform_light(which: Which) {
     check(which, &scene(vec![emitter, sphere]), 1.5, 4, 8);
 }
 
+/// Uniform radiance inside a closed emitting sphere of albedo `a` with `bounces` scattering
+/// events (emission 1).
+fn uniform_field(a: f64, bounces: i32) -> f64 {
+    (1.0 - a.powi(bounces + 1)) / (1.0 - a)
+}
+
 fn inside_emitting_sphere(which: Which) {
+    // The bounce cap, without roulette (it would start after the last event).
+    let room = single_mesh_model(icosphere(Vec3::ZERO, 10.0, 2, true), diffuse(0.8, 1.0));
+    let mut desc = scene(vec![room]);
+    desc.render.max_bounces = 4;
+    desc.render.roulette_start = 5;
+    let expected = uniform_field(0.8, 4);
+    let tolerance = check(which, &desc, expected, 4, 8);
+    for other in [3, 5] {
+        let gap = (uniform_field(0.8, other) - expected).abs();
+        assert!(
+            gap > 2.0 * tolerance,
+            "{which:?}: the check cannot tell {other} bounces from 4 ({gap:.3e} vs tolerance {tolerance:.3e})"
+        );
+    }
+    // Long paths under roulette: unbiased.
     let room = single_mesh_model(icosphere(Vec3::ZERO, 10.0, 2, true), diffuse(0.5, 1.0));
     let mut desc = scene(vec![room]);
     desc.render.max_bounces = 12;
-    let expected = (1.0 - 0.5f64.powi(13)) / 0.5;
-    check(which, &desc, expected, 4, 8);
+    desc.render.roulette_start = 4;
+    check(which, &desc, uniform_field(0.5, 12), 4, 8);
 }
 
 fn sphere_under_constant_sky(which: Which) {

@@ -3,7 +3,12 @@
 //! * **Energy**: a sphere of each material model under a constant white sky never shows more
 //!   than the sky (furnace test); lossless models (a perfect mirror of reflectance 1, clear
 //!   smooth glass) show exactly the sky. Tolerance: 4.5 standard errors of the image mean (from
-//!   independent batches) + 1e-4 relative.
+//!   independent batches) + 1e-4 relative. Rough models (conductor, glass, metal-rough) must
+//!   also keep at least their single-scatter GGX albedo: over the pixels that see the sphere
+//!   at cos θ ≥ 0.2, the mean is at least the mean of the per-pixel bounds of
+//!   `candela_tests::furnace_bound` (quadrature, not the code under test; for glass, reflection
+//!   plus the light refracted in and out again) less the same tolerance, so a black or dimmed
+//!   sphere fails.
 //! * **NaN and infinity**: 1,000 frames over adversarial geometry — degenerate (zero-area and
 //!   collinear) triangles, zero-area emitters, zero and NaN normals, zero-length tangents with a
 //!   normal map, roughness 0 and 1e-8 and 1, grazing views — give no NaN or infinite pixel, and
@@ -15,7 +20,9 @@ use candela::assets::{
 };
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use candela::scene::RenderScene;
-use candela_tests::{Which, camera, icosphere, open, render_batches, single_mesh_model};
+use candela_tests::{
+    Which, camera, furnace_bound, icosphere, open, render_batches, single_mesh_model,
+};
 use glam::{Mat4, Vec2, Vec3, Vec4};
 
 fn material(kind: MaterialKind, roughness: f32, metallic: f32) -> Material {
@@ -30,7 +37,12 @@ fn material(kind: MaterialKind, roughness: f32, metallic: f32) -> Material {
 }
 
 fn furnace(which: Which, name: &str, m: Material, exact: bool) {
-    let sphere = single_mesh_model(smooth(icosphere(Vec3::ZERO, 1.0, 4, false)), m);
+    let mesh = smooth(icosphere(Vec3::ZERO, 1.0, 4, false));
+    let bounds = (!exact).then(|| {
+        assert!(furnace_bound::is_grey(&m));
+        furnace_bound::pixel_bounds(&m, &mesh, 24, 2.6, 50.0)
+    });
+    let sphere = single_mesh_model(mesh, m);
     let mut desc = SceneDesc::single(sphere, camera(Vec3::new(0.0, 0.0, 2.6), Vec3::ZERO, 50.0));
     desc.sky = SkyDesc::Constant([1.0, 1.0, 1.0]);
     desc.render.max_bounces = 64;
@@ -53,6 +65,26 @@ fn furnace(which: Which, name: &str, m: Material, exact: bool) {
                 stat.std_error[c]
             );
         }
+    }
+    if let Some(bounds) = bounds {
+        let inside = |x: u32, y: u32| bounds[(y * 24 + x) as usize].is_some();
+        let count = bounds.iter().flatten().count();
+        assert!(count >= 100, "{name}: only {count} pixels bounded");
+        let bound = bounds.iter().flatten().sum::<f64>() / count as f64;
+        let stat = b.region(inside);
+        for c in 0..3 {
+            let tolerance = 4.5 * stat.std_error[c] + 1e-4;
+            assert!(
+                stat.mean[c] >= bound - tolerance,
+                "{name} ({which:?}) loses energy: channel {c} mean {:.4} ± {:.4} over {count} pixels, below the single-scatter GGX bound {bound:.4}",
+                stat.mean[c],
+                stat.std_error[c]
+            );
+        }
+        eprintln!(
+            "{name} ({which:?}): sphere mean {:.4} ± {:.4}, single-scatter bound {bound:.4}",
+            stat.mean[1], stat.std_error[1]
+        );
     }
 }
 

@@ -5,9 +5,11 @@
 //! It runs the view tool's library entry on the demo city (≥ 200k static triangles, 100+ movers,
 //! the waving pool; CPU tracer, 96 × 54, 1 spp) for 3 frames with `--hold 60`, waits for the
 //! screenshot, asks the window to close and checks: the run ended because the window was
-//! closed (not by the frame count, not by Ctrl-C, not by the 60 s hold), it ended within 20 s of
-//! the first request (asked again every 0.5 s) (the render thread joined: no deadlock), 3 frames ran, and the screenshot shows
-//! the city (not a blank window: many distinct colours and pixels off black).
+//! closed (not by the frame count, not by Ctrl-C, not by the 60 s hold), it ended within
+//! [`CLOSE_LIMIT`] (20 s) of the first request (asked again every 0.5 s; the render thread
+//! joined: no deadlock), 3 frames ran, and the screenshot shows the city (not a blank window:
+//! many distinct colours and pixels off black). The limit is a deadlock bound, not a speed
+//! check: a clean close takes well under a second; 20 s leaves room for a loaded machine.
 
 use std::collections::HashSet;
 use std::sync::Arc;
@@ -18,6 +20,9 @@ use candela::app::WindowEnd;
 use candela_tests::repo;
 use candela_tests::xvfb::{close_windows, set_environment, start_xvfb};
 use clap::Parser;
+
+/// How long after the first close request the run must have ended (documented above).
+const CLOSE_LIMIT: Duration = Duration::from_secs(20);
 
 #[test]
 fn the_demo_runs_in_a_window_and_closing_the_window_ends_it_cleanly() {
@@ -64,30 +69,32 @@ fn the_demo_runs_in_a_window_and_closing_the_window_ends_it_cleanly() {
     // while the window is still being set up can be dropped by the X server's client).
     let asked = Instant::now();
     let mut requests = 0;
-    while !run.is_finished() && asked.elapsed() < Duration::from_secs(20) {
+    while !run.is_finished() && asked.elapsed() < CLOSE_LIMIT {
         let windows = close_windows(&xvfb.display).expect("X connection");
         assert!(windows >= 1, "no top-level window on {}", xvfb.display);
         requests += 1;
         std::thread::sleep(Duration::from_millis(500));
     }
     eprintln!("{requests} close request(s)");
+    // Judge before joining: a run that ignores the request must fail here, not hang the test
+    // in `join` (or end later by its hold and be judged by that).
+    let closing = asked.elapsed();
+    assert!(
+        run.is_finished(),
+        "still running {closing:?} after the first close request (limit {CLOSE_LIMIT:?})"
+    );
     let report = run
         .join()
         .expect("the view thread did not panic")
         .expect("view runs the demo in the Xvfb window");
-    let closing = asked.elapsed();
     eprintln!(
-        "{}\nclosed {closing:?} after the request",
+        "{}\nclosed within {closing:?} of the request",
         view::describe(&report)
     );
     assert_eq!(
         report.ended_by,
         WindowEnd::Closed,
         "the close request ends the run"
-    );
-    assert!(
-        closing < Duration::from_secs(10),
-        "took {closing:?} to close"
     );
     assert_eq!(report.frames, 3);
     let shot = image::open(&shot_path).expect("screenshot PNG").to_rgb8();

@@ -67,6 +67,23 @@ fn floats(value: &Value) -> Vec<f32> {
         .unwrap_or_default()
 }
 
+/// The largest of `errors`, NaN when any error is NaN (a NaN coordinate must fail the
+/// comparison, where `f32::max` would drop it), 0 for none.
+fn worst(errors: impl IntoIterator<Item = f32>) -> f32 {
+    errors.into_iter().fold(0.0f32, |m, e| {
+        if m.is_nan() || e.is_nan() {
+            f32::NAN
+        } else {
+            m.max(e)
+        }
+    })
+}
+
+/// Largest absolute difference per coordinate of two vectors, NaN when either has a NaN.
+fn vec_error(a: Vec3, e: Vec3) -> f32 {
+    worst((a - e).abs().to_array())
+}
+
 /// Largest error of one model over all its poses, and the failures found.
 #[derive(Default)]
 struct Report {
@@ -75,6 +92,8 @@ struct Report {
     max_matrix_error: f32,
     max_trs_error: f32,
     poses: usize,
+    /// Node world matrices compared.
+    matrices: usize,
     morph_weights: usize,
     failures: Vec<String>,
 }
@@ -99,38 +118,63 @@ fn check_pose(
         ));
         return Ok(());
     }
-    let scale = expected
-        .iter()
-        .map(|p| p.abs().max_element())
-        .fold(0.0f32, f32::max);
+    if expected.is_empty() {
+        report
+            .failures
+            .push(format!("{label}: the reference has no vertices"));
+        return Ok(());
+    }
+    let scale = worst(expected.iter().map(|p| p.abs().max_element()));
+    if !scale.is_finite() || expected.iter().any(|p| !p.is_finite()) {
+        report
+            .failures
+            .push(format!("{label}: the reference has a non-finite vertex"));
+        return Ok(());
+    }
     let tolerance = 2e-5 * scale + 1e-6;
     report.tolerance = report.tolerance.max(tolerance);
-    let (worst, error) = actual
+    // The first vertex that is off (a NaN coordinate counts as off), and the largest error.
+    let errors: Vec<f32> = actual
         .iter()
         .zip(&expected)
-        .map(|(a, e)| (a - e).abs().max_element())
-        .enumerate()
-        .fold(
-            (0, 0.0f32),
-            |best, (i, e)| if e > best.1 { (i, e) } else { best },
-        );
-    report.max_position_error = report.max_position_error.max(error);
-    if error > tolerance {
+        .map(|(a, e)| vec_error(*a, *e))
+        .collect();
+    let error = worst(errors.iter().copied());
+    report.max_position_error = worst([report.max_position_error, error]);
+    if let Some(bad) = errors.iter().position(|e| !(*e <= tolerance)) {
         report.failures.push(format!(
-            "{label}: vertex {worst} off by {error:.3e} (tolerance {tolerance:.3e}): {} vs {}",
-            actual[worst], expected[worst]
+            "{label}: vertex {bad} off by {:.3e} (tolerance {tolerance:.3e}): {} vs {}",
+            errors[bad], actual[bad], expected[bad]
         ));
     }
     let primitives = scene_primitives(model);
     let world = model.world_matrices(pose);
-    if let Some(matrices) = sample["node_world_matrices"].as_array() {
+    // Every pose of the reference carries every node's world matrix: a missing list, a
+    // malformed matrix or a node we do not have is a failure, never a skipped comparison.
+    let matrices = sample["node_world_matrices"]
+        .as_array()
+        .ok_or("sample without node_world_matrices")?;
+    if matrices.len() != world.len() {
+        report.failures.push(format!(
+            "{label}: {} node world matrices, reference has {}",
+            world.len(),
+            matrices.len()
+        ));
+    }
+    {
         for (node, m) in matrices.iter().enumerate() {
             let m = floats(m);
             if m.len() != 16 {
+                report.failures.push(format!(
+                    "{label}: node {node}: reference matrix of {} floats",
+                    m.len()
+                ));
                 continue;
             }
             let reference = Mat4::from_cols_slice(&m);
-            let mine = world.get(node).copied().unwrap_or(Mat4::IDENTITY);
+            let Some(mine) = world.get(node).copied() else {
+                continue;
+            };
             let mut error = 0.0f32;
             for c in 0..4 {
                 let d = (mine.col(c) - reference.col(c)).abs().max_element();
@@ -141,17 +185,28 @@ fn check_pose(
                 } else {
                     reference.col(c).abs().max_element()
                 };
-                error = error.max(d / size.max(1.0));
+                error = worst([error, d / size.max(1.0)]);
             }
-            report.max_matrix_error = report.max_matrix_error.max(error);
-            if error > 1e-5 {
+            if !mine.is_finite() {
+                error = f32::NAN;
+            }
+            report.max_matrix_error = worst([report.max_matrix_error, error]);
+            report.matrices += 1;
+            if !(error <= 1e-5) {
                 report.failures.push(format!(
                     "{label}: node {node} world matrix off by {error:.3e}"
                 ));
             }
         }
     }
-    if let Some(locals) = sample["animated_node_local_trs"].as_object() {
+    // Clip samples carry the local TRS of every animated node (the rest pose has none).
+    let locals = sample["animated_node_local_trs"].as_object();
+    if label != "rest" && locals.is_none_or(|l| l.is_empty()) {
+        report
+            .failures
+            .push(format!("{label}: sample without animated_node_local_trs"));
+    }
+    if let Some(locals) = locals {
         for (node, trs) in locals {
             let node: usize = node.parse()?;
             let parts = [
@@ -166,13 +221,14 @@ fn check_pose(
                 (floats(&trs["scale"]), pose.scale[node].to_array().to_vec()),
             ];
             for (reference, mine) in parts {
-                let error = reference
-                    .iter()
-                    .zip(&mine)
-                    .map(|(r, m)| (r - m).abs() / r.abs().max(1.0))
-                    .fold(0.0f32, f32::max);
-                report.max_trs_error = report.max_trs_error.max(error);
-                if error > 1e-5 {
+                let error = worst(
+                    reference
+                        .iter()
+                        .zip(&mine)
+                        .map(|(r, m)| (r - m).abs() / r.abs().max(1.0)),
+                );
+                report.max_trs_error = worst([report.max_trs_error, error]);
+                if reference.len() != mine.len() || !(error <= 1e-5) {
                     report.failures.push(format!(
                         "{label}: node {node} local TRS {mine:?} vs {reference:?}"
                     ));
@@ -190,12 +246,8 @@ fn check_pose(
             .ok_or("morph entry names no primitive")?;
         let reference = floats(&entry["weights"]);
         let mine = &pose.weights[node];
-        let error = reference
-            .iter()
-            .zip(mine)
-            .map(|(r, m)| (r - m).abs())
-            .fold(0.0f32, f32::max);
-        if reference.len() != mine.len() || error > 1e-6 {
+        let error = worst(reference.iter().zip(mine).map(|(r, m)| (r - m).abs()));
+        if reference.len() != mine.len() || !(error <= 1e-6) {
             report.failures.push(format!(
                 "{label}: node {node} morph weights {mine:?} vs {reference:?}"
             ));
@@ -283,6 +335,12 @@ fn every_model_and_time_matches_three_js() -> TestResult {
             report.max_trs_error
         );
         morph_weight_checks += report.morph_weights;
+        if report.poses == 0 || report.matrices == 0 {
+            failures.push(format!(
+                "{name}: {} poses and {} node matrices compared",
+                report.poses, report.matrices
+            ));
+        }
         failures.extend(report.failures.into_iter().map(|f| format!("{name}: {f}")));
     }
     assert!(

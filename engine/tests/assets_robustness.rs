@@ -203,11 +203,29 @@ fn every_robustness_file_loads_or_is_refused_cleanly() {
     let mut counts: BTreeMap<String, usize> = BTreeMap::new();
     let mut slowest = (Duration::ZERO, PathBuf::new());
     let (mut with_report, mut valid_reports) = (0usize, 0usize);
+    // Every entry of the named lists must name a file of the walk (a renamed or moved file
+    // would otherwise leave its entry checking nothing).
+    let mut named_seen: BTreeMap<&str, usize> = OBJ_MUST_REFUSE
+        .iter()
+        .chain(OBJ_MUST_LOAD)
+        .copied()
+        .chain(VALID_BUT_REFUSED.iter().map(|(file, _)| *file))
+        .map(|n| (n, 0))
+        .collect();
     for path in &files {
         let name = path
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_default();
+        if let Some(seen) = named_seen.get_mut(name.as_str()) {
+            *seen += 1;
+        }
+        if let Ok(relative) = path.strip_prefix(&validator_root)
+            && let Some(seen) =
+                named_seen.get_mut(relative.to_string_lossy().replace('\\', "/").as_str())
+        {
+            *seen += 1;
+        }
         let shown = path
             .strip_prefix(external())
             .unwrap_or(path)
@@ -296,6 +314,15 @@ fn every_robustness_file_loads_or_is_refused_cleanly() {
     assert!(
         with_report > 300,
         "only {with_report} validator reports read"
+    );
+    let unmatched: Vec<&str> = named_seen
+        .iter()
+        .filter(|(_, seen)| **seen == 0)
+        .map(|(name, _)| *name)
+        .collect();
+    assert!(
+        unmatched.is_empty(),
+        "named in OBJ_MUST_REFUSE / OBJ_MUST_LOAD / VALID_BUT_REFUSED but no such file in the walk: {unmatched:?}"
     );
     assert!(
         failures.is_empty(),

@@ -70,14 +70,30 @@ fn window(audio: &Audio, from: f64, to: f64) -> &[[f32; 2]] {
 /// and the largest difference there over the source's length.
 fn best_match(rec: &[[f32; 2]], source: &Sound, gain: f32, max_lag: usize) -> (usize, f32) {
     let n = source.frame_count();
+    assert!(
+        n > 0,
+        "the source sound has no frames: nothing would be compared"
+    );
     let diff_at = |lag: usize| -> f32 {
+        // A record too short to hold the whole sound at this lag does not match (an empty
+        // record must not give a difference of 0).
+        if rec.len() < lag + n {
+            return f32::INFINITY;
+        }
         (0..n)
             .map(|i| {
-                let [sl, sr] = source.frame(i).unwrap_or([0.0; 2]);
-                let [rl, rr] = rec.get(i + lag).copied().unwrap_or([f32::NAN; 2]);
-                (rl - gain * sl).abs().max((rr - gain * sr).abs())
+                let [sl, sr] = source.frame(i).unwrap_or([f32::NAN; 2]);
+                let [rl, rr] = rec[i + lag];
+                [(rl - gain * sl).abs(), (rr - gain * sr).abs()]
             })
-            .fold(0.0, f32::max)
+            // NaN propagates (`f32::max` would drop it): a NaN sample never matches.
+            .fold(0.0f32, |m, [l, r]| {
+                if m.is_nan() || l.is_nan() || r.is_nan() {
+                    f32::NAN
+                } else {
+                    m.max(l).max(r)
+                }
+            })
     };
     (0..=max_lag)
         .map(|lag| (lag, diff_at(lag)))

@@ -127,6 +127,16 @@ fn run() -> anyhow::Result<Run> {
         "4 s fit in the recording"
     );
     let start = ((entered_step - 1) as f64 / 60.0 * rate) as usize;
+    // Every recorded sample is finite (a NaN would vanish in the `f32::max` fold of `peak`),
+    // and both windows hold samples (an empty window's peak is 0).
+    if let Some(bad) = samples.iter().flatten().position(|s| !s.is_finite()) {
+        anyhow::bail!("recorded sample {bad} is not finite");
+    }
+    assert!(
+        start > 0 && samples.len() >= start + rate as usize / 2,
+        "the recording ({} frames) does not cover the half second after the plate (frame {start})",
+        samples.len()
+    );
     let peak = |range: &[[f32; 2]]| range.iter().flatten().fold(0.0f32, |m, s| m.max(s.abs()));
     assert_eq!(
         peak(&samples[..start]),

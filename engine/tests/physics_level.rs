@@ -1,6 +1,7 @@
 //! Physics in level files: bodies load, fall and land; bad body data is refused with a message
 //! naming the level file and the instance; levels without bodies load as before.
 
+mod common;
 mod physics_common;
 
 use std::path::{Path, PathBuf};
@@ -208,17 +209,88 @@ fn unknown_shape_is_refused() {
     );
 }
 
-/// Every level in the repository still loads (none has bodies yet).
+/// The asset root a repository level is loaded with: the reference scenes and the bench hall
+/// name files in `shared/external` (their headers say which folder); the gameplay levels name
+/// sounds under `assets/common/`; the others are engine-made or name files under
+/// `assets/test_scenes/`.
+fn root_of(level: &Path, assets: &Path) -> PathBuf {
+    let external = assets.join("../../shared/external");
+    let relative = level.strip_prefix(assets).unwrap_or(level);
+    match relative.parent().and_then(|p| p.to_str()) {
+        Some("test_scenes/reference") => external
+            .join("reference")
+            .join(level.file_stem().unwrap_or_default()),
+        Some("test_scenes/bench") => external.join("obj"),
+        Some("test_scenes/gameplay") => assets.to_path_buf(),
+        _ => assets.join("test_scenes"),
+    }
+}
+
+/// The top-level RON type of a file: the first identifier before `(` outside comments and
+/// `#![...]` attributes (`""` for an anonymous struct, as `demo.ron` is written).
+fn ron_type(text: &str) -> String {
+    let code = text
+        .lines()
+        .map(str::trim_start)
+        .find(|l| !l.is_empty() && !l.starts_with("//") && !l.starts_with("#!"))
+        .unwrap_or("");
+    code.split('(').next().unwrap_or("").trim().to_string()
+}
+
+/// Every level in the repository (every `.ron` under `assets/` that is not a capture script or
+/// an authored clip set) loads, and has exactly the bodies its text declares (one per
+/// `body:` field): levels without bodies load as before, levels with bodies keep them all.
 #[test]
 fn existing_levels_load_unchanged() -> Result<(), AssetError> {
-    let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/test_scenes");
-    let root = AssetRoot::new(&assets)?;
-    let mut loaded = 0;
-    for level in ["script/small.ron", "cornell_box.ron", "demo/demo.ron"] {
-        let scene = load_level(&assets.join(level), &root)?;
-        assert!(scene.bodies.iter().all(Option::is_none));
-        loaded += 1;
+    let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets");
+    let files = common::files_under(&assets, &["ron"]);
+    let mut levels = Vec::new();
+    for file in &files {
+        let text = std::fs::read_to_string(file).map_err(|e| AssetError::io(file, e))?;
+        match ron_type(&text).as_str() {
+            "Script" | "AuthoredClipSet" => continue,
+            "" | "Level" => {}
+            other => panic!("{}: unknown RON type {other:?}", file.display()),
+        }
+        let root = AssetRoot::new(root_of(file, &assets))?;
+        let scene = load_level(file, &root)?;
+        let declared = text
+            .lines()
+            .filter(|l| !l.trim_start().starts_with("//"))
+            .map(|l| l.matches("body:").count())
+            .sum::<usize>();
+        let bodies = scene.bodies.iter().filter(|b| b.is_some()).count();
+        println!(
+            "{}: {} instances, {bodies} bodies",
+            file.display(),
+            scene.scene.instances.len()
+        );
+        assert!(
+            !scene.scene.instances.is_empty(),
+            "{}: no instances",
+            file.display()
+        );
+        assert_eq!(
+            bodies,
+            declared,
+            "{}: bodies loaded vs declared",
+            file.display()
+        );
+        levels.push(file.clone());
     }
-    assert_eq!(loaded, 3);
+    // The walk found the levels the other tests name (it would otherwise check nothing).
+    for named in [
+        "test_scenes/script/small.ron",
+        "test_scenes/cornell_box.ron",
+        "test_scenes/demo/demo.ron",
+        "test_scenes/gameplay/plate_door.ron",
+        "test_scenes/reference/cornell_box.ron",
+    ] {
+        assert!(
+            levels.iter().any(|l| l.ends_with(named)),
+            "the walk of {} did not find {named}",
+            assets.display()
+        );
+    }
     Ok(())
 }

@@ -3,6 +3,9 @@
 //! name the same entity, triangle and distance, occlusion agrees, and the light tables carry
 //! the same total power. Changes: spawning, moving, re-parenting-free restyling (material
 //! override), despawning, deforming a mesh (refits and rebuilds), switching light groups.
+//! Besides the random rays, every frame aims one ray at a point of every live entity's surface
+//! (a triangle's centroid): each must hit on both sides, so a frame in which everything misses
+//! (both scenes empty or untraceable) fails instead of comparing nothing.
 
 use std::collections::HashMap;
 
@@ -209,15 +212,36 @@ fn incremental_commits_equal_a_fresh_build() {
             (a - b).abs() <= 1e-4 * a.max(b),
             "frame {frame}: light power {a} vs {b}"
         );
-        for i in 0..300 {
-            let o = Vec3::new(16.0 * u() - 8.0, 16.0 * u() - 8.0, 16.0 * u() - 8.0);
-            let d = Vec3::new(u() - 0.5, u() - 0.5, u() - 0.5);
-            let ray = Ray::new(o, d);
+        // Aimed rays first (index 0..alive), then 300 random ones.
+        let mut live: Vec<(hecs::Entity, Entity)> = alive.iter().map(|(e, v)| (*e, *v)).collect();
+        live.sort_by_key(|(e, _)| e.to_bits());
+        let aimed: Vec<Ray> = live
+            .iter()
+            .map(|(_, entity)| {
+                let (p, t) = (&shapes[entity.model].0, &shapes[entity.model].1[0]);
+                let centroid = (p[t[0] as usize] + p[t[1] as usize] + p[t[2] as usize]) / 3.0;
+                let target = entity.world.transform_point3(centroid);
+                let from = Vec3::new(u() - 0.5, u() - 0.5, u() - 0.5).normalize_or(Vec3::Y);
+                let o = target + 3.0 * from;
+                Ray::new(o, target - o)
+            })
+            .collect();
+        let mut aimed_hits = 0;
+        for i in 0..aimed.len() + 300 {
+            let ray = match aimed.get(i) {
+                Some(ray) => *ray,
+                None => {
+                    let o = Vec3::new(16.0 * u() - 8.0, 16.0 * u() - 8.0, 16.0 * u() - 8.0);
+                    let d = Vec3::new(u() - 0.5, u() - 0.5, u() - 0.5);
+                    Ray::new(o, d)
+                }
+            };
             let got = render.trace_scene().closest(&ray);
             let want = fresh_scene.trace_scene().closest(&ray);
             match (got, want) {
                 (None, None) => {}
                 (Some(g), Some(w)) => {
+                    aimed_hits += usize::from(i < aimed.len());
                     assert_eq!(g.t, w.t, "frame {frame} ray {i}");
                     assert_eq!(g.triangle, w.triangle, "frame {frame} ray {i}");
                     assert_eq!(
@@ -241,6 +265,12 @@ fn incremental_commits_equal_a_fresh_build() {
                 fresh_scene.trace_scene().occluded(&ray)
             );
         }
+        assert_eq!(
+            aimed_hits,
+            alive.len(),
+            "frame {frame}: of {} rays aimed at live entities, {aimed_hits} hit on both sides",
+            alive.len()
+        );
     }
     assert!(
         rebuilds > 0,

@@ -6,7 +6,13 @@
 //! standard error of any region mean then follows from summing those variances, with thousands
 //! of pixels × (batches − 1) degrees of freedom, so the error estimate itself is precise.
 
+pub mod furnace_bound;
 pub mod xvfb;
+
+/// The single-scatter GGX albedo by quadrature, shared with the engine's BSDF tests (one
+/// file, test-only, independent of the scattering code it bounds).
+#[path = "../../engine/src/render/cpu/reference_albedo.rs"]
+pub mod reference_albedo;
 
 use std::path::PathBuf;
 

@@ -54,6 +54,15 @@ fn dumped_vertices_match_the_reference() -> TestResult {
     let (ours, theirs) = (floats(&out)?, floats(&reference)?);
     let _ = std::fs::remove_file(&out);
     assert_eq!(ours.len(), theirs.len());
+    assert!(!theirs.is_empty(), "the reference holds no vertices");
+    assert!(
+        theirs.iter().all(|v| v.is_finite()),
+        "the reference has a non-finite coordinate"
+    );
+    // Every dumped coordinate must be finite (a NaN would vanish in an `f32::max` fold).
+    if let Some(bad) = ours.iter().position(|v| !v.is_finite()) {
+        panic!("dumped coordinate {bad} is {}", ours[bad]);
+    }
     let size = theirs.iter().fold(0.0f32, |m, v| m.max(v.abs()));
     let error = ours
         .iter()
