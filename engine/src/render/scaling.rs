@@ -21,14 +21,15 @@ pub struct ScalingTarget {
 }
 
 impl ScalingTarget {
-    /// Hold `frame_seconds` with the default bounds (1–64 spp, roulette ≥ 0.5, resolution ≥ ½).
+    /// Hold `frame_seconds` with the default bounds (1–64 spp, roulette ≥ 0.5, resolution ≥ ¼:
+    /// 320×180 of a 1280×720 window, the games' floor on a 2-core machine with the CPU tracer).
     pub fn new(frame_seconds: f32) -> Self {
         Self {
             frame_seconds,
             min_spp: 1,
             max_spp: 64,
             min_roulette: 0.5,
-            min_resolution: 0.5,
+            min_resolution: 0.25,
         }
     }
 }
@@ -171,7 +172,7 @@ mod tests {
             Workload {
                 spp: 1,
                 roulette_scale: 0.5,
-                resolution: 0.5
+                resolution: 0.25
             }
         );
     }
