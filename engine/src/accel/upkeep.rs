@@ -15,7 +15,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use glam::{Mat4, Vec3};
+use glam::Mat4;
 use rayon::prelude::*;
 
 use super::blas::{Blas, BlasParams, build_blas_with_params};
@@ -27,7 +27,7 @@ use crate::layout::{GpuBvh8Node, GpuTriangle, GpuVertex};
 use crate::scene::Aabb;
 use crate::scene::lights::{LightTable, build_lights};
 use crate::scene::materials::{pack_textures, to_gpu_material};
-use crate::scene::{RenderScene, SceneStats, mesh_vertices};
+use crate::scene::{RenderScene, mesh_vertices};
 use crate::scene::{SceneHeader, SceneWrite};
 use crate::trace::TraceBuffer;
 
@@ -118,18 +118,8 @@ impl Upkeep {
     pub fn new() -> Self {
         let scene = RenderScene {
             nodes: TraceBuffer::from_slice(&[GpuBvh8Node::EMPTY]),
-            blocks: TraceBuffer::default(),
-            instances: Vec::new(),
-            triangles: Vec::new(),
-            vertices: Vec::new(),
-            materials: Vec::new(),
-            textures: Vec::new(),
-            texels: Vec::new(),
             lights: build_lights(&[], &[], &[], &[], &[]),
-            tlas_root: 0,
-            origin: Vec3::ZERO,
-            bounds: Aabb::EMPTY,
-            stats: SceneStats::default(),
+            ..RenderScene::empty()
         };
         Self {
             scene,

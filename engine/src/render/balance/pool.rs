@@ -2,7 +2,7 @@
 //! units of one frame at once and composing them into one film.
 //!
 //! Each tracer is a rayon pool of its own; the tracers start together (one scoped thread each)
-//! and render their units of the [`Split`] with the CPU tracer's pixel loop ([`trace_rect`]), so
+//! and render their units of the [`Split`] with the CPU tracer's pixel loop (`render::cpu::trace_rect`), so
 //! every pixel gets the very samples a single [`crate::render::cpu::CpuTracer`] gives it and the
 //! composed film equals its film sample for sample. Each tracer's time is its wall time from the
 //! common start; each unit's time is the CPU time of the thread that rendered it.
@@ -16,11 +16,9 @@ use rayon::prelude::*;
 
 use super::error::BalanceError;
 use super::measure::FrameTimes;
-use super::record::thread_cpu_seconds;
+use super::record::trace_unit;
 use super::split::{Split, unit_rows};
 use crate::layout::GpuFrameUniforms;
-use crate::render::cpu::integrator::RayCounts;
-use crate::render::cpu::trace_rect;
 use crate::render::film::Film;
 use crate::scene::RenderScene;
 
@@ -129,16 +127,6 @@ impl CpuPool {
 
 /// Renders one unit on the calling thread.
 fn render_unit(scene: &RenderScene, u: &GpuFrameUniforms, unit: usize) -> UnitResult {
-    let tracer = scene.trace_scene();
-    let mut counts = RayCounts::default();
-    let t0 = thread_cpu_seconds();
-    let sums = trace_rect(
-        scene,
-        &tracer,
-        u,
-        0..u.width,
-        unit_rows(unit, u.height),
-        &mut counts,
-    );
-    (unit, sums, thread_cpu_seconds() - t0)
+    let (sums, _, seconds) = trace_unit(scene, u, unit);
+    (unit, sums, seconds)
 }

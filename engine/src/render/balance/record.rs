@@ -37,24 +37,34 @@ pub(super) fn thread_cpu_seconds() -> f64 {
     ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
 }
 
+/// One unit rendered whole on the calling thread: its pixel sums (row-major), the rays traced
+/// and the thread's CPU seconds. The pool and the recorder both use it.
+pub(super) fn trace_unit(
+    scene: &RenderScene,
+    u: &GpuFrameUniforms,
+    unit: usize,
+) -> (Vec<glam::Vec3>, RayCounts, f64) {
+    let tracer = scene.trace_scene();
+    let mut counts = RayCounts::default();
+    let start = thread_cpu_seconds();
+    let sums = trace_rect(
+        scene,
+        &tracer,
+        u,
+        0..u.width,
+        unit_rows(unit, u.height),
+        &mut counts,
+    );
+    (sums, counts, thread_cpu_seconds() - start)
+}
+
 /// Renders every unit of the frame `u` describes (all `u.spp` samples of every pixel) and
 /// returns each unit's cost, top to bottom.
 pub fn record_unit_costs(scene: &RenderScene, u: &GpuFrameUniforms) -> Vec<UnitCost> {
-    let tracer = scene.trace_scene();
     (0..unit_count(u.height))
         .into_par_iter()
         .map(|unit| {
-            let mut counts = RayCounts::default();
-            let start = thread_cpu_seconds();
-            let sums = trace_rect(
-                scene,
-                &tracer,
-                u,
-                0..u.width,
-                unit_rows(unit, u.height),
-                &mut counts,
-            );
-            let seconds = thread_cpu_seconds() - start;
+            let (sums, counts, seconds) = trace_unit(scene, u, unit);
             std::hint::black_box(sums);
             UnitCost {
                 seconds,
