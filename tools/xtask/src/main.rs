@@ -1,11 +1,14 @@
 //! `cargo xtask`: the two commands of the README, and the machine set-up they need.
 //!
 //! `cargo xtask render [capture args…]` renders the Cornell box test scene to `out/cornell_box.png`;
-//! `cargo xtask test [nextest args…]` runs every test of the workspace. Both first install the
+//! `cargo xtask test [nextest args…]` runs every test of the workspace; `cargo xtask fuzz` runs the
+//! afl campaigns (`fuzz.rs`). Both first install the
 //! system packages the engine needs (Vulkan loader, Mesa's software Vulkan driver lavapipe, X
 //! virtual framebuffer for window tests): with apt when running as root, otherwise they print the
 //! exact command to run. Uses only `std` so that it builds in seconds on a fresh machine.
 //! Must not: contain engine logic; it only prepares the machine and runs cargo.
+
+mod fuzz;
 
 use xtask::{RENDER_ARGS, packages};
 
@@ -23,7 +26,10 @@ fn main() -> ExitCode {
         "render" => render(rest),
         "test" => test(rest),
         "packages" => packages::ensure(packages::ALL).map(|_| ()),
-        other => Err(format!("unknown command {other:?}: use `render` or `test`")),
+        "fuzz" => fuzz::fuzz(rest),
+        other => Err(format!(
+            "unknown command {other:?}: use `render`, `test` or `fuzz`"
+        )),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

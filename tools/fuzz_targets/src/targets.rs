@@ -1,0 +1,175 @@
+//! The body of each fuzz target: the bytes go where a player's file would go, and what comes
+//! back is checked. Refusals are fine; panics, loaders that caught their own panic, accepted
+//! meshes with non-finite or out-of-range data, replays that do not survive a round trip, and
+//! asset paths that resolve outside the root are bugs, reported by panicking (afl records
+//! the input as a crash; the corpus tests fail naming it).
+//!
+//! Runs on the calling thread. Must not: touch files outside [`crate::scratch`].
+
+use std::path::Path;
+
+use candela::app::{ActionSet, Bindings, Progress, Recording, Script, Settings, parse_checked};
+use candela::assets::{AssetError, AssetRoot, Model, load_model_file};
+use candela::audio::decode_sound_bytes;
+
+use crate::scratch::{self, FIXED_OBJ, PLAIN_MTL, TEXTURE_MTL};
+use crate::{Outcome, Target};
+
+/// Runs `target` on `bytes`. Panics on a bug (see the module doc).
+pub fn run(target: Target, bytes: &[u8]) -> Outcome {
+    match target {
+        Target::Level => level(bytes),
+        Target::Script => {
+            let text = String::from_utf8_lossy(bytes);
+            refused(Script::parse(
+                &scratch::root().join("fuzz_script.ron"),
+                &text,
+            ))
+        }
+        Target::Replay => replay(bytes),
+        Target::Settings => {
+            let set = ActionSet::standard();
+            let text = String::from_utf8_lossy(bytes);
+            refused(parse_checked::<Settings>(&text, |s| s.check(&set)))
+        }
+        Target::Save => {
+            let text = String::from_utf8_lossy(bytes);
+            refused(parse_checked::<Progress>(&text, Progress::check))
+        }
+        Target::Bindings => {
+            let set = ActionSet::standard();
+            let text = String::from_utf8_lossy(bytes);
+            refused(Bindings::parse(Path::new("fuzz_bindings.ron"), &text, &set))
+        }
+        Target::Gltf => model(scratch::write("fuzz.gltf", bytes)),
+        Target::Glb => model(scratch::write("fuzz.glb", bytes)),
+        Target::Obj => {
+            scratch::write("fuzz.mtl", PLAIN_MTL);
+            model(scratch::write("fuzz.obj", bytes))
+        }
+        Target::Mtl => {
+            scratch::write("fuzz.mtl", bytes);
+            model(scratch::write("fuzz.obj", FIXED_OBJ))
+        }
+        Target::Texture => {
+            scratch::write("fuzz_texture", bytes);
+            scratch::write("fuzz.mtl", TEXTURE_MTL);
+            model(scratch::write("fuzz.obj", FIXED_OBJ))
+        }
+        Target::Sound => refused(decode_sound_bytes("fuzz_sound", bytes)),
+        Target::AssetPath => asset_path(bytes),
+    }
+}
+
+fn refused<T, E: std::fmt::Display>(result: Result<T, E>) -> Outcome {
+    match result {
+        Ok(_) => Outcome::Accepted,
+        Err(e) => Outcome::Refused(e.to_string()),
+    }
+}
+
+fn level(bytes: &[u8]) -> Outcome {
+    let path = scratch::write("fuzz_level.ron", bytes);
+    let root = match AssetRoot::new(scratch::root()) {
+        Ok(root) => root,
+        Err(e) => panic!("fuzz scratch root: {e}"),
+    };
+    match candela::level::load_level(&path, &root) {
+        Ok(_) => Outcome::Accepted,
+        Err(e) => asset_refusal(e),
+    }
+}
+
+fn asset_refusal(e: AssetError) -> Outcome {
+    if let AssetError::LoaderPanic { path, message } = &e {
+        panic!("a loader panicked on {}: {message}", path.display());
+    }
+    Outcome::Refused(e.to_string())
+}
+
+fn model(path: std::path::PathBuf) -> Outcome {
+    match load_model_file(&path) {
+        Ok(model) => {
+            check_model(&model);
+            Outcome::Accepted
+        }
+        Err(e) => asset_refusal(e),
+    }
+}
+
+/// What every accepted model must satisfy: finite positions, indices and material ids in range.
+fn check_model(model: &Model) {
+    for mesh in &model.meshes {
+        assert!(
+            mesh.positions.iter().all(|p| p.is_finite()),
+            "accepted mesh {:?} has a non-finite position",
+            mesh.name
+        );
+        let vertices = mesh.positions.len() as u64;
+        assert!(
+            mesh.triangles
+                .iter()
+                .flatten()
+                .all(|&i| u64::from(i) < vertices),
+            "accepted mesh {:?} has an index past its {vertices} vertices",
+            mesh.name
+        );
+        assert_eq!(
+            mesh.triangle_materials.len(),
+            mesh.triangles.len(),
+            "accepted mesh {:?}: one material per triangle",
+            mesh.name
+        );
+        assert!(
+            mesh.triangle_materials
+                .iter()
+                .all(|&m| (m as usize) < model.materials.len()),
+            "accepted mesh {:?} names a material past the model's {}",
+            mesh.name,
+            model.materials.len()
+        );
+    }
+}
+
+fn replay(bytes: &[u8]) -> Outcome {
+    let path = Path::new("fuzz.replay");
+    match Recording::decode(path, bytes) {
+        Ok(recording) => {
+            match Recording::decode(path, &recording.encode()) {
+                Ok(again) => assert!(
+                    again == recording,
+                    "a decoded replay changes in encode → decode"
+                ),
+                Err(e) => panic!("a decoded replay does not decode once re-encoded: {e}"),
+            }
+            Outcome::Accepted
+        }
+        Err(e) => Outcome::Refused(e.to_string()),
+    }
+}
+
+fn asset_path(bytes: &[u8]) -> Outcome {
+    let text = String::from_utf8_lossy(bytes);
+    let requested = text.lines().next().unwrap_or_default();
+    let root_dir = scratch::root();
+    let root = match AssetRoot::new(&root_dir) {
+        Ok(root) => root,
+        Err(e) => panic!("fuzz scratch root: {e}"),
+    };
+    match root.resolve(&root_dir.join("level.ron"), None, requested) {
+        Ok(resolved) => {
+            let inside = match (resolved.canonicalize(), root_dir.canonicalize()) {
+                (Ok(file), Ok(root)) => file.starts_with(root),
+                // Resolved but gone, or the root gone: nothing was read outside.
+                _ => true,
+            };
+            assert!(
+                inside,
+                "{requested:?} resolved to {} outside the asset root",
+                resolved.display()
+            );
+            Outcome::Accepted
+        }
+        Err(e) => Outcome::Refused(e.to_string()),
+    }
+}
