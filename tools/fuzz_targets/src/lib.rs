@@ -36,6 +36,8 @@ pub enum Target {
     Gltf,
     /// A binary glTF file.
     Glb,
+    /// A glTF or GLB file loaded for animation (skins, joints, clips, morph targets).
+    Animation,
     /// A Wavefront OBJ file (with an MTL beside it).
     Obj,
     /// A Wavefront MTL file (referenced by a fixed OBJ).
@@ -49,7 +51,7 @@ pub enum Target {
 }
 
 impl Target {
-    pub const ALL: [Target; 13] = [
+    pub const ALL: [Target; 14] = [
         Target::Level,
         Target::Script,
         Target::Replay,
@@ -58,6 +60,7 @@ impl Target {
         Target::Bindings,
         Target::Gltf,
         Target::Glb,
+        Target::Animation,
         Target::Obj,
         Target::Mtl,
         Target::Texture,
@@ -76,6 +79,7 @@ impl Target {
             Target::Bindings => "bindings",
             Target::Gltf => "gltf",
             Target::Glb => "glb",
+            Target::Animation => "animation",
             Target::Obj => "obj",
             Target::Mtl => "mtl",
             Target::Texture => "texture",

@@ -66,6 +66,11 @@ fn extra_seeds(target: Target) -> Vec<PathBuf> {
         Target::Level | Target::Script => files(&assets, &[".ron"]),
         Target::Gltf => files(&ext.join("gltf"), &[".gltf"]),
         Target::Glb => files(&ext.join("gltf"), &[".glb"]),
+        Target::Animation => [
+            files(&ext.join("gltf"), &[".glb"]),
+            files(&ext.join("animation-reference"), &[".gltf", ".glb"]),
+        ]
+        .concat(),
         Target::Obj => [
             files(&ext.join("obj"), &[".obj"]),
             files(&assets, &[".obj"]),

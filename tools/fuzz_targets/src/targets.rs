@@ -11,6 +11,7 @@ use std::path::Path;
 use candela::app::{ActionSet, Bindings, Progress, Recording, Script, Settings, parse_checked};
 use candela::assets::{AssetError, AssetRoot, Model, load_model_file};
 use candela::audio::decode_sound_bytes;
+use candela::sim::animation::{AnimError, load_animation_file};
 
 use crate::scratch::{self, FIXED_OBJ, PLAIN_MTL, TEXTURE_MTL};
 use crate::{Outcome, Target};
@@ -43,6 +44,7 @@ pub fn run(target: Target, bytes: &[u8]) -> Outcome {
         }
         Target::Gltf => model(scratch::write("fuzz.gltf", bytes)),
         Target::Glb => model(scratch::write("fuzz.glb", bytes)),
+        Target::Animation => animation(bytes),
         Target::Obj => {
             scratch::write("fuzz.mtl", PLAIN_MTL);
             model(scratch::write("fuzz.obj", bytes))
@@ -128,6 +130,26 @@ fn check_model(model: &Model) {
             mesh.name,
             model.materials.len()
         );
+    }
+}
+
+fn animation(bytes: &[u8]) -> Outcome {
+    // GLB by its magic, glTF JSON otherwise: the loader picks the format by extension.
+    let name = if bytes.starts_with(b"glTF") {
+        "fuzz_anim.glb"
+    } else {
+        "fuzz_anim.gltf"
+    };
+    match load_animation_file(&scratch::write(name, bytes)) {
+        Ok(_) => Outcome::Accepted,
+        Err(AnimError::LoaderPanic { file, message }) => {
+            panic!(
+                "the animation loader panicked on {}: {message}",
+                file.display()
+            )
+        }
+        Err(AnimError::Asset(e)) => asset_refusal(e),
+        Err(e) => Outcome::Refused(e.to_string()),
     }
 }
 

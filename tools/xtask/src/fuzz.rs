@@ -21,6 +21,7 @@ const TARGETS: &[&str] = &[
     "bindings",
     "gltf",
     "glb",
+    "animation",
     "obj",
     "mtl",
     "texture",
