@@ -11,6 +11,7 @@ use std::path::{Path, PathBuf};
 use super::action_frame::ActionFrame;
 use super::action_set::ActionSet;
 use super::input::InputState;
+use super::monkey::Monkey;
 use super::replay::{Recorder, Replay};
 use super::replay_error::ReplayError;
 
@@ -23,6 +24,8 @@ pub enum StepInput {
     Record { recorder: Recorder, path: PathBuf },
     /// From a recording; the devices still feed menus and the runner but not the game.
     Replay(Replay),
+    /// From a seeded random source (the soak test); never ends.
+    Monkey(Monkey),
 }
 
 impl StepInput {
@@ -49,6 +52,7 @@ impl StepInput {
                 Some(frame)
             }
             StepInput::Replay(replay) => replay.next_frame(),
+            StepInput::Monkey(monkey) => Some(monkey.frame(set)),
         };
         input.end_step();
         Ok(frame)
