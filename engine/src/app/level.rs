@@ -1,8 +1,8 @@
 //! Putting a loaded level into the engine: models registered with the upkeep, one entity per
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
 //! physics components when the level gives it a body, level materials, the environment, and
-//! the level's gameplay (clips, volumes, lasers, rules; light groups that start off; sound
-//! emitters on instances and the music).
+//! the level's gameplay (clips, volumes, lasers and their visible beams, rules; light groups
+//! that start off; sound emitters on instances and the music).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -18,7 +18,7 @@ use crate::audio::{Bus, SoundEmitter};
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
 use crate::level::PlayableLevel;
 use crate::sim::physics::SensorContacts;
-use crate::sim::triggers::LevelLogic;
+use crate::sim::triggers::{LevelLogic, beam_model, spawn_beam_pool};
 
 /// What [`Engine::spawn_level`] created.
 #[derive(Clone, Debug, Default)]
@@ -106,6 +106,13 @@ impl Engine {
             self.upkeep.set_light_group(group, false);
         }
         self.logic = LevelLogic::new(&level.gameplay, &spawned.entities, &mut self.world);
+        for laser in &level.gameplay.lasers {
+            if let (Some(beam), Some(&entity)) = (laser.beam, spawned.entities.get(laser.instance))
+            {
+                let model = self.upkeep.add_model(&beam_model(&beam));
+                spawn_beam_pool(&mut self.world, entity, model, &beam);
+            }
+        }
         let sounds = &level.gameplay.sounds;
         for emitter in &level.gameplay.emitters {
             if let (Some(&entity), Some(sound)) = (

@@ -168,6 +168,57 @@ pub struct LaserEntry {
     /// Total beam length, metres.
     #[serde(default = "default_laser_length")]
     pub max_length: f32,
+    /// How the beam looks: each straight piece drawn as a thin emissive prism that lights
+    /// what it passes (on unless `beam: None`).
+    #[serde(default = "default_beam")]
+    pub beam: Option<BeamEntry>,
+}
+
+/// The visible beam of a laser: each straight piece of its path becomes a thin emissive square
+/// prism, updated every fixed step.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BeamEntry {
+    /// Linear RGB colour of the emission (multiplied by `strength`).
+    #[serde(default = "default_beam_color")]
+    pub color: [f32; 3],
+    /// Emitted radiance scale, W·sr⁻¹·m⁻² per unit of `color`.
+    #[serde(default = "default_beam_strength")]
+    pub strength: f32,
+    /// Half the prism's width, metres.
+    #[serde(default = "default_beam_radius")]
+    pub radius: f32,
+    /// The light group the beam's emitters belong to (switching it off hides the beam's
+    /// light); default: the laser instance's own group, if it has one.
+    #[serde(default)]
+    pub light_group: Option<u32>,
+}
+
+impl Default for BeamEntry {
+    fn default() -> Self {
+        Self {
+            color: default_beam_color(),
+            strength: default_beam_strength(),
+            radius: default_beam_radius(),
+            light_group: None,
+        }
+    }
+}
+
+fn default_beam() -> Option<BeamEntry> {
+    Some(BeamEntry::default())
+}
+
+fn default_beam_color() -> [f32; 3] {
+    [1.0, 0.08, 0.04]
+}
+
+fn default_beam_strength() -> f32 {
+    40.0
+}
+
+fn default_beam_radius() -> f32 {
+    0.005
 }
 
 fn default_reflections() -> u32 {

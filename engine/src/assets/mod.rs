@@ -51,8 +51,8 @@ mod level_body;
 pub use level_body::{BodyEntry, ShapeEntry};
 mod level_gameplay;
 pub use level_gameplay::{
-    ActionEntry, AutoplayEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry, LaserEntry,
-    MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
+    ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry,
+    LaserEntry, MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
 };
 mod level_load;
 mod level_shapes;

@@ -12,12 +12,12 @@ use std::path::Path;
 use glam::Vec3;
 
 use crate::assets::{
-    ActionEntry, AssetError, AssetResult, AssetRoot, AuthoredClipSet, BodyEntry, ConditionEntry,
-    Level,
+    ActionEntry, AssetError, AssetResult, AssetRoot, AuthoredClipSet, BeamEntry, BodyEntry,
+    ConditionEntry, Level,
 };
 use crate::sim::triggers::{
-    Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedVolume,
-    Rule,
+    Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
+    PlannedVolume, Rule,
 };
 
 /// Name → index of a list of named items; a name used twice is an error.
@@ -116,10 +116,12 @@ pub fn plan_gameplay(
         plan.autoplay
             .push((find(&clips, &a.clip, "clip", "autoplay", &error)?, a.mode));
     }
+    // A beam's own group counts: rules may switch a laser's light alone.
     let groups: HashSet<u32> = level
         .instances
         .iter()
         .filter_map(|i| i.light_group)
+        .chain(g.lasers.iter().filter_map(|l| l.beam?.light_group))
         .collect();
     let group = |group: u32, user: &str| {
         if groups.contains(&group) {
@@ -161,12 +163,28 @@ pub fn plan_gameplay(
                 "{user}: origin and direction must be finite, the direction non-zero and max_length positive"
             )));
         }
+        let at = instance(&l.instance, &user)?;
+        let beam = match l.beam {
+            Some(b) => {
+                let planned = planned_beam(&b, level.instances[at].light_group, &user, &error)?;
+                if level.needs.is_some_and(|n| !n.emitters) && planned.radiance.max_element() > 0.0
+                {
+                    return Err(error(format!(
+                        "{user}: its visible beam emits, but the level's `needs` leaves out \
+                         emitters (add `emitters: true`, or `beam: None`)"
+                    )));
+                }
+                Some(planned)
+            }
+            None => None,
+        };
         plan.lasers.push(PlannedLaser {
-            instance: instance(&l.instance, &user)?,
+            instance: at,
             origin: Vec3::from(l.origin),
             direction,
             max_reflections: l.max_reflections,
             max_length: l.max_length.min(1e6),
+            beam,
         });
     }
     let volumes = index("volume", g.volumes.iter().map(|v| v.name.as_str()), &error)?;
@@ -346,4 +364,30 @@ impl Refs<'_> {
             ActionEntry::Lose => Action::Lose,
         })
     }
+}
+
+/// A laser's visible beam, checked: a finite non-negative colour and strength, a positive
+/// finite radius; the light group defaults to the laser instance's (`instance_group`).
+fn planned_beam(
+    b: &BeamEntry,
+    instance_group: Option<u32>,
+    user: &str,
+    error: &impl Fn(String) -> AssetError,
+) -> AssetResult<PlannedBeam> {
+    let color = Vec3::from(b.color);
+    if !(color.is_finite() && color.min_element() >= 0.0)
+        || !(b.strength.is_finite() && b.strength >= 0.0)
+        || !(b.radius.is_finite() && b.radius > 0.0)
+    {
+        return Err(error(format!(
+            "{user}: beam colour and strength must be finite and non-negative, its radius \
+             positive (got colour {:?}, strength {}, radius {})",
+            b.color, b.strength, b.radius
+        )));
+    }
+    Ok(PlannedBeam {
+        radiance: color * b.strength,
+        radius: b.radius,
+        light_group: b.light_group.or(instance_group),
+    })
 }

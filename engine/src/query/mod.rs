@@ -5,4 +5,4 @@
 mod queries;
 
 pub use crate::scene::Optics;
-pub use queries::{Queries, QueryHit};
+pub use queries::{MAX_PASSED, Queries, QueryHit};

@@ -15,6 +15,9 @@ use crate::scene::surface::resolve;
 use crate::scene::{Optics, optics_of};
 use crate::trace::Ray;
 
+/// Most refused hits [`Queries::closest_where`] passes through before giving up.
+pub const MAX_PASSED: usize = 64;
+
 /// What a query ray hit (world space, metres).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct QueryHit {
@@ -74,6 +77,27 @@ impl Queries<'_> {
             shading_normal: surface.shading_normal,
             uv: surface.uv,
         })
+    }
+
+    /// The closest hit of `ray` on an entity `accept` takes (instances without an entity are
+    /// offered as `None`): hits it refuses are passed through, at most [`MAX_PASSED`] of them
+    /// (then `None`). For things rays should not see, such as a laser's own visible beam.
+    pub fn closest_where(
+        &self,
+        ray: &Ray,
+        accept: impl Fn(Option<Entity>) -> bool,
+    ) -> Option<QueryHit> {
+        let mut ray = *ray;
+        for _ in 0..=MAX_PASSED {
+            let hit = self.closest(&ray)?;
+            if accept(hit.entity) {
+                return Some(hit);
+            }
+            // Strictly beyond the refused hit (`t_min < t`), same origin: nothing is lost to
+            // moving the origin.
+            ray.t_min = hit.t.max(ray.t_min);
+        }
+        None
     }
 
     /// What material `index` of the scene (as in [`QueryHit::material`]) does to an ideal ray

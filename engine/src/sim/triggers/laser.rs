@@ -60,12 +60,14 @@ fn refract(d: Vec3, n: Vec3, ior: f32) -> Vec3 {
     (eta * d + (eta * cos_i - cos_t) * n).normalize()
 }
 
-/// Traces `beam` placed by `world_from_model`, skipping hits on `own` (the emitter itself).
+/// Traces `beam` placed by `world_from_model`, skipping hits on `own` (the emitter itself)
+/// and passing through entities `passes` names (visible beams, see `beam_geometry`).
 pub fn trace_laser(
     queries: &Queries<'_>,
     world_from_model: Mat4,
     beam: &LaserBeam,
     own: Entity,
+    passes: impl Fn(Entity) -> bool,
 ) -> LaserPath {
     let mut origin = world_from_model.transform_point3(beam.origin);
     let mut direction = world_from_model
@@ -83,7 +85,7 @@ pub fn trace_laser(
     let mut self_hits = 0;
     while left > 0.0 {
         let ray = Ray::with_range(origin, direction, 1e-4, left);
-        let Some(hit) = queries.closest(&ray) else {
+        let Some(hit) = queries.closest_where(&ray, |e| !e.is_some_and(&passes)) else {
             path.points.push(origin + direction * left);
             return path;
         };

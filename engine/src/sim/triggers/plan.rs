@@ -67,6 +67,19 @@ pub struct PlannedLaser {
     pub max_reflections: u32,
     /// Metres.
     pub max_length: f32,
+    /// How the beam is drawn; `None`: invisible (only traced).
+    pub beam: Option<PlannedBeam>,
+}
+
+/// A laser's visible beam (see `beam_geometry`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlannedBeam {
+    /// Emitted radiance, linear RGB, W·sr⁻¹·m⁻².
+    pub radiance: Vec3,
+    /// Half the width of the beam's square prism, metres.
+    pub radius: f32,
+    /// Light group of the beam's emitters.
+    pub light_group: Option<u32>,
 }
 
 /// A rule: `then` when `when` becomes true, `otherwise` when it becomes false.

@@ -4,15 +4,17 @@
 //! Owns: the instance → entity map of the level, the [`EntityAnimations`], the
 //! [`VolumeTracker`], the [`RuleBook`], the level's sounds, the outcome (won or lost) and the
 //! log of the last step. A step, in order: advance clips (writing door and lift transforms,
-//! collecting clip events) → trace laser beams → update volumes → evaluate rules → carry out
-//! what touches only the world (clips, materials, win or lose) and hand the rest back as
-//! [`Effect`]s (light groups, sounds) for the engine, which owns the scene and the audio.
+//! collecting clip events) → trace laser beams → lay their visible pieces → update volumes →
+//! evaluate rules → carry out what touches only the world (clips, materials, win or lose) and
+//! hand the rest back as [`Effect`]s (light groups, sounds) for the engine, which owns the
+//! scene and the audio.
 //! Main thread, fixed step, after physics. Deterministic: no clocks, no hash order.
 //! Must not: touch the upkeep, the audio device or the render thread.
 
 use glam::Mat4;
 use hecs::{Entity, World};
 
+use super::beam_geometry::{is_beam, update_beams};
 use super::laser::{LaserBeam, LaserPath, trace_laser};
 use super::logic::{Facts, RuleBook, RuleFiring};
 use super::plan::{Action, GameplayPlan, PlannedSound};
@@ -183,6 +185,7 @@ impl LevelLogic {
         self.steps += 1;
         let clip_events = self.animations.step(world, dt_seconds);
         let beams = trace_beams(world, &queries);
+        update_beams(world);
         let mut volume_events = Vec::new();
         let facts = self
             .volumes
@@ -281,7 +284,7 @@ fn trace_beams(world: &mut World, queries: &Queries<'_>) -> Vec<(Entity, LaserPa
         let Some(placed) = world_from_model(world, entity) else {
             continue;
         };
-        let path = trace_laser(queries, placed, &beam, entity);
+        let path = trace_laser(queries, placed, &beam, entity, |e| is_beam(world, e));
         if let Ok(mut stored) = world.get::<&mut LaserPath>(entity) {
             stored.clone_from(&path);
         }
