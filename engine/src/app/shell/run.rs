@@ -253,8 +253,13 @@ impl ShellRun {
         self.screenshot.take()
     }
 
-    /// Saves progress (the run is ending).
+    /// Saves progress, and settings changed since the last save (the run is ending).
     pub fn finish(&mut self) {
+        let set = self.editor.actions().clone();
+        if self.files.settings != self.editor.draft && self.editor.draft.check(&set).is_ok() {
+            self.files.settings = self.editor.draft.clone();
+            self.files.save_settings(&set);
+        }
         self.files.save_progress();
     }
 
