@@ -7,15 +7,17 @@
 //! The screenshots are checked by what each screen must draw, against the HUD screenshot (the
 //! same view without a menu), with margins far from the picture's noise:
 //!
-//! * title: the menu panel (near black) darkens the centre to under half the HUD frame's
-//!   brightness there; the game's name in the accent colour fills hundreds of pixels in the top
+//! * title: the menus' colours cover over 30 % of its box (under 5 % of the same box in
+//!   the HUD frame); the game's name in the accent colour fills hundreds of pixels in the top
 //!   band;
-//! * HUD: the crosshair's four white arms are at the centre (a pixel in each arm ≥ 225 in every
-//!   channel), its accent dot at the centre, and the objective box darkens the top left;
-//! * pause: the screen is dimmed (the corners under 80 % of the HUD's), the panel darkens the
-//!   centre, and "Paused" is drawn in the accent colour;
-//! * settings: the panel covers most of the centre (≥ 40 % of its pixels panel-dark), with the
-//!   accent heading.
+//! * HUD: the crosshair's four white arms are at the centre (the brightest pixel of 3×3 at the
+//!   middle of each arm ≥ 225 in every channel), its accent dot at the centre, and the
+//!   objective box's accent-coloured heading at the top left;
+//! * pause: the picture is dimmed (the side walls, beside the panel, under 80 % of the HUD's),
+//!   the menus' colours cover over 30 % of its box, and "Paused" is drawn in the accent
+//!   colour;
+//! * settings: the panel covers most of the centre (≥ 40 % of its pixels the menus' colours;
+//!   the HUD frame under 5 %), with the accent heading.
 //!
 //! Then the restart: the settings file holds the change and a fresh (headless) engine and shell
 //! load it.
@@ -106,18 +108,21 @@ fn accent_pixels(img: &RgbImage, x: (f64, f64), y: (f64, f64)) -> u32 {
     n
 }
 
-/// Fraction of pixels in the box as dark as the menu panel (every channel ≤ 40).
+/// Fraction of pixels in the box of the menus' colours: the panel's near-black fill
+/// (10, 11, 16) and the buttons' slate (34, 36, 44), both dark and bluish — unlike the room's
+/// black outside (no blue) and the lit room, dimmed or not (yellow-grey, red, green).
 fn panel_fraction(img: &RgbImage, x: (f64, f64), y: (f64, f64)) -> f64 {
     let (w, h) = (img.width() as f64, img.height() as f64);
-    let (mut dark, mut n) = (0u32, 0u32);
+    let (mut panel, mut n) = (0u32, 0u32);
     for py in (y.0 * h) as u32..(y.1 * h) as u32 {
         for px in (x.0 * w) as u32..(x.1 * w) as u32 {
-            let p = img.get_pixel(px, py);
-            dark += u32::from(p.0.iter().all(|&c| c <= 40));
+            let [r, g, b] = img.get_pixel(px, py).0;
+            let menu = r <= 45 && (12..=56).contains(&b) && b >= r + 3 && b >= g + 2;
+            panel += u32::from(menu);
             n += 1;
         }
     }
-    dark as f64 / n.max(1) as f64
+    panel as f64 / n.max(1) as f64
 }
 
 fn open(path: &Path) -> RgbImage {
@@ -148,10 +153,13 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
     let dirs = UserDirs::under(&scratch.join("user"), "shellscreens").expect("dirs");
     let cues = vec![
         Cue::screenshot(24, shot("title")),
-        Cue::input(2, ShellInput::Start(LevelStart {
-            level: "room".into(),
-            checkpoint: None,
-        })),
+        Cue::input(
+            2,
+            ShellInput::Start(LevelStart {
+                level: "room".into(),
+                checkpoint: None,
+            }),
+        ),
         Cue::screenshot(24, shot("hud")),
         Cue::input(2, ShellInput::Pause),
         Cue::screenshot(16, shot("pause")),
@@ -188,7 +196,11 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
         "{} frames in {:.1} s, ended by {:?}",
         report.frames, report.seconds, report.ended_by
     );
-    assert_eq!(report.ended_by, WindowEnd::Quit, "the Quit cue ends the run");
+    assert_eq!(
+        report.ended_by,
+        WindowEnd::Quit,
+        "the Quit cue ends the run"
+    );
     assert!(started.elapsed() < Duration::from_secs(600));
 
     let title = open(&shot("title"));
@@ -198,42 +210,82 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
     let centre = ((0.42, 0.58), (0.45, 0.65));
     let hud_centre = mean_luma(&hud, centre.0, centre.1);
     eprintln!("HUD centre luma {hud_centre:.1}");
-    assert!(hud_centre > 40.0, "the room is lit behind the HUD: {hud_centre}");
+    assert!(
+        hud_centre > 40.0,
+        "the room is lit behind the HUD: {hud_centre}"
+    );
 
-    // Title: the panel darkens the centre; the name is drawn in the accent colour.
-    let title_centre = mean_luma(&title, centre.0, centre.1);
-    assert!(title_centre < 0.5 * hud_centre, "title centre {title_centre} vs {hud_centre}");
+    // Title: the menu panel and buttons; the name in the accent colour.
+    let menu_box = ((0.36, 0.64), (0.5, 0.68));
+    let hud_panel = panel_fraction(&hud, menu_box.0, menu_box.1);
+    assert!(hud_panel < 0.05, "no panel while playing: {hud_panel:.2}");
+    let title_panel = panel_fraction(&title, menu_box.0, menu_box.1);
+    assert!(
+        title_panel > 0.3,
+        "the title's menu panel: {title_panel:.2}"
+    );
     let name = accent_pixels(&title, (0.1, 0.9), (0.05, 0.3));
     assert!(name > 300, "{name} accent pixels of the title");
 
     // HUD: the crosshair at the centre, the objective box top left.
-    let (cx, cy) = (WIDTH / 2, HEIGHT / 2);
-    let arm = 7; // points 4 + 9/2 at UI scale 0.75, in pixels
+    let (cx, cy) = (WIDTH as i32 / 2, HEIGHT as i32 / 2);
+    // The middle of each arm: (gap + arm / 2) points at UI scale 540 / 720, in pixels.
+    let arm = ((5.0 + 10.0 / 2.0) * HEIGHT as f32 / 720.0).round() as i32;
+    let brightest = |x: i32, y: i32| {
+        let mut best = image::Rgb([0u8; 3]);
+        for (ox, oy) in (-1..=1).flat_map(|ox| (-1..=1).map(move |oy| (ox, oy))) {
+            let p = *hud.get_pixel((x + ox) as u32, (y + oy) as u32);
+            if luma(&p) > luma(&best) {
+                best = p;
+            }
+        }
+        best
+    };
     for (dx, dy) in [(arm, 0i32), (-arm, 0), (0, arm), (0, -arm)] {
-        let p = hud.get_pixel((cx as i32 + dx) as u32, (cy as i32 + dy) as u32);
-        assert!(p.0.iter().all(|&c| c >= 225), "crosshair arm at ({dx}, {dy}): {p:?}");
+        let p = brightest(cx + dx, cy + dy);
+        assert!(
+            p.0.iter().all(|&c| c >= 225),
+            "crosshair arm at ({dx}, {dy}): {p:?}"
+        );
     }
+    let (cx, cy) = (cx as u32, cy as u32);
     let dot = hud.get_pixel(cx, cy);
-    assert!(dot[0] > 200 && dot[2] < 150, "the accent dot at the centre: {dot:?}");
+    assert!(
+        dot[0] > 200 && dot[2] < 150,
+        "the accent dot at the centre: {dot:?}"
+    );
     let objective = accent_pixels(&hud, (0.0, 0.3), (0.0, 0.15));
     assert!(objective > 20, "{objective} accent pixels of OBJECTIVE");
 
     // Pause: dimmed, the panel in the centre, its heading.
-    let corners = |img: &RgbImage| {
-        mean_luma(img, (0.0, 0.15), (0.8, 1.0)) + mean_luma(img, (0.85, 1.0), (0.8, 1.0))
+    let walls = |img: &RgbImage| {
+        mean_luma(img, (0.24, 0.32), (0.4, 0.8)) + mean_luma(img, (0.68, 0.76), (0.4, 0.8))
     };
-    assert!(corners(&pause) < 0.8 * corners(&hud), "pause dims the picture");
-    let pause_centre = mean_luma(&pause, centre.0, centre.1);
-    assert!(pause_centre < 0.5 * hud_centre, "pause centre {pause_centre}");
+    let (paused, playing) = (walls(&pause), walls(&hud));
+    assert!(
+        paused < 0.8 * playing,
+        "pause dims the walls: {paused} vs {playing}"
+    );
+    let pause_panel = panel_fraction(&pause, menu_box.0, (0.3, 0.7));
+    assert!(
+        pause_panel > 0.3,
+        "the pause menu's panel: {pause_panel:.2}"
+    );
     let heading = accent_pixels(&pause, (0.3, 0.7), (0.1, 0.5));
     assert!(heading > 150, "{heading} accent pixels of Paused");
 
     // Settings: a large panel with the heading.
     let panel = panel_fraction(&settings, (0.2, 0.8), (0.2, 0.8));
-    assert!(panel > 0.4, "settings panel covers {panel:.2} of the centre");
+    assert!(
+        panel > 0.4,
+        "settings panel covers {panel:.2} of the centre"
+    );
     let heading = accent_pixels(&settings, (0.3, 0.7), (0.0, 0.3));
     assert!(heading > 100, "{heading} accent pixels of Settings");
-    assert!(panel_fraction(&hud, (0.2, 0.8), (0.2, 0.8)) < 0.2, "the HUD has no panel");
+    assert!(
+        panel_fraction(&hud, (0.2, 0.8), (0.2, 0.8)) < 0.05,
+        "the HUD has no panel"
+    );
 
     // A changed setting survives a restart: on disk, and loaded by a fresh shell.
     let saved = Settings::load(&dirs.settings_file(), &candela::app::ActionSet::standard());
@@ -250,7 +302,10 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
     assert_eq!(shell.files().settings.music_volume, 0.35);
     assert_eq!(engine.settings().music_volume, 0.35);
     engine.input_mut().key(KeyCode::KeyF, true);
-    assert!(engine.input().held(game_actions::USE), "F uses after the restart");
+    assert!(
+        engine.input().held(game_actions::USE),
+        "F uses after the restart"
+    );
     drop(shell);
     let _ = engine.shutdown();
     let _ = std::fs::remove_dir_all(&scratch);

@@ -129,7 +129,11 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
     assert_eq!(shell.screen(), Screen::Title);
     assert!(shell.files().notices.is_empty());
     run(&mut engine, &mut game, &mut shell, 8);
-    assert_eq!(shell.screen(), Screen::Title, "settings closed back to the title");
+    assert_eq!(
+        shell.screen(),
+        Screen::Title,
+        "settings closed back to the title"
+    );
     // Applied live.
     assert_eq!(engine.settings().master_volume, 0.3);
     assert_eq!(engine.settings().look_y_sign(), -1.0);
@@ -144,7 +148,10 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
     engine.input_mut().key(KeyCode::Space, true);
     assert!(engine.input().held(game_actions::JUMP));
     engine.input_mut().key(KeyCode::KeyJ, false);
-    assert!(!engine.input().held(game_actions::JUMP), "Space no longer jumps");
+    assert!(
+        !engine.input().held(game_actions::JUMP),
+        "Space no longer jumps"
+    );
     // Saved.
     let on_disk = Settings::load(&dirs.settings_file(), engine.actions());
     assert_eq!(on_disk.warning, None);
@@ -161,7 +168,13 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
     assert_eq!(engine.settings().target_fps, Some(30.0));
     assert_eq!(engine.audio().volume(Bus::Master), 0.3);
     assert_eq!(
-        shell.files().settings.bindings.0.get(game_actions::JUMP).map(|b| b[0]),
+        shell
+            .files()
+            .settings
+            .bindings
+            .0
+            .get(game_actions::JUMP)
+            .map(|b| b[0]),
         Some(Binding::Key(KeyCode::KeyJ))
     );
     let _ = engine.shutdown();
@@ -175,7 +188,11 @@ fn menus_hold_the_game_and_playing_runs_it() -> Result<()> {
     let mut game = TestGame::default();
     let (mut engine, mut shell) = start(&dirs, &mut game, Vec::new());
     run(&mut engine, &mut game, &mut shell, 5);
-    assert_eq!((game.frames, game.steps), (0, 0), "the title holds the game");
+    assert_eq!(
+        (game.frames, game.steps),
+        (0, 0),
+        "the title holds the game"
+    );
     assert_eq!(engine.time_seconds(), 0.0);
     assert!(engine.frames() >= 5, "but frames render");
     shell.push(ShellInput::Start(LevelStart {
@@ -186,7 +203,11 @@ fn menus_hold_the_game_and_playing_runs_it() -> Result<()> {
     assert_eq!(shell.screen(), Screen::Playing);
     assert_eq!(game.begun.len(), 1);
     assert_eq!(game.frames, 10);
-    assert!(game.steps >= 9, "about one step per 1/60 s frame: {}", game.steps);
+    assert!(
+        game.steps >= 9,
+        "about one step per 1/60 s frame: {}",
+        game.steps
+    );
     // Escape (the pause action) pauses: time stands still.
     engine.input_mut().key(KeyCode::Escape, true);
     run(&mut engine, &mut game, &mut shell, 1);
@@ -223,10 +244,17 @@ fn a_checkpoint_and_a_win_reach_the_progress_save() -> Result<()> {
         win_at: Some(20),
         ..TestGame::default()
     };
-    let (mut engine, mut shell) = start(&dirs, &mut game, vec![Cue::input(1, ShellInput::Start(LevelStart {
-        level: "main".into(),
-        checkpoint: None,
-    }))]);
+    let (mut engine, mut shell) = start(
+        &dirs,
+        &mut game,
+        vec![Cue::input(
+            1,
+            ShellInput::Start(LevelStart {
+                level: "main".into(),
+                checkpoint: None,
+            }),
+        )],
+    );
     run(&mut engine, &mut game, &mut shell, 12);
     let saved = Progress::load(&dirs.progress_file());
     assert_eq!(saved.warning, None);
@@ -242,7 +270,11 @@ fn a_checkpoint_and_a_win_reach_the_progress_save() -> Result<()> {
     assert_eq!(saved.checkpoint("main"), None);
     assert!(saved.play_seconds > 0.3, "{} s played", saved.play_seconds);
     let info = game.shell_info();
-    assert_eq!(continue_point(&info, &saved), None, "nothing left to continue");
+    assert_eq!(
+        continue_point(&info, &saved),
+        None,
+        "nothing left to continue"
+    );
     shell.push(ShellInput::QuitToTitle);
     run(&mut engine, &mut game, &mut shell, 2);
     assert_eq!(shell.screen(), Screen::Title);
@@ -264,8 +296,14 @@ fn corrupt_files_are_reported_kept_aside_and_replaced_by_defaults() -> Result<()
     assert_eq!(notices.len(), 2, "{notices:?}");
     assert!(notices[0].title.contains("Settings"), "{notices:?}");
     assert!(notices[0].detail.contains("settings.ron"), "{notices:?}");
-    assert!(notices[0].detail.contains("line 1"), "the problem is named: {notices:?}");
-    assert!(notices[0].detail.contains("settings.ron.corrupt"), "{notices:?}");
+    assert!(
+        notices[0].detail.contains("line 1"),
+        "the problem is named: {notices:?}"
+    );
+    assert!(
+        notices[0].detail.contains("settings.ron.corrupt"),
+        "{notices:?}"
+    );
     assert!(notices[1].detail.contains("progress.ron"), "{notices:?}");
     assert!(notices[1].detail.contains("UTF-8"), "{notices:?}");
     assert_eq!(shell.files().settings, Settings::default());
@@ -283,7 +321,10 @@ fn corrupt_files_are_reported_kept_aside_and_replaced_by_defaults() -> Result<()
     shell.push(ShellInput::Quit);
     run(&mut engine, &mut game, &mut shell, 3);
     let settings = Settings::load(&dirs.settings_file(), engine.actions());
-    assert_eq!((settings.warning, settings.value.effects_volume), (None, 0.4));
+    assert_eq!(
+        (settings.warning, settings.value.effects_volume),
+        (None, 0.4)
+    );
     assert_eq!(Progress::load(&dirs.progress_file()).warning, None);
     assert_eq!(
         std::fs::read_to_string(dirs.config.join("settings.ron.corrupt"))?,

@@ -5,10 +5,12 @@
 //! bindings, Escape cancels, conflicts are found, reset), and where Continue starts.
 
 use candela::app::shell::{
-    LevelEntry, LevelStart, Screen, SettingsEditor, ShellEffect, ShellInfo, ShellInput,
-    ShellState, action_label, binding_label, continue_point,
+    LevelEntry, LevelStart, Screen, SettingsEditor, ShellEffect, ShellInfo, ShellInput, ShellState,
+    action_label, binding_label, continue_point,
 };
-use candela::app::{ActionSet, Binding, KeyCode, MouseButton, PadButton, Progress, Settings, game_actions};
+use candela::app::{
+    ActionSet, Binding, KeyCode, MouseButton, PadButton, Progress, Settings, game_actions,
+};
 use candela::sim::triggers::Outcome;
 
 fn start(level: &str) -> LevelStart {
@@ -76,7 +78,11 @@ fn the_screens_follow_the_menus_and_the_pause_action() {
     assert_eq!(s.outcome(), Some(&won));
     assert_eq!(s.level(), Some(&start("one")));
     assert!(s.handle(I::Pause).is_empty());
-    assert_eq!(s.screen(), Screen::Ending, "Escape does not skip the ending");
+    assert_eq!(
+        s.screen(),
+        Screen::Ending,
+        "Escape does not skip the ending"
+    );
     s.handle(I::QuitToTitle);
     assert_eq!(s.screen(), Screen::Title);
     // Quit to title from the pause menu saves progress; Quit exits from anywhere.
@@ -103,7 +109,10 @@ fn rebinding_takes_the_next_press_keeps_pad_bindings_and_finds_conflicts() {
         !buttons.iter().any(|a| a == game_actions::LOOK_X),
         "motion actions are not rebound by a press"
     );
-    assert!(e.conflicts().is_empty(), "the standard set has no conflicts");
+    assert!(
+        e.conflicts().is_empty(),
+        "the standard set has no conflicts"
+    );
     // A press with nothing waiting is not used.
     assert!(!e.offer(Binding::Key(KeyCode::KeyJ)));
     // Click "Jump", press J: the key replaces Space, the pad's South stays.
@@ -126,7 +135,13 @@ fn rebinding_takes_the_next_press_keeps_pad_bindings_and_finds_conflicts() {
     let conflicts = e.conflicts();
     assert_eq!(conflicts.len(), 1, "{conflicts:?}");
     assert_eq!(conflicts[0].binding, Binding::Key(KeyCode::KeyJ));
-    assert_eq!(conflicts[0].actions, vec![game_actions::JUMP.to_string(), game_actions::USE.to_string()]);
+    assert_eq!(
+        conflicts[0].actions,
+        vec![
+            game_actions::JUMP.to_string(),
+            game_actions::USE.to_string()
+        ]
+    );
     assert!(e.in_conflict(game_actions::USE) && !e.in_conflict(game_actions::RUN));
     // A mouse button works too; binding back to the default stores nothing.
     e.start_rebind(game_actions::USE);
@@ -144,7 +159,15 @@ fn rebinding_takes_the_next_press_keeps_pad_bindings_and_finds_conflicts() {
     // Labels.
     assert_eq!(binding_label(&Binding::Key(KeyCode::KeyW)), "W");
     assert_eq!(binding_label(&Binding::Key(KeyCode::Space)), "Space");
-    assert_eq!(binding_label(&Binding::Mouse(MouseButton::Left)), "Mouse left");
+    assert_eq!(
+        binding_label(&Binding::Key(KeyCode::ShiftLeft)),
+        "Left Shift"
+    );
+    assert_eq!(binding_label(&Binding::Key(KeyCode::ArrowUp)), "Up");
+    assert_eq!(
+        binding_label(&Binding::Mouse(MouseButton::Left)),
+        "Mouse left"
+    );
     assert_eq!(action_label("primary_fire"), "Primary fire");
 }
 

@@ -364,4 +364,3 @@ impl<'g> WindowApp<'g> {
         }
     }
 }
-

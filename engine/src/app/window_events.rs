@@ -24,7 +24,12 @@ const PIXELS_PER_LINE: f64 = 40.0;
 
 /// What the shell hears of a window event: every key and mouse press (rebinding), focus lost
 /// (pause), and a click in the playing window while the mouse is free (recapture).
-fn forward_to_shell(shell: &mut ShellRun, running: &mut Running, event: &WindowEvent, egui_used: bool) {
+fn forward_to_shell(
+    shell: &mut ShellRun,
+    running: &mut Running,
+    event: &WindowEvent,
+    egui_used: bool,
+) {
     match event {
         WindowEvent::KeyboardInput { event, .. } if event.state.is_pressed() && !event.repeat => {
             if let PhysicalKey::Code(code) = event.physical_key {

@@ -55,7 +55,8 @@ impl Running {
     /// Makes the window what the shell wants, changing only what changed since last frame.
     pub(super) fn follow(&mut self, wants: WindowWants) {
         let before = self.wants.take();
-        let changed = |f: fn(&WindowWants) -> bool| before.as_ref().is_none_or(|b| f(b) != f(&wants));
+        let changed =
+            |f: fn(&WindowWants) -> bool| before.as_ref().is_none_or(|b| f(b) != f(&wants));
         if changed(|w| w.captured) {
             self.set_captured(wants.captured);
         }

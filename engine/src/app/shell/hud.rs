@@ -9,9 +9,9 @@ use egui::{Align2, Color32, Pos2, RichText, Stroke, Vec2};
 use super::info::HudInfo;
 use super::theme;
 
-/// Half the crosshair's arm length and its gap from the centre, points.
-const ARM: f32 = 9.0;
-const GAP: f32 = 4.0;
+/// The crosshair's arm length and its gap from the centre, points.
+pub const ARM: f32 = 10.0;
+pub const GAP: f32 = 5.0;
 
 /// Draws the HUD.
 pub fn show(ctx: &egui::Context, hud: &HudInfo) {
@@ -26,8 +26,8 @@ pub fn show(ctx: &egui::Context, hud: &HudInfo) {
             (Vec2::new(0.0, 1.0)),
         ];
         for (width, colour) in [
-            (4.0, Color32::from_black_alpha(170)),
-            (2.0, Color32::from_rgb(250, 250, 250)),
+            (5.0, Color32::from_black_alpha(170)),
+            (2.5, Color32::from_rgb(250, 250, 250)),
         ] {
             for d in arms {
                 let a: Pos2 = c + d * GAP;
@@ -35,7 +35,7 @@ pub fn show(ctx: &egui::Context, hud: &HudInfo) {
                 painter.line_segment([a, b], Stroke::new(width, colour));
             }
         }
-        painter.circle_filled(c, 2.0, theme::ACCENT);
+        painter.circle_filled(c, 2.5, theme::ACCENT);
     }
     if let Some(objective) = &hud.objective {
         egui::Area::new(egui::Id::unique("shell_hud_objective"))
@@ -60,7 +60,12 @@ pub fn show(ctx: &egui::Context, hud: &HudInfo) {
                         .show(ui, |ui| {
                             for (label, value) in &hud.counters {
                                 ui.label(RichText::new(label).color(theme::MUTED));
-                                ui.label(RichText::new(value).size(22.0).color(theme::ACCENT).strong());
+                                ui.label(
+                                    RichText::new(value)
+                                        .size(22.0)
+                                        .color(theme::ACCENT)
+                                        .strong(),
+                                );
                                 ui.end_row();
                             }
                         });

@@ -173,7 +173,12 @@ impl ShellRun {
         let choice = match self.state.screen() {
             Screen::Title => {
                 theme::dim(ctx);
-                title::show(ctx, &self.info, &self.files.progress, &mut self.files.notices)
+                title::show(
+                    ctx,
+                    &self.info,
+                    &self.files.progress,
+                    &mut self.files.notices,
+                )
             }
             Screen::Playing => {
                 hud::show(ctx, &self.hud);
@@ -300,7 +305,8 @@ impl ShellRun {
             }
         }
         if self.state.screen() != Screen::Settings && self.editor.capturing().is_some() {
-            self.editor.offer(Binding::Key(crate::app::input::KeyCode::Escape));
+            self.editor
+                .offer(Binding::Key(crate::app::input::KeyCode::Escape));
         }
         engine.set_paused(!self.state.simulating());
     }

@@ -158,12 +158,31 @@ pub fn binding_label(binding: &Binding) -> String {
     match binding {
         Binding::Key(code) => {
             let name = format!("{code:?}");
-            name.strip_prefix("Key")
+            if let Some(letter) = name
+                .strip_prefix("Key")
                 .or_else(|| name.strip_prefix("Digit"))
-                .map(str::to_string)
-                .unwrap_or(name)
+            {
+                return letter.to_string();
+            }
+            for (prefix, shown) in [
+                ("Arrow", ""),
+                ("Shift", "Shift"),
+                ("Control", "Ctrl"),
+                ("Alt", "Alt"),
+            ] {
+                if let Some(side) = name.strip_prefix(prefix) {
+                    return if shown.is_empty() {
+                        side.to_string()
+                    } else {
+                        format!("{side} {shown}")
+                    };
+                }
+            }
+            name
         }
-        Binding::Mouse(button) => format!("Mouse {button:?}").to_lowercase().replacen('m', "M", 1),
+        Binding::Mouse(button) => format!("Mouse {button:?}")
+            .to_lowercase()
+            .replacen('m', "M", 1),
         Binding::MouseX => "Mouse X".into(),
         Binding::MouseY => "Mouse Y".into(),
         Binding::Wheel => "Wheel".into(),

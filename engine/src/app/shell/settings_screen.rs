@@ -55,7 +55,10 @@ pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Opti
             }
             ui.add_space(ui.available_width() - 200.0);
             if ui
-                .add(egui::Button::new(RichText::new("Back").strong()).min_size(Vec2::new(200.0, 40.0)))
+                .add(
+                    egui::Button::new(RichText::new("Back").strong())
+                        .min_size(Vec2::new(200.0, 40.0)),
+                )
                 .clicked()
             {
                 choice = Some(ShellInput::CloseSettings);
@@ -65,19 +68,20 @@ pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Opti
     choice
 }
 
-/// Picture, sound and controls.
+/// Picture, sound and controls, in one grid so that every widget lines up.
 fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
     let s = &mut editor.draft;
-    ui.label(theme::section("Picture"));
-    egui::Grid::new("shell_settings_picture")
+    let percent = |v: f64, _: std::ops::RangeInclusive<usize>| format!("{:.0} %", v * 100.0);
+    egui::Grid::new("shell_settings_general")
         .num_columns(2)
         .spacing([18.0, 10.0])
         .show(ui, |ui| {
+            section_row(ui, "Picture");
             row(ui, "Resolution scale", |ui| {
                 ui.add(
                     egui::Slider::new(&mut s.resolution_scale, 0.25..=1.0)
                         .step_by(0.05)
-                        .custom_formatter(|v, _| format!("{:.0} %", v * 100.0)),
+                        .custom_formatter(percent),
                 );
             });
             row(ui, "Target frame rate", |ui| {
@@ -95,32 +99,17 @@ fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
             row(ui, "Fullscreen", |ui| {
                 ui.checkbox(&mut s.fullscreen, "");
             });
-        });
-    ui.add_space(10.0);
-    ui.label(theme::section("Sound"));
-    egui::Grid::new("shell_settings_sound")
-        .num_columns(2)
-        .spacing([18.0, 10.0])
-        .show(ui, |ui| {
+            section_row(ui, "Sound");
             for (label, value) in [
                 ("Master volume", &mut s.master_volume),
                 ("Effects volume", &mut s.effects_volume),
                 ("Music volume", &mut s.music_volume),
             ] {
                 row(ui, label, |ui| {
-                    ui.add(
-                        egui::Slider::new(value, 0.0..=1.0)
-                            .custom_formatter(|v, _| format!("{:.0} %", v * 100.0)),
-                    );
+                    ui.add(egui::Slider::new(value, 0.0..=1.0).custom_formatter(percent));
                 });
             }
-        });
-    ui.add_space(10.0);
-    ui.label(theme::section("Controls"));
-    egui::Grid::new("shell_settings_controls")
-        .num_columns(2)
-        .spacing([18.0, 10.0])
-        .show(ui, |ui| {
+            section_row(ui, "Controls");
             row(ui, "Mouse sensitivity", |ui| {
                 ui.add(
                     egui::Slider::new(&mut s.mouse_sensitivity, 0.1..=5.0)
@@ -132,6 +121,13 @@ fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
                 ui.checkbox(&mut s.invert_y, "");
             });
         });
+}
+
+/// A section heading as a grid row.
+fn section_row(ui: &mut egui::Ui, text: &str) {
+    ui.label(theme::section(text));
+    ui.label("");
+    ui.end_row();
 }
 
 /// The key bindings list.
@@ -146,7 +142,11 @@ fn bindings(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
             for action in editor.rebindable() {
                 let conflict = editor.in_conflict(&action);
                 let label = RichText::new(action_label(&action));
-                ui.label(if conflict { label.color(theme::WARN) } else { label });
+                ui.label(if conflict {
+                    label.color(theme::WARN)
+                } else {
+                    label
+                });
                 let text = if capturing.as_deref() == Some(action.as_str()) {
                     RichText::new("press a key…").color(theme::ACCENT)
                 } else {
@@ -155,9 +155,17 @@ fn bindings(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
                         .iter()
                         .map(binding_label)
                         .collect();
-                    let text = if shown.is_empty() { "—".to_string() } else { shown.join(" / ") };
+                    let text = if shown.is_empty() {
+                        "—".to_string()
+                    } else {
+                        shown.join(" / ")
+                    };
                     let text = RichText::new(text).size(17.0);
-                    if conflict { text.color(theme::WARN) } else { text }
+                    if conflict {
+                        text.color(theme::WARN)
+                    } else {
+                        text
+                    }
                 };
                 if ui
                     .add(egui::Button::new(text).min_size(Vec2::new(190.0, 28.0)))
@@ -177,9 +185,13 @@ fn bindings(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
         for c in conflicts {
             let names: Vec<String> = c.actions.iter().map(|a| action_label(a)).collect();
             ui.label(
-                RichText::new(format!("⚠ {} is bound to {}", binding_label(&c.binding), names.join(" and ")))
-                    .small()
-                    .color(theme::WARN),
+                RichText::new(format!(
+                    "⚠ {} is bound to {}",
+                    binding_label(&c.binding),
+                    names.join(" and ")
+                ))
+                .small()
+                .color(theme::WARN),
             );
         }
     }

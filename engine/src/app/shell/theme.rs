@@ -37,11 +37,23 @@ pub fn style() -> egui::Style {
         ..Default::default()
     };
     style.text_styles = [
-        (TextStyle::Heading, FontId::new(30.0, FontFamily::Proportional)),
+        (
+            TextStyle::Heading,
+            FontId::new(30.0, FontFamily::Proportional),
+        ),
         (TextStyle::Body, FontId::new(19.0, FontFamily::Proportional)),
-        (TextStyle::Button, FontId::new(21.0, FontFamily::Proportional)),
-        (TextStyle::Small, FontId::new(15.0, FontFamily::Proportional)),
-        (TextStyle::Monospace, FontId::new(17.0, FontFamily::Monospace)),
+        (
+            TextStyle::Button,
+            FontId::new(21.0, FontFamily::Proportional),
+        ),
+        (
+            TextStyle::Small,
+            FontId::new(15.0, FontFamily::Proportional),
+        ),
+        (
+            TextStyle::Monospace,
+            FontId::new(17.0, FontFamily::Monospace),
+        ),
     ]
     .into();
     let s = &mut style.spacing;
@@ -64,9 +76,17 @@ pub fn style() -> egui::Style {
     v.slider_trailing_fill = true;
     let w = &mut v.widgets;
     for (state, fill, stroke) in [
-        (&mut w.inactive, BUTTON, Stroke::new(1.0, Color32::from_gray(70))),
+        (
+            &mut w.inactive,
+            BUTTON,
+            Stroke::new(1.0, Color32::from_gray(70)),
+        ),
         (&mut w.hovered, BUTTON_HOVER, Stroke::new(1.5, ACCENT)),
-        (&mut w.active, ACCENT.gamma_multiply(0.7), Stroke::new(2.0, ACCENT)),
+        (
+            &mut w.active,
+            ACCENT.gamma_multiply(0.7),
+            Stroke::new(2.0, ACCENT),
+        ),
         (&mut w.open, BUTTON_HOVER, Stroke::new(1.0, ACCENT)),
     ] {
         state.bg_fill = fill;
@@ -122,10 +142,7 @@ pub fn hud_box() -> egui::Frame {
 
 /// A large title (the game's name).
 pub fn title(text: &str) -> egui::RichText {
-    egui::RichText::new(text)
-        .size(58.0)
-        .color(ACCENT)
-        .strong()
+    egui::RichText::new(text).size(58.0).color(ACCENT).strong()
 }
 
 /// A screen's heading ("Paused", "Settings").
@@ -152,6 +169,24 @@ pub fn menu_button(ui: &mut egui::Ui, text: &str) -> bool {
 pub fn dim(ctx: &egui::Context) {
     let painter = ctx.layer_painter(egui::LayerId::background());
     painter.rect_filled(ctx.content_rect(), CornerRadius::ZERO, DIM);
+}
+
+/// Shades the top of the screen (dark at the top edge, clear at `fraction` of the height) so
+/// a title reads on any picture.
+pub fn top_shade(ctx: &egui::Context, fraction: f32) {
+    let rect = ctx.content_rect();
+    let bottom = rect.top() + rect.height() * fraction;
+    let mut mesh = egui::Mesh::default();
+    let top = Color32::from_black_alpha(190);
+    let clear = Color32::TRANSPARENT;
+    mesh.colored_vertex(rect.left_top(), top);
+    mesh.colored_vertex(rect.right_top(), top);
+    mesh.colored_vertex(egui::pos2(rect.right(), bottom), clear);
+    mesh.colored_vertex(egui::pos2(rect.left(), bottom), clear);
+    mesh.add_triangle(0, 1, 2);
+    mesh.add_triangle(0, 2, 3);
+    ctx.layer_painter(egui::LayerId::background())
+        .add(egui::Shape::mesh(mesh));
 }
 
 /// A centred menu area.

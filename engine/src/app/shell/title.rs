@@ -36,6 +36,7 @@ pub fn show(
     notices: &mut Vec<Notice>,
 ) -> Option<ShellInput> {
     let mut choice = None;
+    theme::top_shade(ctx, 0.45);
     egui::Area::new(egui::Id::unique("shell_title_name"))
         .anchor(Align2::CENTER_TOP, Vec2::new(0.0, 70.0))
         .show(ctx, |ui| {
@@ -111,7 +112,11 @@ fn show_notices(ctx: &egui::Context, notices: &mut Vec<Notice>) {
                 .show(ui, |ui| {
                     ui.set_max_width(760.0);
                     for notice in notices.iter() {
-                        ui.label(RichText::new(format!("⚠  {}", notice.title)).color(theme::WARN).strong());
+                        ui.label(
+                            RichText::new(format!("⚠  {}", notice.title))
+                                .color(theme::WARN)
+                                .strong(),
+                        );
                         ui.label(RichText::new(&notice.detail).small().color(theme::TEXT));
                     }
                     if ui.button("Dismiss").clicked() {
