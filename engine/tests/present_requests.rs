@@ -41,6 +41,7 @@ fn request(size: (u32, u32), overlay: Option<Overlay>) -> PresentRequest {
         vsync: true,
         overlay,
         screenshot: true,
+        scaling: None,
     }
 }
 

@@ -15,8 +15,10 @@ use super::action_frame::ActionFrame;
 use super::action_set::ActionSet;
 use super::clock::FixedClock;
 use super::game::Commands;
-use super::input::InputState;
+use super::input::{InputMap, InputState};
 use super::replay_error::ReplayError;
+use super::settings::Settings;
+use super::shell::ProgressEvent;
 use super::step_input::StepInput;
 use crate::accel::Upkeep;
 use crate::assets::{CameraDesc, Model, RenderSettings, SkyDesc, SunDesc};
@@ -82,6 +84,12 @@ pub struct Engine {
     pub(super) cut: bool,
     pub(super) capture_next: bool,
     pub(super) present_next: Option<PresentRequest>,
+    /// Held by the shell (menus): no game hooks, no fixed steps; rendering goes on.
+    pub(super) paused: bool,
+    /// The player's settings as last applied (player code reads sensitivity and invert-Y).
+    pub(super) settings: Settings,
+    /// Checkpoints and level ends for the shell to save.
+    pub(super) progress_events: Vec<ProgressEvent>,
 }
 
 impl Engine {
@@ -130,6 +138,9 @@ impl Engine {
             cut: true,
             capture_next: false,
             present_next: None,
+            paused: false,
+            settings: Settings::default(),
+            progress_events: Vec::new(),
         }
     }
 
@@ -267,6 +278,46 @@ impl Engine {
     /// Writes the recording, when recording (atomically; every step so far).
     pub fn finish_recording(&self) -> Result<(), ReplayError> {
         self.step_input.finish()
+    }
+
+    /// Holds the game (`true`): frames still render and converge, but the game's `frame` and
+    /// `fixed_step` hooks, physics and the level's logic do not run and game time stands
+    /// still. The shell holds it outside the Playing screen.
+    pub fn set_paused(&mut self, paused: bool) {
+        self.paused = paused;
+    }
+
+    /// Whether the game is held ([`Engine::set_paused`]).
+    pub fn paused(&self) -> bool {
+        self.paused
+    }
+
+    /// The player's settings as last applied: mouse sensitivity and invert-Y for player
+    /// controllers (`Settings::look_y_sign`), the volumes, the picture settings.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// Applies the player's settings: keeps them for [`Engine::settings`] and sets the audio
+    /// buses (master, effects, music). Bindings go in with [`Engine::set_input_map`]; the
+    /// window and the render thread's scaling are the runner's (the shell does both).
+    pub fn set_settings(&mut self, settings: Settings) {
+        use crate::audio::Bus;
+        self.audio.set_volume(Bus::Master, settings.master_volume);
+        self.audio.set_volume(Bus::Effects, settings.effects_volume);
+        self.audio.set_volume(Bus::Music, settings.music_volume);
+        self.settings = settings;
+    }
+
+    /// Binds the devices by `map` from now on (held keys are let go).
+    pub fn set_input_map(&mut self, map: &InputMap) {
+        self.input = InputState::new(map);
+    }
+
+    /// Checkpoints and level ends reported since the last call (`Commands::checkpoint`,
+    /// `Commands::end_level`, a `Win`/`Lose` rule), oldest first.
+    pub fn take_progress_events(&mut self) -> Vec<ProgressEvent> {
+        std::mem::take(&mut self.progress_events)
     }
 
     /// The fixed-step clock (step length, steps taken).

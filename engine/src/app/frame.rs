@@ -11,6 +11,7 @@ use super::action_frame::ActionFrame;
 use super::engine::{Engine, EngineError};
 use super::game::{Command, FrameInput, Game, LevelEvent, Step};
 use super::phase::{FrameReport, Phase, PhaseTimes};
+use super::shell::ProgressEvent;
 use super::waves::waves_system;
 use super::work::FrameWork;
 use crate::accel::UpkeepStats;
@@ -63,9 +64,16 @@ impl Engine {
         game: &mut G,
     ) -> Result<FrameReport, EngineError> {
         let mut timer = PhaseTimer::start();
-        self.input_phase(game, frame_seconds);
-        timer.lap(Phase::Input);
-        let steps = self.fixed_steps(game, frame_seconds);
+        let steps = if self.paused {
+            // Held by the shell: no game hooks, no game time; presses made meanwhile are not
+            // the game's when it resumes.
+            self.input.end_step();
+            0
+        } else {
+            self.input_phase(game, frame_seconds);
+            timer.lap(Phase::Input);
+            self.fixed_steps(game, frame_seconds)
+        };
         timer.lap(Phase::Steps);
         self.pose();
         timer.lap(Phase::Pose);
@@ -132,6 +140,12 @@ impl Engine {
             .step(&mut self.world, &self.physics, self.upkeep.queries(), dt);
         self.carry_out(effects);
         let events = self.level_events(ended_before);
+        for event in &events {
+            if let LevelEvent::Ended(outcome) = event {
+                self.progress_events
+                    .push(ProgressEvent::Ended(outcome.clone()));
+            }
+        }
         if !events.is_empty() {
             let mut step = self.step_view(index);
             for event in &events {
@@ -248,6 +262,12 @@ impl Engine {
                 Command::Lights { group, on } => self.upkeep.set_light_group(group, on),
                 Command::Cut => self.cut = true,
                 Command::Event(name) => self.logic.send_event(name),
+                Command::Checkpoint(name) => {
+                    self.progress_events.push(ProgressEvent::Checkpoint(name));
+                }
+                Command::EndLevel(outcome) => {
+                    self.progress_events.push(ProgressEvent::Ended(outcome));
+                }
             }
         }
     }

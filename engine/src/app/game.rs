@@ -8,6 +8,13 @@
 //! [`super::Engine::frame`]: `frame` once per frame (phase `Input`), `fixed_step` and then
 //! `level_event` for each event of that step (phase `Steps`), all before the scene is posed
 //! and sealed. The window runner also calls `ui` while it builds the frame's overlay.
+//!
+//! The shell (`app::shell`, `run_game`) adds four hooks, all with defaults: `shell_info` (the
+//! title and levels its menus offer), `begin_level` (start a level, with `&mut Engine`, when
+//! the player picks one), `hud` (the HUD's lines, every frame) and `summary` (the ending
+//! screen). A game reports checkpoints and its own end through [`Commands::checkpoint`] and
+//! [`Commands::end_level`]; a level's `Win`/`Lose` rule ends it too. While the shell is not
+//! playing (title, pause, settings, editor, ending) `frame` and `fixed_step` do not run.
 //! Must not: hold references into the engine between hooks (everything is lent per call).
 
 use hecs::World;
@@ -15,6 +22,7 @@ use hecs::World;
 use super::action_frame::ActionFrame;
 use super::action_set::ActionSet;
 use super::input::InputState;
+use super::shell::{GameSummary, HudInfo, LevelStart, ShellInfo};
 use crate::query::Queries;
 use crate::sim::animation::FiredEvent;
 use crate::sim::physics::PhysicsWorld;
@@ -50,7 +58,34 @@ pub trait Game {
     }
 
     /// Windowed only, when [`Game::has_ui`]: the game's HUD and menus, drawn over the frame.
+    /// Under the shell it runs while playing, before the shell's HUD.
     fn ui(&mut self, _ctx: &egui::Context) {}
+
+    /// Shell: the game's name and levels for the title menu.
+    fn shell_info(&self) -> ShellInfo {
+        ShellInfo::default()
+    }
+
+    /// Shell: the player chose to play `start` (New game, Continue, a level): put the level
+    /// and the player in place (at `start.checkpoint` when given). An error returns to the
+    /// title with a notice.
+    fn begin_level(
+        &mut self,
+        _engine: &mut super::Engine,
+        _start: &LevelStart,
+    ) -> Result<(), SetupError> {
+        Ok(())
+    }
+
+    /// Shell: what the HUD shows this frame (crosshair, objective, prompt, counters).
+    fn hud(&self) -> HudInfo {
+        HudInfo::default()
+    }
+
+    /// Shell: what the ending screen shows once the level ended.
+    fn summary(&self) -> GameSummary {
+        GameSummary::default()
+    }
 }
 
 /// A [`Game`] that is one closure run every fixed step (tools, tests, scripts).
@@ -122,6 +157,10 @@ pub enum Command {
     /// An event the level's rules see as `Event(name)` the next time they run (in the same
     /// step when sent from `fixed_step`, in the next from `level_event` or `frame`).
     Event(String),
+    /// The player reached a checkpoint of the level being played (the shell saves it).
+    Checkpoint(String),
+    /// The game ends the level by its own rules (the shell shows the ending).
+    EndLevel(Outcome),
 }
 
 impl Commands {
@@ -140,6 +179,17 @@ impl Commands {
     /// level declares the names it expects in `gameplay.events`.
     pub fn send_event(&mut self, name: impl Into<String>) {
         self.queue.push(Command::Event(name.into()));
+    }
+
+    /// Reports that the player reached checkpoint `name` (saved in the progress file under the
+    /// level being played; Continue starts from it).
+    pub fn checkpoint(&mut self, name: impl Into<String>) {
+        self.queue.push(Command::Checkpoint(name.into()));
+    }
+
+    /// Ends the level being played with `outcome` (won levels count as finished).
+    pub fn end_level(&mut self, outcome: Outcome) {
+        self.queue.push(Command::EndLevel(outcome));
     }
 
     /// Takes the queued commands, oldest first.

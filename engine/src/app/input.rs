@@ -65,6 +65,23 @@ pub mod actions {
 }
 
 impl InputMap {
+    /// The runner's own keys under the shell: stats overlay (F3), vsync (F4), fullscreen
+    /// (F11). Pausing and the mouse are the game's `pause` action (Escape, Start).
+    pub fn runner_keys() -> Self {
+        use Binding::Key;
+        let entries = [
+            (actions::TOGGLE_STATS, vec![Key(KeyCode::F3)]),
+            (actions::TOGGLE_FULLSCREEN, vec![Key(KeyCode::F11)]),
+            (actions::TOGGLE_VSYNC, vec![Key(KeyCode::F4)]),
+        ];
+        Self {
+            actions: entries
+                .into_iter()
+                .map(|(name, bindings)| (name.to_string(), bindings))
+                .collect(),
+        }
+    }
+
     /// The runner's own actions and the fly camera's (WASD + QE, shift to go faster, mouse
     /// look).
     pub fn fly_camera_defaults() -> Self {

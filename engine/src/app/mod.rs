@@ -4,7 +4,8 @@
 //! the fly camera; the stats overlay; capture scripts (RON) that drive the loop for a fixed
 //! number of frames. The game platform's pieces: named game actions and the player's
 //! bindings, gamepads, per-step action frames with recording and replay, settings and
-//! progress saves in the user's folders, written atomically.
+//! progress saves in the user's folders, written atomically; the shell around a game
+//! (`shell`: title, HUD, pause, settings, ending; [`run_game`]).
 
 mod action_frame;
 mod action_set;
@@ -34,6 +35,7 @@ mod script_error;
 mod script_motion;
 mod script_run;
 mod settings;
+pub mod shell;
 mod stats;
 mod stats_overlay;
 mod step_input;
@@ -42,6 +44,8 @@ mod user_dirs;
 mod waves;
 mod window;
 mod window_app;
+mod window_events;
+mod window_running;
 mod work;
 
 pub use action_frame::{AXIS_ONE, ActionFrame, MOTION_PER_COUNT, quantise_axis, quantise_motion};
@@ -84,7 +88,9 @@ pub use stored::{
 };
 pub use user_dirs::{UserDirs, UserDirsError};
 pub use waves::{Waves, waves_system};
-pub use window::{WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_window};
+pub use window::{
+    WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_game, run_window,
+};
 pub use work::{FrameWork, WorkTotals};
 
 /// Action names of the fly camera.

@@ -4,7 +4,8 @@
 //! Owns: [`WindowConfig`] (size, fullscreen, vsync, frame limiter, exposure, overlay, input
 //! map, a frame count with a screenshot, the stop flag Ctrl-C sets), [`run_window`] (which
 //! drives a [`Game`]) and its [`WindowReport`] and typed [`WindowError`]s. The event
-//! handling itself is in `window_app.rs`. Main thread (or any thread on X11).
+//! handling itself is in `window_app.rs` (the per-run state in `window_running.rs`), and
+//! [`run_game`] runs a game inside the shell (`app/shell/`). Main thread (or any thread on X11).
 //! Must not: render or present (the render thread does), or hold game rules.
 
 use std::ffi::OsStr;
@@ -15,6 +16,7 @@ use std::sync::atomic::AtomicBool;
 use super::engine::{EngineError, Environment};
 use super::game::Game;
 use super::input::InputMap;
+use super::shell::ShellConfig;
 use super::stats::FrameStats;
 use super::window_app::WindowApp;
 use crate::render::film::{ImageIoError, TonemapSettings};
@@ -75,6 +77,8 @@ pub enum WindowEnd {
     Closed,
     /// The stop flag was set (Ctrl-C).
     Stopped,
+    /// The player chose Quit in the shell's menus.
+    Quit,
 }
 
 /// What a window run did.
@@ -123,6 +127,23 @@ pub fn display_problem(display: Option<&OsStr>) -> Option<WindowError> {
     }
 }
 
+/// Runs `game` inside the shell (`app::shell`): title menu, HUD, pause, settings, editor hook,
+/// ending; the player's settings and progress from `shell.dirs`, applied live and saved.
+/// `config.input` is replaced by the runner's keys ([`InputMap::runner_keys`]) next to the
+/// game's actions with the player's bindings; the settings decide vsync, fullscreen and the
+/// frame limiter, and workload scaling follows the target frame rate and resolution scale.
+/// Escape pauses (and frees the mouse); Resume or a click in the playing window captures it.
+pub fn run_game(
+    mut config: WindowConfig,
+    shell: ShellConfig,
+    render: RenderConfig,
+    environment: Environment,
+    game: &mut dyn Game,
+) -> Result<WindowReport, WindowError> {
+    config.input = InputMap::runner_keys();
+    run_loop(config, render, environment, game, Some(shell))
+}
+
 /// Opens a window, starts the engine presenting into it (`render` gives the tracer, spp, seed,
 /// converging and scaling; its size is replaced by the window's), calls `game.start`, and runs
 /// frames until the window closes, the stop flag is set or `config.frames` are done. The render
@@ -132,6 +153,16 @@ pub fn run_window(
     render: RenderConfig,
     environment: Environment,
     game: &mut dyn Game,
+) -> Result<WindowReport, WindowError> {
+    run_loop(config, render, environment, game, None)
+}
+
+fn run_loop(
+    config: WindowConfig,
+    render: RenderConfig,
+    environment: Environment,
+    game: &mut dyn Game,
+    shell: Option<ShellConfig>,
 ) -> Result<WindowReport, WindowError> {
     if let Some(problem) = display_problem(std::env::var_os("DISPLAY").as_deref()) {
         return Err(problem);
@@ -156,7 +187,7 @@ pub fn run_window(
         ))
     })?;
     event_loop.set_control_flow(winit::event_loop::ControlFlow::Poll);
-    let mut app = WindowApp::new(config, render, environment, game);
+    let mut app = WindowApp::new(config, render, environment, game, shell);
     event_loop
         .run_app(&mut app)
         .map_err(|e| WindowError::Window(e.to_string()))?;

@@ -1,83 +1,50 @@
-//! The window runner's event handling (winit 0.30 `ApplicationHandler`): open the window and
-//! the engine on `resumed`, turn window and device events into [`InputState`] changes, run one
-//! engine frame per redraw (game frame hook → overlay → present request → `Engine::frame` →
+//! The window runner's per-run work (winit 0.30; the `ApplicationHandler` is in
+//! `window_events.rs`): open the window and the engine, run one engine frame per redraw (game frame hook → overlay → present request → `Engine::frame` →
 //! collect render results), react to the runner's own actions, and end cleanly: the render
 //! thread is joined before the event loop exits, whether the window closed, Ctrl-C set the
 //! stop flag, the frame count was reached or a render failed.
 //!
-//! Owns: the per-run state (window, engine, input, overlay, limiter, stats). Main thread.
+//! With the shell (`run_game`) each frame also goes through [`ShellRun`]: before the overlay
+//! (menus' transitions, settings), its screens inside the overlay, after it, and after the
+//! engine frame; the window follows what it wants (`window_running.rs`), key and mouse presses
+//! reach it for rebinding, losing focus pauses, and cue screenshots are saved.
+//!
+//! Owns: the per-run state (`Running`, in `window_running.rs`). Main thread.
 //! Must not: render, or block on anything but the hand-off and, at the end, the last results.
 
 use std::sync::Arc;
-use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
-use winit::application::ApplicationHandler;
-use winit::event::{DeviceEvent, DeviceId, MouseScrollDelta, WindowEvent};
 use winit::event_loop::ActiveEventLoop;
-use winit::keyboard::PhysicalKey;
-use winit::window::{CursorGrabMode, Fullscreen, Window, WindowId};
+use winit::window::{Fullscreen, Window};
 
 use super::engine::{Engine, Environment};
 use super::frame_limiter::FrameLimiter;
 use super::game::Game;
 use super::input::{InputState, actions};
+use super::shell::{ShellConfig, ShellRun};
 use super::stats::FrameStats;
 use super::stats_overlay::StatsOverlay;
 use super::window::{WindowConfig, WindowEnd, WindowError, WindowReport};
+use super::window_running::Running;
 use crate::commit::PresentRequest;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, Rendered, TracerChoice};
 
-/// Pixels of a touchpad scroll that count as one wheel line.
-const PIXELS_PER_LINE: f64 = 40.0;
-
-struct Running {
-    window: Arc<Window>,
-    engine: Engine,
-    overlay: StatsOverlay,
-    limiter: FrameLimiter,
-    stats: FrameStats,
-    last_frame: Instant,
-    captured: bool,
-    vsync: bool,
-    frames: u64,
-    /// After the last frame: close at this time.
-    hold_until: Option<Instant>,
-}
-
-impl Running {
-    fn set_captured(&mut self, captured: bool) {
-        if captured == self.captured {
-            return;
-        }
-        if captured {
-            let grabbed = self
-                .window
-                .set_cursor_grab(CursorGrabMode::Locked)
-                .or_else(|_| self.window.set_cursor_grab(CursorGrabMode::Confined));
-            if let Err(e) = grabbed {
-                log::warn!("cannot capture the mouse: {e}");
-                return;
-            }
-        } else if let Err(e) = self.window.set_cursor_grab(CursorGrabMode::None) {
-            log::warn!("cannot release the mouse: {e}");
-        }
-        self.window.set_cursor_visible(!captured);
-        self.captured = captured;
-    }
-}
-
 pub(super) struct WindowApp<'g> {
-    config: WindowConfig,
-    render: RenderConfig,
-    environment: Option<Environment>,
-    game: &'g mut dyn Game,
-    running: Option<Running>,
-    started: Instant,
-    error: Option<WindowError>,
-    report: Option<WindowReport>,
-    screenshot: Option<std::path::PathBuf>,
+    pub(super) config: WindowConfig,
+    pub(super) render: RenderConfig,
+    pub(super) environment: Option<Environment>,
+    pub(super) game: &'g mut dyn Game,
+    pub(super) running: Option<Running>,
+    pub(super) started: Instant,
+    pub(super) error: Option<WindowError>,
+    pub(super) report: Option<WindowReport>,
+    pub(super) screenshot: Option<std::path::PathBuf>,
+    pub(super) shell_config: Option<ShellConfig>,
+    pub(super) shell: Option<ShellRun>,
+    /// Screenshots the shell's cues asked for: (frame, where to write it).
+    pub(super) shots: Vec<(u64, std::path::PathBuf)>,
 }
 
 impl<'g> WindowApp<'g> {
@@ -86,6 +53,7 @@ impl<'g> WindowApp<'g> {
         render: RenderConfig,
         environment: Environment,
         game: &'g mut dyn Game,
+        shell_config: Option<ShellConfig>,
     ) -> Self {
         Self {
             config,
@@ -97,6 +65,9 @@ impl<'g> WindowApp<'g> {
             error: None,
             report: None,
             screenshot: None,
+            shell_config,
+            shell: None,
+            shots: Vec::new(),
         }
     }
 
@@ -110,7 +81,7 @@ impl<'g> WindowApp<'g> {
         }
     }
 
-    fn start(&mut self, event_loop: &ActiveEventLoop) -> Result<Running, WindowError> {
+    pub(super) fn start(&mut self, event_loop: &ActiveEventLoop) -> Result<Running, WindowError> {
         let (width, height) = self.config.size;
         let mut attributes = Window::default_attributes()
             .with_title(self.config.title.clone())
@@ -138,6 +109,14 @@ impl<'g> WindowApp<'g> {
         let mut engine = Engine::new_windowed(render, environment, target)?;
         *engine.input_mut() = InputState::new(&self.config.input);
         self.game.setup(&mut engine).map_err(WindowError::Game)?;
+        if let Some(shell) = self.shell_config.take() {
+            self.shell = Some(ShellRun::new(
+                shell,
+                &mut engine,
+                &*self.game,
+                self.config.input.clone(),
+            ));
+        }
         let stats = FrameStats {
             tracer: match render.tracer {
                 TracerChoice::Auto => "auto".into(),
@@ -157,20 +136,30 @@ impl<'g> WindowApp<'g> {
             vsync: self.config.vsync,
             frames: 0,
             hold_until: None,
+            wants: None,
         })
     }
 
     /// Counts a render result; saves the screenshot it carries. A render error ends the run.
-    fn take(&mut self, result: Result<Rendered, RenderError>) {
+    pub(super) fn take(&mut self, result: Result<Rendered, RenderError>) {
         match result {
             Ok(rendered) => {
                 if let Some(running) = self.running.as_mut() {
                     running.stats.observe_rendered(&rendered);
                 }
-                if let (Some(shot), Some(path)) = (&rendered.screenshot, &self.config.screenshot) {
-                    match shot.save_png(path) {
-                        Ok(()) => self.screenshot = Some(path.clone()),
-                        Err(e) => self.fail(e.into()),
+                let cue = self.shots.iter().position(|(f, _)| *f == rendered.frame);
+                let cue = cue.map(|i| self.shots.remove(i).1);
+                if let Some(shot) = &rendered.screenshot {
+                    match (cue, &self.config.screenshot) {
+                        (Some(path), _) => match shot.save_png(&path) {
+                            Ok(()) => log::info!("wrote {}", path.display()),
+                            Err(e) => self.fail(e.into()),
+                        },
+                        (None, Some(path)) => match shot.save_png(path) {
+                            Ok(()) => self.screenshot = Some(path.clone()),
+                            Err(e) => self.fail(e.into()),
+                        },
+                        (None, None) => {}
                     }
                 }
             }
@@ -178,7 +167,7 @@ impl<'g> WindowApp<'g> {
         }
     }
 
-    fn fail(&mut self, error: WindowError) {
+    pub(super) fn fail(&mut self, error: WindowError) {
         log::error!("{error}");
         if self.error.is_none() {
             self.error = Some(error);
@@ -186,7 +175,10 @@ impl<'g> WindowApp<'g> {
     }
 
     /// Releases the mouse, joins the render thread (taking its last results) and leaves.
-    fn end(&mut self, event_loop: &ActiveEventLoop, ended_by: WindowEnd) {
+    pub(super) fn end(&mut self, event_loop: &ActiveEventLoop, ended_by: WindowEnd) {
+        if let Some(shell) = self.shell.as_mut() {
+            shell.finish();
+        }
         if let Some(mut running) = self.running.take() {
             running.set_captured(false);
             let inner_position = running.window.inner_position().ok().map(|p| (p.x, p.y));
@@ -222,6 +214,10 @@ impl<'g> WindowApp<'g> {
         if input.pressed_this_frame(actions::TOGGLE_STATS) {
             running.overlay.visible = !running.overlay.visible;
         }
+        if self.shell.is_some() {
+            // Vsync, fullscreen and the mouse follow the shell (`Running::follow`).
+            return;
+        }
         if input.pressed_this_frame(actions::TOGGLE_VSYNC) {
             running.vsync = !running.vsync;
             log::info!("vsync {}", if running.vsync { "on" } else { "off" });
@@ -247,7 +243,7 @@ impl<'g> WindowApp<'g> {
     }
 
     /// One frame: hooks, overlay, present request, `Engine::frame`, results.
-    fn redraw(&mut self, event_loop: &ActiveEventLoop) {
+    pub(super) fn redraw(&mut self, event_loop: &ActiveEventLoop) {
         let Some(running) = self.running.as_mut() else {
             return;
         };
@@ -266,6 +262,15 @@ impl<'g> WindowApp<'g> {
         let Some(running) = self.running.as_mut() else {
             return;
         };
+        if let Some(shell) = self.shell.as_mut() {
+            shell.before_frame(&mut running.engine, &mut *self.game);
+            let wants = shell.wants();
+            if wants.exit {
+                self.end(event_loop, WindowEnd::Quit);
+                return;
+            }
+            running.follow(wants);
+        }
         let Running {
             window,
             engine,
@@ -276,17 +281,37 @@ impl<'g> WindowApp<'g> {
         let size = window.inner_size();
         stats.output_size = (size.width, size.height);
         let last = self.config.frames.is_some_and(|n| running.frames + 1 >= n);
+        let game = &mut *self.game;
+        let built = match self.shell.as_mut() {
+            Some(shell) => {
+                let playing = shell.screen() == super::shell::Screen::Playing;
+                let overlay = overlay.build(
+                    window,
+                    stats,
+                    Some(&mut |ctx| {
+                        if playing && game.has_ui() {
+                            game.ui(ctx);
+                        }
+                        shell.ui(ctx);
+                    }),
+                );
+                shell.after_ui(engine, game);
+                overlay
+            }
+            None if game.has_ui() => overlay.build(window, stats, Some(&mut |ctx| game.ui(ctx))),
+            None => overlay.build(window, stats, None),
+        };
+        let shot = self.shell.as_mut().and_then(ShellRun::take_screenshot);
+        if let Some(path) = shot.clone() {
+            self.shots.push((engine.frames(), path));
+        }
         engine.present_next(PresentRequest {
             surface_size: (size.width, size.height),
             tonemap: self.config.tonemap,
             vsync: running.vsync,
-            overlay: if self.game.has_ui() {
-                let game = &mut *self.game;
-                overlay.build(window, stats, Some(&mut |ctx| game.ui(ctx)))
-            } else {
-                overlay.build(window, stats, None)
-            },
-            screenshot: last && self.config.screenshot.is_some(),
+            overlay: built,
+            screenshot: shot.is_some() || (last && self.config.screenshot.is_some()),
+            scaling: self.shell.as_ref().map(ShellRun::scaling_goal),
         });
         let frame = engine.frame(frame_seconds, &mut *self.game);
         let report = match frame {
@@ -302,6 +327,9 @@ impl<'g> WindowApp<'g> {
         };
         running.stats.observe_frame(&report, frame_seconds);
         running.frames += 1;
+        if let Some(shell) = self.shell.as_mut() {
+            shell.after_frame(&mut running.engine, &report);
+        }
         let mut results = running.engine.rendered();
         if last {
             // Wait for the last frame (and its screenshot) before holding or leaving.
@@ -333,94 +361,6 @@ impl<'g> WindowApp<'g> {
                 WindowEnd::Frames
             };
             self.end(event_loop, ended_by);
-        }
-    }
-}
-
-impl ApplicationHandler for WindowApp<'_> {
-    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
-        if self.running.is_some() || self.report.is_some() || self.error.is_some() {
-            return;
-        }
-        match self.start(event_loop) {
-            Ok(running) => {
-                running.window.request_redraw();
-                self.running = Some(running);
-            }
-            Err(e) => {
-                self.fail(e);
-                event_loop.exit();
-            }
-        }
-    }
-
-    fn window_event(&mut self, event_loop: &ActiveEventLoop, _: WindowId, event: WindowEvent) {
-        let Some(running) = self.running.as_mut() else {
-            return;
-        };
-        let egui_used =
-            running
-                .overlay
-                .on_window_event(&running.window, &event, self.game.has_ui());
-        match event {
-            WindowEvent::CloseRequested => self.end(event_loop, WindowEnd::Closed),
-            WindowEvent::Focused(false) => {
-                running.engine.input_mut().release_all();
-                running.set_captured(false);
-            }
-            WindowEvent::KeyboardInput { event, .. } => {
-                // Releases always count (a press egui took was never seen as held).
-                if let PhysicalKey::Code(code) = event.physical_key
-                    && (!egui_used || !event.state.is_pressed())
-                {
-                    running
-                        .engine
-                        .input_mut()
-                        .key(code, event.state.is_pressed());
-                }
-            }
-            WindowEvent::MouseInput { state, button, .. } => {
-                if !egui_used || !state.is_pressed() {
-                    running
-                        .engine
-                        .input_mut()
-                        .mouse_button(button, state.is_pressed());
-                }
-            }
-            WindowEvent::MouseWheel { delta, .. } if !egui_used => {
-                let lines = match delta {
-                    MouseScrollDelta::LineDelta(_, y) => y as f64,
-                    MouseScrollDelta::PixelDelta(p) => p.y / PIXELS_PER_LINE,
-                };
-                running.engine.input_mut().wheel(lines as f32);
-            }
-            WindowEvent::RedrawRequested => self.redraw(event_loop),
-            _ => {}
-        }
-    }
-
-    fn device_event(&mut self, _: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
-        if let (Some(running), DeviceEvent::MouseMotion { delta }) = (self.running.as_mut(), event)
-            && running.captured
-        {
-            running
-                .engine
-                .input_mut()
-                .mouse_motion(delta.0 as f32, delta.1 as f32);
-        }
-    }
-
-    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
-        if self.config.stop.load(Ordering::Relaxed) {
-            self.end(event_loop, WindowEnd::Stopped);
-        } else if let Some(running) = &self.running {
-            running.window.request_redraw();
-        }
-    }
-
-    fn exiting(&mut self, event_loop: &ActiveEventLoop) {
-        if self.running.is_some() {
-            self.end(event_loop, WindowEnd::Closed);
         }
     }
 }

@@ -6,5 +6,5 @@ mod present;
 mod sealed;
 
 pub use handoff::{CommitReceiver, CommitSender, commit_channel};
-pub use present::{Overlay, PresentRequest, TonemapSettings};
+pub use present::{Overlay, PresentRequest, ScalingRequest, TonemapSettings};
 pub use sealed::{Commit, Motion};

@@ -67,6 +67,19 @@ pub struct PresentRequest {
     pub overlay: Option<Overlay>,
     /// Read the presented image back (the window's content, overlay included).
     pub screenshot: bool,
+    /// A new goal for workload scaling (the player's target frame rate and resolution scale);
+    /// `None` keeps the current one.
+    pub scaling: Option<ScalingRequest>,
+}
+
+/// What workload scaling should hold from this frame on (the player's settings).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScalingRequest {
+    /// Seconds per frame to hold by trading samples, roulette and resolution (`None`: a fixed
+    /// workload).
+    pub frame_seconds: Option<f32>,
+    /// Highest render resolution, fraction of the window per axis, in [0.1, 1].
+    pub max_resolution: f32,
 }
 
 /// How radiance becomes a displayed colour.

@@ -34,6 +34,17 @@ impl ScalingTarget {
     }
 }
 
+/// A live change of what the controller holds (the player's settings: target frame rate and
+/// resolution scale), sent with each present request.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ScalingGoal {
+    /// The frame time to hold (`None`: a fixed workload).
+    pub target: Option<ScalingTarget>,
+    /// Highest render resolution, fraction of the output per axis, in [0.1, 1]; scaling goes
+    /// below it to hold the target, never above.
+    pub max_resolution: f32,
+}
+
 /// The workload of one frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Workload {
@@ -59,6 +70,9 @@ pub struct Scaling {
     smoothed: Option<f32>,
     cooldown: u32,
     resized: bool,
+    /// Highest resolution allowed (the player's resolution scale).
+    max_resolution: f32,
+    goal: Option<ScalingGoal>,
 }
 
 impl Scaling {
@@ -74,6 +88,34 @@ impl Scaling {
             smoothed: None,
             cooldown: 0,
             resized: false,
+            max_resolution: 1.0,
+            goal: None,
+        }
+    }
+
+    /// Holds `goal` from now on (the same goal again changes nothing). A lower resolution cap
+    /// applies at once; without a target the resolution is the cap.
+    pub fn set_goal(&mut self, goal: ScalingGoal) {
+        if self.goal == Some(goal) {
+            return;
+        }
+        self.goal = Some(goal);
+        let max = if goal.max_resolution.is_finite() {
+            goal.max_resolution.clamp(0.1, 1.0)
+        } else {
+            1.0
+        };
+        self.max_resolution = max;
+        self.target = goal.target.map(|mut t| {
+            t.min_resolution = t.min_resolution.min(max);
+            t
+        });
+        let before = self.work.resolution;
+        if self.work.resolution > max || self.target.is_none() {
+            self.work.resolution = max;
+        }
+        if self.work.resolution != before {
+            self.resized = true;
         }
     }
 
@@ -111,8 +153,8 @@ impl Scaling {
                 w.resolution = (w.resolution - 0.125).max(t.min_resolution);
             }
         } else if s < 0.75 * t.frame_seconds {
-            if w.resolution < 1.0 {
-                w.resolution = (w.resolution + 0.125).min(1.0);
+            if w.resolution < self.max_resolution - 1e-6 {
+                w.resolution = (w.resolution + 0.125).min(self.max_resolution);
             } else if w.roulette_scale < 1.0 {
                 w.roulette_scale = (w.roulette_scale + 0.1).min(1.0);
             } else if w.spp < t.max_spp {
@@ -153,6 +195,31 @@ mod tests {
                 s.current()
             );
         }
+    }
+
+    #[test]
+    fn a_goal_caps_the_resolution_and_retargets() {
+        let mut s = Scaling::new(4, None);
+        s.set_goal(ScalingGoal {
+            target: None,
+            max_resolution: 0.5,
+        });
+        assert_eq!(s.current().resolution, 0.5);
+        assert!(s.resized());
+        s.set_goal(ScalingGoal {
+            target: None,
+            max_resolution: 0.5,
+        });
+        assert!(!s.resized(), "the same goal again changes nothing");
+        // With a target far above the cost, scaling climbs back only up to the cap.
+        s.set_goal(ScalingGoal {
+            target: Some(ScalingTarget::new(1.0)),
+            max_resolution: 0.75,
+        });
+        for _ in 0..100 {
+            s.observe(0.0001);
+        }
+        assert_eq!(s.current().resolution, 0.75);
     }
 
     #[test]

@@ -16,7 +16,7 @@ use std::time::Instant;
 
 use super::film::{Converge, ConvergePolicy, Film};
 use super::present::{PresentTarget, Presenter, Screenshot};
-use super::scaling::{Scaling, ScalingTarget};
+use super::scaling::{Scaling, ScalingGoal, ScalingTarget};
 use super::tracer::{RenderError, RenderStats, Tracer};
 use super::{FrameSettings, frame_uniforms};
 use crate::commit::{Commit, CommitReceiver, CommitSender, commit_channel};
@@ -211,6 +211,12 @@ fn run(
     let mut output = (config.width, config.height);
     while let Ok(mut commit) = commits.recv() {
         let mut request = commit.present.take();
+        if let Some(wanted) = request.as_ref().and_then(|r| r.scaling) {
+            scaling.set_goal(ScalingGoal {
+                target: wanted.frame_seconds.map(ScalingTarget::new),
+                max_resolution: wanted.max_resolution,
+            });
+        }
         if let Some(r) = &request
             && r.surface_size.0 > 0
             && r.surface_size.1 > 0

@@ -1,0 +1,62 @@
+//! Scripted shell input for tests and demos: a list of [`Cue`]s, each run a number of frames
+//! after the previous one — a menu choice or action ([`ShellInput`]), a change to the settings
+//! draft as the settings screen's widgets would make it, or a screenshot of the window (menus
+//! and HUD included).
+//!
+//! Data; the runner plays them. Main thread. Must not: reach the engine or the window.
+
+use std::path::PathBuf;
+
+use super::settings_edit::SettingsEditor;
+use super::state::ShellInput;
+
+/// What a cue does.
+pub enum CueAction {
+    /// As if the player chose this in a menu or pressed the action.
+    Input(ShellInput),
+    /// Changes the settings draft (applied and saved as a widget's change is).
+    Edit(Box<dyn FnMut(&mut SettingsEditor) + Send>),
+    /// Writes what the window shows this frame to this PNG (windowed runs only).
+    Screenshot(PathBuf),
+}
+
+impl std::fmt::Debug for CueAction {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            CueAction::Input(i) => write!(f, "Input({i:?})"),
+            CueAction::Edit(_) => write!(f, "Edit(..)"),
+            CueAction::Screenshot(p) => write!(f, "Screenshot({})", p.display()),
+        }
+    }
+}
+
+/// One scripted step.
+#[derive(Debug)]
+pub struct Cue {
+    /// Frames to wait after the previous cue (0: the same frame).
+    pub wait_frames: u32,
+    pub action: CueAction,
+}
+
+impl Cue {
+    pub fn input(wait_frames: u32, input: ShellInput) -> Self {
+        Self {
+            wait_frames,
+            action: CueAction::Input(input),
+        }
+    }
+
+    pub fn edit(wait_frames: u32, edit: impl FnMut(&mut SettingsEditor) + Send + 'static) -> Self {
+        Self {
+            wait_frames,
+            action: CueAction::Edit(Box::new(edit)),
+        }
+    }
+
+    pub fn screenshot(wait_frames: u32, path: impl Into<PathBuf>) -> Self {
+        Self {
+            wait_frames,
+            action: CueAction::Screenshot(path.into()),
+        }
+    }
+}

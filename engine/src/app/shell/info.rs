@@ -1,0 +1,94 @@
+//! What a game tells the shell and the shell tells the game: the title menu's entries
+//! ([`ShellInfo`], [`LevelEntry`]), where a level starts ([`LevelStart`]), the HUD's lines
+//! ([`HudInfo`]), the ending screen's summary ([`GameSummary`]) and the progress the game's
+//! hooks report through `Commands` ([`ProgressEvent`]).
+//!
+//! Plain data, main thread. Must not: hold engine state or draw anything.
+
+use crate::sim::triggers::Outcome;
+
+/// The game as the title menu shows it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ShellInfo {
+    /// The game's name, large on the title screen.
+    pub title: String,
+    /// One line under the title (may be empty).
+    pub subtitle: String,
+    /// The levels in play order; the title menu offers Continue (the first unfinished one, from
+    /// its checkpoint), New game (the first from the start) and each level by name.
+    pub levels: Vec<LevelEntry>,
+}
+
+impl Default for ShellInfo {
+    fn default() -> Self {
+        Self {
+            title: "Candela".into(),
+            subtitle: String::new(),
+            levels: vec![LevelEntry {
+                id: "main".into(),
+                name: "Play".into(),
+            }],
+        }
+    }
+}
+
+/// One level of the game.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LevelEntry {
+    /// Stable id, the key in the progress save (`Progress::finished`, `checkpoints`).
+    pub id: String,
+    /// What the menu shows.
+    pub name: String,
+}
+
+/// Where the shell asks the game to start playing.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LevelStart {
+    /// A [`LevelEntry::id`].
+    pub level: String,
+    /// The checkpoint to start from (`None`: the level's start).
+    pub checkpoint: Option<String>,
+}
+
+/// What the HUD shows while playing; the game fills it every frame (`Game::hud`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct HudInfo {
+    /// Draw the crosshair at the centre of the screen.
+    pub crosshair: bool,
+    /// The current objective, top left (`None`: nothing).
+    pub objective: Option<String>,
+    /// An interaction prompt under the crosshair ("E  open the door").
+    pub prompt: Option<String>,
+    /// Counters, top right: (label, value), e.g. ("Lights", "2 / 3").
+    pub counters: Vec<(String, String)>,
+}
+
+impl Default for HudInfo {
+    fn default() -> Self {
+        Self {
+            crosshair: true,
+            objective: None,
+            prompt: None,
+            counters: Vec::new(),
+        }
+    }
+}
+
+/// What the ending screen shows.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct GameSummary {
+    /// The headline; empty: "Level complete" or "Level failed" from the outcome.
+    pub headline: String,
+    /// Lines under it (score, secrets found…).
+    pub lines: Vec<String>,
+}
+
+/// Progress a game's hooks report (`Commands::checkpoint`, `Commands::end_level`) or the level's
+/// rules reach (`LevelEvent::Ended`); the shell saves it (`Engine::take_progress_events`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ProgressEvent {
+    /// The player reached this checkpoint of the level being played.
+    Checkpoint(String),
+    /// The level ended.
+    Ended(Outcome),
+}

@@ -1,0 +1,127 @@
+//! The title screen: the game's name and subtitle, Continue / New game / each level (a tick on
+//! finished ones), Settings, Quit, and a notice box when a settings or save file was corrupt
+//! and replaced by defaults (naming the file, the problem and the kept backup).
+//!
+//! Draws with egui, returns the choice. Main thread. Must not: change state itself.
+
+use egui::{Align2, RichText, Vec2};
+
+use super::files::Notice;
+use super::info::{LevelStart, ShellInfo};
+use super::state::ShellInput;
+use super::theme;
+use crate::app::saves::Progress;
+
+/// Where Continue starts: the first unfinished level, from its checkpoint (`None` when every
+/// level is finished or nothing was played yet).
+pub fn continue_point(info: &ShellInfo, progress: &Progress) -> Option<LevelStart> {
+    let played = !progress.finished.is_empty() || !progress.checkpoints.is_empty();
+    if !played {
+        return None;
+    }
+    info.levels
+        .iter()
+        .find(|l| !progress.is_finished(&l.id))
+        .map(|l| LevelStart {
+            level: l.id.clone(),
+            checkpoint: progress.checkpoint(&l.id).map(str::to_string),
+        })
+}
+
+/// Draws the title screen; `notices` can be dismissed here.
+pub fn show(
+    ctx: &egui::Context,
+    info: &ShellInfo,
+    progress: &Progress,
+    notices: &mut Vec<Notice>,
+) -> Option<ShellInput> {
+    let mut choice = None;
+    theme::top_shade(ctx, 0.45);
+    egui::Area::new(egui::Id::unique("shell_title_name"))
+        .anchor(Align2::CENTER_TOP, Vec2::new(0.0, 70.0))
+        .show(ctx, |ui| {
+            ui.vertical_centered(|ui| {
+                ui.label(theme::title(&info.title));
+                if !info.subtitle.is_empty() {
+                    ui.label(RichText::new(&info.subtitle).size(22.0).color(theme::MUTED));
+                }
+            });
+        });
+    egui::Area::new(egui::Id::unique("shell_title_menu"))
+        .anchor(Align2::CENTER_CENTER, Vec2::new(0.0, 60.0))
+        .show(ctx, |ui| {
+            theme::panel().show(ui, |ui| {
+                ui.vertical_centered(|ui| {
+                    if let Some(start) = continue_point(info, progress) {
+                        let label = match &start.checkpoint {
+                            Some(cp) => format!("Continue  ·  {cp}"),
+                            None => "Continue".to_string(),
+                        };
+                        if theme::menu_button(ui, &label) {
+                            choice = Some(ShellInput::Start(start));
+                        }
+                    }
+                    if let Some(first) = info.levels.first()
+                        && theme::menu_button(ui, "New game")
+                    {
+                        choice = Some(ShellInput::Start(LevelStart {
+                            level: first.id.clone(),
+                            checkpoint: None,
+                        }));
+                    }
+                    if info.levels.len() > 1 {
+                        ui.add_space(6.0);
+                        ui.label(theme::section("Levels"));
+                        for level in &info.levels {
+                            let mark = if progress.is_finished(&level.id) {
+                                "✔ "
+                            } else {
+                                ""
+                            };
+                            if theme::menu_button(ui, &format!("{mark}{}", level.name)) {
+                                choice = Some(ShellInput::Start(LevelStart {
+                                    level: level.id.clone(),
+                                    checkpoint: None,
+                                }));
+                            }
+                        }
+                        ui.add_space(6.0);
+                    }
+                    if theme::menu_button(ui, "Settings") {
+                        choice = Some(ShellInput::OpenSettings);
+                    }
+                    if theme::menu_button(ui, "Quit") {
+                        choice = Some(ShellInput::Quit);
+                    }
+                });
+            });
+        });
+    if !notices.is_empty() {
+        show_notices(ctx, notices);
+    }
+    choice
+}
+
+/// The notice box, bottom centre.
+fn show_notices(ctx: &egui::Context, notices: &mut Vec<Notice>) {
+    egui::Area::new(egui::Id::unique("shell_notices"))
+        .anchor(Align2::CENTER_BOTTOM, Vec2::new(0.0, -24.0))
+        .show(ctx, |ui| {
+            theme::panel()
+                .stroke(egui::Stroke::new(1.5, theme::WARN))
+                .show(ui, |ui| {
+                    ui.set_max_width(760.0);
+                    for notice in notices.iter() {
+                        ui.label(
+                            RichText::new(format!("⚠  {}", notice.title))
+                                .color(theme::WARN)
+                                .strong(),
+                        );
+                        ui.label(RichText::new(&notice.detail).small().color(theme::TEXT));
+                    }
+                    if ui.button("Dismiss").clicked() {
+                        notices.clear();
+                    }
+                });
+        });
+}
