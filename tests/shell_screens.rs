@@ -1,6 +1,7 @@
 //! The shell's screens in a real window under Xvfb (CPU tracer, 960×540): a small test game on
 //! the Cornell box runs inside `run_game`, and scripted cues walk it through the title menu,
-//! playing (the HUD), the pause menu and the settings screen, with a screenshot of each
+//! playing (the HUD), the pause menu, the settings screen, the editor hook and the ending,
+//! with a screenshot of each
 //! (written to `target/shell_screens/`), a settings change on the way, and Quit. One window run
 //! per process (winit allows one event loop), so this file holds one test.
 //!
@@ -19,6 +20,9 @@
 //! * settings: the panel covers most of the centre (≥ 40 % of its pixels the menus' colours;
 //!   the HUD frame under 5 %), with the accent heading.
 //!
+//! The editor hook's placeholder and the ending screen (after a won level, which then is in
+//! the progress save) are shot and checked the same way.
+//!
 //! Then the restart: the settings file holds the change and a fresh (headless) engine and shell
 //! load it.
 
@@ -28,15 +32,16 @@ use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
 use candela::app::shell::{
-    Cue, HudInfo, LevelEntry, LevelStart, ShellConfig, ShellInfo, ShellInput, ShellRun,
+    Cue, GameSummary, HudInfo, LevelEntry, LevelStart, ShellConfig, ShellInfo, ShellInput, ShellRun,
 };
 use candela::app::{
-    Binding, Engine, Environment, Game, InputMap, KeyCode, Settings, SetupError, UserDirs,
-    WindowConfig, WindowEnd, game_actions, run_game,
+    Binding, Engine, Environment, Game, InputMap, KeyCode, Progress, Settings, SetupError,
+    UserDirs, WindowConfig, WindowEnd, game_actions, run_game,
 };
 use candela::assets::AssetRoot;
 use candela::level::{PlayableLevel, load_level};
 use candela::render::RenderConfig;
+use candela::sim::triggers::Outcome;
 use candela_tests::repo;
 use candela_tests::xvfb::{set_environment, start_xvfb};
 use image::RgbImage;
@@ -62,6 +67,16 @@ impl Game for RoomGame {
                 id: "room".into(),
                 name: "The room".into(),
             }],
+        }
+    }
+
+    fn summary(&self) -> GameSummary {
+        GameSummary {
+            headline: String::new(),
+            lines: vec![
+                "Lights switched on   3 / 3".into(),
+                "Secrets found   0 / 1".into(),
+            ],
         }
     }
 
@@ -141,7 +156,7 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
     let out = repo().join("target/shell_screens");
     std::fs::create_dir_all(&out).expect("screenshot folder");
     let shot = |name: &str| out.join(format!("{name}.png"));
-    for name in ["title", "hud", "pause", "settings"] {
+    for name in ["title", "hud", "pause", "settings", "editor", "ending"] {
         let _ = std::fs::remove_file(shot(name));
     }
     let xvfb = start_xvfb();
@@ -171,6 +186,12 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
         }),
         Cue::screenshot(12, shot("settings")),
         Cue::input(3, ShellInput::CloseSettings),
+        Cue::input(2, ShellInput::Resume),
+        Cue::input(4, ShellInput::EditorToggle),
+        Cue::screenshot(8, shot("editor")),
+        Cue::input(2, ShellInput::EditorToggle),
+        Cue::input(4, ShellInput::LevelEnded(Outcome::Won("exit".into()))),
+        Cue::screenshot(10, shot("ending")),
         Cue::input(2, ShellInput::Quit),
     ];
     let config = WindowConfig {
@@ -286,6 +307,24 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
         panel_fraction(&hud, (0.2, 0.8), (0.2, 0.8)) < 0.05,
         "the HUD has no panel"
     );
+
+    // The editor hook and the ending: a panel with an accent heading each; the won level is
+    // in the progress save.
+    for (name, img) in [
+        ("editor", open(&shot("editor"))),
+        ("ending", open(&shot("ending"))),
+    ] {
+        let panel = panel_fraction(&img, menu_box.0, (0.3, 0.7));
+        assert!(panel > 0.3, "the {name} panel: {panel:.2}");
+        let heading = accent_pixels(&img, (0.25, 0.75), (0.1, 0.5));
+        assert!(
+            heading > 150,
+            "{heading} accent pixels of the {name} heading"
+        );
+    }
+    let progress = Progress::load(&dirs.progress_file());
+    assert_eq!(progress.warning, None);
+    assert!(progress.value.is_finished("room"), "{:?}", progress.value);
 
     // A changed setting survives a restart: on disk, and loaded by a fresh shell.
     let saved = Settings::load(&dirs.settings_file(), &candela::app::ActionSet::standard());

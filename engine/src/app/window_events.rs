@@ -94,13 +94,11 @@ impl ApplicationHandler for WindowApp<'_> {
                         .key(code, event.state.is_pressed());
                 }
             }
-            WindowEvent::MouseInput { state, button, .. } => {
-                if !egui_used || !state.is_pressed() {
-                    running
-                        .engine
-                        .input_mut()
-                        .mouse_button(button, state.is_pressed());
-                }
+            WindowEvent::MouseInput { state, button, .. } if !egui_used || !state.is_pressed() => {
+                running
+                    .engine
+                    .input_mut()
+                    .mouse_button(button, state.is_pressed());
             }
             WindowEvent::MouseWheel { delta, .. } if !egui_used => {
                 let lines = match delta {

@@ -38,7 +38,7 @@ pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Opti
         ui.vertical_centered(|ui| ui.label(theme::heading("Settings")));
         ui.add_space(4.0);
         egui::ScrollArea::vertical()
-            .max_height(max_height - 150.0)
+            .max_height(max_height - 120.0)
             .show(ui, |ui| {
                 ui.columns(2, |cols| {
                     general(&mut cols[0], editor);
@@ -74,7 +74,7 @@ fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
     let percent = |v: f64, _: std::ops::RangeInclusive<usize>| format!("{:.0} %", v * 100.0);
     egui::Grid::new("shell_settings_general")
         .num_columns(2)
-        .spacing([18.0, 10.0])
+        .spacing([18.0, 7.0])
         .show(ui, |ui| {
             section_row(ui, "Picture");
             row(ui, "Resolution scale", |ui| {
