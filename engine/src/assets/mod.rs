@@ -48,6 +48,8 @@ mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_body;
+mod level_character;
+pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
 pub use level_body::{BodyEntry, ShapeEntry};
 mod level_gameplay;
 pub use level_gameplay::{
