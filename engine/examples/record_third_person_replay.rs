@@ -40,14 +40,39 @@ fn main() -> anyhow::Result<()> {
     );
     let legs = [
         // Look 0.15 rad left, then back (2.5 mrad per count in the test's game).
-        Leg { steps: 15, forward: false, run: false, look_x: -4 },
-        Leg { steps: 15, forward: false, run: false, look_x: 4 },
+        Leg {
+            steps: 15,
+            forward: false,
+            run: false,
+            look_x: -4,
+        },
+        Leg {
+            steps: 15,
+            forward: false,
+            run: false,
+            look_x: 4,
+        },
         // Walk 5.5 s at 2 m/s: from z = 6 through the doorway (z = 0) to z ≈ −5.
-        Leg { steps: 330, forward: true, run: false, look_x: 0 },
+        Leg {
+            steps: 330,
+            forward: true,
+            run: false,
+            look_x: 0,
+        },
         // Run 1 s at 5 m/s.
-        Leg { steps: 60, forward: true, run: true, look_x: 0 },
+        Leg {
+            steps: 60,
+            forward: true,
+            run: true,
+            look_x: 0,
+        },
         // Stand 2 s: the camera eases back out.
-        Leg { steps: 120, forward: false, run: false, look_x: 0 },
+        Leg {
+            steps: 120,
+            forward: false,
+            run: false,
+            look_x: 0,
+        },
     ];
     let mut recorder = Recorder::new(GAME, LEVEL_ID, level_hash(&level)?, 60.0, &set);
     let mut held_before = 0u64;

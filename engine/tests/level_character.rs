@@ -35,7 +35,12 @@ fn the_courtyard_loads_its_fox_with_resolved_states() -> anyhow::Result<()> {
     assert_eq!(level.characters.len(), 1);
     let hero = &level.characters[0];
     assert_eq!(hero.name, "hero");
-    let names: Vec<&str> = hero.machine.states().iter().map(|s| s.name.as_str()).collect();
+    let names: Vec<&str> = hero
+        .machine
+        .states()
+        .iter()
+        .map(|s| s.name.as_str())
+        .collect();
     assert_eq!(names, ["jump", "fall", "idle", "walk", "run"]);
     let clip_of = |state: &str| {
         let s = hero.machine.states().iter().find(|s| s.name == state);
@@ -79,8 +84,15 @@ fn spawning_makes_a_body_and_a_drawn_child_that_stand_idle() -> anyhow::Result<(
         .physics()
         .pose(hero.body)
         .ok_or_else(|| anyhow::anyhow!("no body"))?;
-    assert!((centre - glam::Vec3::new(0.0, 0.45, 6.0)).length() < 0.05, "{centre}");
-    let feet = world.get::<&GlobalTransform>(hero.visual)?.0.w_axis.truncate();
+    assert!(
+        (centre - glam::Vec3::new(0.0, 0.45, 6.0)).length() < 0.05,
+        "{centre}"
+    );
+    let feet = world
+        .get::<&GlobalTransform>(hero.visual)?
+        .0
+        .w_axis
+        .truncate();
     assert!(feet.y.abs() < 0.05 && (feet.z - 6.0).abs() < 0.05, "{feet}");
     drop(anim);
     let _ = engine.shutdown();
@@ -90,7 +102,8 @@ fn spawning_makes_a_body_and_a_drawn_child_that_stand_idle() -> anyhow::Result<(
 /// A level in a temporary folder whose character is `character` (RON), with the glTF
 /// samples as its asset root; returns the load result and the level's path.
 fn load_with(name: &str, character: &str) -> (Result<PlayableLevel, AssetError>, PathBuf) {
-    let dir = std::env::temp_dir().join(format!("candela_level_char_{name}_{}", std::process::id()));
+    let dir =
+        std::env::temp_dir().join(format!("candela_level_char_{name}_{}", std::process::id()));
     let _ = std::fs::create_dir_all(&dir);
     let path = dir.join("level.ron");
     let text = format!(
@@ -142,15 +155,30 @@ fn a_clip_the_model_lacks_is_an_error_listing_its_clips() {
 fn bad_numbers_are_errors_naming_the_field() {
     let cases = [
         ("scale", fox("scale: -1,", IDLE), "scale"),
-        ("capsule", fox("capsule: (height: 0.5, radius: 0.4),", IDLE), "capsule.radius"),
-        ("walk", fox("controller: (walk_speed: 0),", IDLE), "controller.walk_speed"),
+        (
+            "capsule",
+            fox("capsule: (height: 0.5, radius: 0.4),", IDLE),
+            "capsule.radius",
+        ),
+        (
+            "walk",
+            fox("controller: (walk_speed: 0),", IDLE),
+            "controller.walk_speed",
+        ),
         (
             "speeds",
-            fox("", "(name: \"idle\", clip: \"Survey\", min_speed_mps: 2, max_speed_mps: 1)"),
+            fox(
+                "",
+                "(name: \"idle\", clip: \"Survey\", min_speed_mps: 2, max_speed_mps: 1)",
+            ),
             "max_speed_mps",
         ),
         ("states", fox("", ""), "at least one animation state"),
-        ("hysteresis", fox("hysteresis_mps: -1,", IDLE), "hysteresis_mps"),
+        (
+            "hysteresis",
+            fox("hysteresis_mps: -1,", IDLE),
+            "hysteresis_mps",
+        ),
     ];
     for (name, character, field) in cases {
         let (message, _) = error_of(name, &character);

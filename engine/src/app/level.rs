@@ -164,16 +164,11 @@ impl Engine {
         let bundle = character_bundle(centre, c.height, c.radius, c.controller)
             .map_err(|e| format!("character {:?}: {e}", c.name))?;
         let body = self.world.spawn(bundle);
-        let anim = CharacterAnimation {
-            visual: body,
-            heading_rad: c.yaw_rad,
-            model_yaw_rad: c.model_yaw_rad,
-            machine: c.machine.clone(),
-            last_change: None,
-            last_locomotion: Default::default(),
-        };
+        let anim = CharacterAnimation::new(body, c.yaw_rad, c.model_yaw_rad, c.machine.clone());
+        // The controller keeps `skin` metres between the capsule and the ground: the feet go
+        // that much below the capsule's bottom.
         let local = Transform {
-            translation: Vec3::Y * (-c.height * 0.5),
+            translation: Vec3::Y * (-c.height * 0.5 - c.controller.skin),
             rotation: anim.visual_rotation(),
             scale: Vec3::splat(c.scale),
         };

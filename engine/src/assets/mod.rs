@@ -49,8 +49,8 @@ pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_body;
 mod level_character;
-pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
 pub use level_body::{BodyEntry, ShapeEntry};
+pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
 mod level_gameplay;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry, LaserEntry,

@@ -110,8 +110,16 @@ fn load_one(
         (&mut controller.run_speed, c.run_speed, "run_speed"),
         (&mut controller.jump_speed, c.jump_speed, "jump_speed"),
         (&mut controller.gravity, c.gravity, "gravity"),
-        (&mut controller.max_step_height, c.max_step_height, "max_step_height"),
-        (&mut controller.max_slope_deg, c.max_slope_deg, "max_slope_deg"),
+        (
+            &mut controller.max_step_height,
+            c.max_step_height,
+            "max_step_height",
+        ),
+        (
+            &mut controller.max_slope_deg,
+            c.max_slope_deg,
+            "max_slope_deg",
+        ),
     ] {
         if let Some(v) = value {
             *field = positive(&format!("controller.{name}"), v)?;

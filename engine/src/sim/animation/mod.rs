@@ -33,6 +33,7 @@ mod skinned_entities;
 mod state_machine;
 
 pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
+pub use character_anim::{CharacterAnimation, animate_characters, heading_direction};
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
     Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,
@@ -46,7 +47,6 @@ pub use player::{AnimationPlayer, FiredEvent, PlayMode, Playback};
 pub use pose::{NodeRest, NodeTree, Pose};
 pub use sample::{sample_channel, slerp};
 pub use skin::{Influence, Skin, SkinnedVertices, joint_matrices, skin_vertices};
-pub use character_anim::{CharacterAnimation, animate_characters, heading_direction};
 pub use skinned_entities::{SkinnedAnimator, deform_skinned, tick_skinned};
 pub use state_machine::{
     AnimState, Contact, Locomotion, StateChange, StateCondition, StateMachine, StateMachineError,
