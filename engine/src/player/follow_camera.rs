@@ -200,3 +200,58 @@ fn first_hit(
     }
     None
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const DT: f32 = 1.0 / 60.0;
+
+    #[test]
+    fn pulls_in_fast_and_eases_out_slowly_in_bounded_steps() {
+        let camera = FollowCamera::default();
+        let (fast, slow) = (camera.pull_in_mps * DT, camera.ease_out_mps * DT);
+        let mut d = 4.5;
+        let mut steps_in = 0;
+        while d > 1.0 {
+            let next = ease_distance(d, 1.0, camera.pull_in_mps, camera.ease_out_mps, DT);
+            assert!(d - next <= fast + 1e-6 && next < d, "{d} → {next}");
+            d = next;
+            steps_in += 1;
+        }
+        assert_eq!(d, 1.0, "lands on the target, no overshoot");
+        // 3.5 m at 20 m/s: 0.175 s, 11 steps of a third of a metre at most.
+        assert_eq!(steps_in, (3.5 / fast).ceil() as usize);
+        let mut steps_out = 0;
+        while d < 4.5 {
+            let next = ease_distance(d, 4.5, camera.pull_in_mps, camera.ease_out_mps, DT);
+            assert!(next - d <= slow + 1e-6 && next > d, "{d} → {next}");
+            d = next;
+            steps_out += 1;
+        }
+        assert_eq!(d, 4.5);
+        assert!(
+            steps_out > 5 * steps_in,
+            "{steps_out} steps out, {steps_in} in"
+        );
+        assert_eq!(ease_distance(2.0, f32::NAN, 20.0, 2.5, DT), 2.0);
+    }
+
+    #[test]
+    fn the_boom_points_behind_and_above_for_a_downward_pitch() {
+        let camera = FollowCamera {
+            yaw_rad: std::f32::consts::FRAC_PI_2,
+            pitch_rad: -0.5,
+            ..FollowCamera::default()
+        };
+        let rotation = camera.rotation();
+        let forward = rotation * Vec3::NEG_Z;
+        // Yawed a quarter turn right, the camera looks along +X and down.
+        assert!(
+            forward.x > 0.8 && forward.y < -0.4 && forward.z.abs() < 1e-5,
+            "{forward}"
+        );
+        let back = rotation * Vec3::Z;
+        assert!(back.y > 0.4 && back.x < -0.8, "{back}");
+    }
+}

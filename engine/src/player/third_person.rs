@@ -88,6 +88,47 @@ pub fn turn_towards(from: f32, to: f32, max_step: f32) -> f32 {
         delta -= TAU;
     }
     let turned = from + delta.clamp(-max_step, max_step);
+    if turned > -PI && turned <= PI {
+        return turned;
+    }
     let wrapped = (turned + PI).rem_euclid(TAU) - PI;
-    if wrapped == -PI { PI } else { wrapped }
+    if wrapped <= -PI {
+        wrapped + TAU
+    } else {
+        wrapped
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn forward_is_where_the_camera_looks_and_right_is_to_its_right() {
+        let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-6;
+        assert!(close(camera_relative_move(Vec2::Y, 0.0), Vec3::NEG_Z));
+        assert!(close(camera_relative_move(Vec2::X, 0.0), Vec3::X));
+        let quarter = std::f32::consts::FRAC_PI_2;
+        assert!(close(camera_relative_move(Vec2::Y, quarter), Vec3::X));
+        assert!(close(camera_relative_move(Vec2::X, quarter), Vec3::Z));
+        let diagonal = camera_relative_move(Vec2::ONE, 0.0);
+        assert!((diagonal.length() - 1.0).abs() < 1e-6, "clamped to 1");
+        assert_eq!(camera_relative_move(Vec2::NAN, 0.0), Vec3::ZERO);
+    }
+
+    #[test]
+    fn turning_takes_the_short_way_and_never_overshoots() {
+        assert_eq!(turn_towards(0.0, 1.0, 0.25), 0.25);
+        assert_eq!(turn_towards(0.0, 0.1, 0.25), 0.1);
+        // From 170° to −170° is 20° through 180°, not 340° back through 0.
+        let from = 170f32.to_radians();
+        let to = -170f32.to_radians();
+        let turned = turn_towards(from, to, 0.1);
+        assert!((turned - (from + 0.1)).abs() < 1e-6, "{turned}");
+        // 170° + 0.3 rad is past 180°: it comes back wrapped, just above −180°.
+        let wrapped = turn_towards(from, to, 0.3);
+        assert!((wrapped - (from + 0.3 - TAU)).abs() < 1e-5, "{wrapped}");
+        let arrived = turn_towards(from, to, 1.0);
+        assert!((arrived - to).abs() < 1e-5, "{arrived}");
+    }
 }

@@ -173,7 +173,7 @@ impl StateMachine {
         dt_seconds: f64,
     ) -> Option<StateChange> {
         let next = self.choose(m);
-        let change = (self.current != Some(next)).then(|| StateChange {
+        let change = (self.current != Some(next)).then_some(StateChange {
             from: self.current,
             to: next,
         });
