@@ -19,7 +19,7 @@ use crate::audio::{PlayOptions, sync_emitters};
 use crate::commit::{Commit, Motion};
 use crate::ecs::propagate_transforms;
 use crate::scene::{SceneHeader, SceneWrite};
-use crate::sim::animation::{deform_skinned, tick_skinned};
+use crate::sim::animation::{animate_characters, deform_skinned, tick_skinned};
 use crate::sim::triggers::Effect;
 
 /// What the upkeep phase leaves for sealing.
@@ -125,14 +125,15 @@ impl Engine {
         steps
     }
 
-    /// One fixed step: game rules → physics → skinned animation players → level logic and its
-    /// effects → level events to the game → audio.
+    /// One fixed step: game rules → physics → characters' animation states → skinned
+    /// animation players → level logic and its effects → level events to the game → audio.
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();
         game.fixed_step(&mut self.step_view(index));
         self.carry_out_commands();
         self.physics.step(&mut self.world, dt);
+        animate_characters(&mut self.world, dt);
         tick_skinned(&mut self.world, dt);
         let ended_before = self.logic.outcome().is_some();
         let effects = self

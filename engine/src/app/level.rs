@@ -2,22 +2,26 @@
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
 //! physics components when the level gives it a body, level materials, the environment, and
 //! the level's gameplay (clips, volumes, lasers and their visible beams, rules; light groups
-//! that start off; sound emitters on instances and the music).
+//! that start off; sound emitters on instances and the music), and its characters (a capsule
+//! body with the controller and the animation state machine, and a child entity drawing the
+//! skinned model).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
 
 use std::collections::HashMap;
 
+use glam::Vec3;
 use hecs::Entity;
 
 use super::engine::{Engine, Environment};
 use super::waves::Waves;
 use crate::assets::SceneDesc;
 use crate::audio::{Bus, SoundEmitter};
-use crate::ecs::{Deformable, LightGroup, ModelHandle, Renderable, Static, Transform};
-use crate::level::PlayableLevel;
-use crate::sim::physics::SensorContacts;
+use crate::ecs::{Deformable, LightGroup, ModelHandle, Parent, Renderable, Static, Transform};
+use crate::level::{PlayableCharacter, PlayableLevel};
+use crate::sim::animation::{CharacterAnimation, SkinnedAnimator};
+use crate::sim::physics::{SensorContacts, character_bundle};
 use crate::sim::triggers::{LevelLogic, beam_model, spawn_beam_pool};
 
 /// What [`Engine::spawn_level`] created.
@@ -29,6 +33,19 @@ pub struct SpawnedLevel {
     pub entities: Vec<Entity>,
     /// Entities of the instances the level names.
     pub by_name: HashMap<String, Entity>,
+    /// The level's characters by name.
+    pub characters: HashMap<String, SpawnedCharacter>,
+}
+
+/// The two entities of a level character.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SpawnedCharacter {
+    /// The capsule the controller moves: `Transform` (the capsule's centre), kinematic body,
+    /// collider, `CharacterController`, `CharacterInput`, `CharacterState`,
+    /// `CharacterAnimation`.
+    pub body: Entity,
+    /// Its drawn model, a child of the body: `Renderable`, `SkinnedAnimator`, `Deformable`.
+    pub visual: Entity,
 }
 
 impl Environment {
@@ -46,7 +63,7 @@ impl Environment {
 impl Engine {
     /// Registers the level's models and materials with the upkeep and spawns one entity per
     /// instance (with its body, if it has one); sets the environment from the level; starts
-    /// its gameplay.
+    /// its gameplay; spawns its characters.
     pub fn spawn_level(&mut self, level: &PlayableLevel) -> SpawnedLevel {
         let desc = &level.scene;
         self.environment = Environment::of(desc);
@@ -102,6 +119,16 @@ impl Engine {
             }
             spawned.entities.push(entity);
         }
+        for character in &level.characters {
+            match self.spawn_character(character) {
+                Ok(spawned_character) => {
+                    spawned
+                        .characters
+                        .insert(character.name.clone(), spawned_character);
+                }
+                Err(message) => log::error!("{}: {message}", desc.source.display()),
+            }
+        }
         for &group in &level.gameplay.lights_off {
             self.upkeep.set_light_group(group, false);
         }
@@ -132,5 +159,36 @@ impl Engine {
             }
         }
         spawned
+    }
+
+    /// Spawns a character's body (capsule centre above the spawn point) and its drawn model.
+    /// Loading checked everything, so an error here is a broken invariant, reported as text.
+    fn spawn_character(&mut self, c: &PlayableCharacter) -> Result<SpawnedCharacter, String> {
+        let (animator, deformable) = SkinnedAnimator::single(c.animated.clone(), &c.model)
+            .ok_or_else(|| format!("character {:?}: not a single skinned mesh", c.name))?;
+        let model = self.upkeep.add_model(&c.model);
+        let centre = c.spawn_feet + Vec3::Y * (c.height * 0.5);
+        let bundle = character_bundle(centre, c.height, c.radius, c.controller)
+            .map_err(|e| format!("character {:?}: {e}", c.name))?;
+        let body = self.world.spawn(bundle);
+        let anim = CharacterAnimation::new(body, c.yaw_rad, c.model_yaw_rad, c.machine.clone());
+        // The controller keeps `skin` metres between the capsule and the ground: the feet go
+        // that much below the capsule's bottom.
+        let local = Transform {
+            translation: Vec3::Y * (-c.height * 0.5 - c.controller.skin),
+            rotation: anim.visual_rotation(),
+            scale: Vec3::splat(c.scale),
+        };
+        let renderable = Renderable {
+            model,
+            material_override: None,
+        };
+        let visual = self
+            .world
+            .spawn((local, Parent(body), renderable, animator, deformable));
+        let _ = self
+            .world
+            .insert_one(body, CharacterAnimation { visual, ..anim });
+        Ok(SpawnedCharacter { body, visual })
     }
 }

@@ -62,7 +62,7 @@ pub use game::{Command, Commands, FrameInput, Game, LevelEvent, SetupError, Step
 pub use gamepad::{DEFAULT_DEAD_ZONE, Gamepads, apply_dead_zone, pad_button};
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
-pub use level::SpawnedLevel;
+pub use level::{SpawnedCharacter, SpawnedLevel};
 pub use monkey::Monkey;
 pub use pad::{PadAxis, PadButton};
 pub use phase::{FrameReport, Phase, PhaseTimes};

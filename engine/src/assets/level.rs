@@ -66,6 +66,9 @@ pub struct Level {
     /// Sounds, animations, trigger volumes, lasers and rules (see `level_gameplay`).
     #[serde(default, skip_serializing_if = "super::GameplayEntry::is_empty")]
     pub gameplay: super::GameplayEntry,
+    /// Skinned characters with a capsule body and animation states (see `level_character`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub characters: Vec<super::CharacterEntry>,
 }
 
 /// A model file under a name.

@@ -48,7 +48,9 @@ mod scene_desc;
 pub use scene_desc::{SceneDesc, SceneInstance};
 
 mod level_body;
+mod level_character;
 pub use level_body::{BodyEntry, ShapeEntry};
+pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
 mod level_gameplay;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry,

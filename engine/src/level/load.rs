@@ -8,6 +8,7 @@
 use std::path::Path;
 
 use super::body::{InstanceBody, resolve_body};
+use super::character::{PlayableCharacter, load_characters};
 use super::gameplay_check::plan_gameplay;
 use crate::assets::{
     AssetError, AssetResult, AssetRoot, Level, Needs, SceneDesc, scene_from_level,
@@ -23,6 +24,8 @@ pub struct PlayableLevel {
     pub bodies: Vec<Option<InstanceBody>>,
     /// Sounds, clips, trigger volumes, lasers and rules, by index.
     pub gameplay: GameplayPlan,
+    /// Skinned characters with their bodies and animation states (`characters` in the file).
+    pub characters: Vec<PlayableCharacter>,
 }
 
 impl PlayableLevel {
@@ -32,12 +35,14 @@ impl PlayableLevel {
             bodies: vec![None; scene.instances.len()],
             scene,
             gameplay: GameplayPlan::default(),
+            characters: Vec::new(),
         }
     }
 }
 
 /// Reads `level_path` and loads everything it names from `root`: models (in parallel),
-/// bodies, gameplay (sounds decoded); checks `needs`.
+/// bodies, gameplay (sounds decoded), characters (skinned models, animation states); checks
+/// `needs`.
 pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<PlayableLevel> {
     let level = Level::read(level_path)?;
     playable_from_level(level_path, &level, root)
@@ -69,10 +74,12 @@ pub fn playable_from_level(
     }
     let gameplay = plan_gameplay(level_path, level, root)?;
     check_needs(level_path, level, &scene, &gameplay)?;
+    let characters = load_characters(level_path, level, root)?;
     Ok(PlayableLevel {
         scene,
         bodies,
         gameplay,
+        characters,
     })
 }
 

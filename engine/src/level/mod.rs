@@ -8,9 +8,11 @@
 //! Must not: spawn entities, run systems or touch the GPU.
 
 mod body;
+mod character;
 mod gameplay_check;
 mod load;
 
 pub use body::{InstanceBody, resolve_body};
+pub use character::{PlayableCharacter, load_characters};
 pub use gameplay_check::plan_gameplay;
 pub use load::{PlayableLevel, load_level, playable_from_level};

@@ -301,6 +301,7 @@ pub fn demo_level() -> Level {
             ..Default::default()
         }),
         gameplay: Default::default(),
+        characters: Vec::new(),
     }
 }
 

@@ -4,16 +4,18 @@
 //! Flow: `gltf_anim` (with `gltf_anim_mesh`, `gltf_anim_clips`) loads an [`AnimatedModel`],
 //! or `authored` reads RON clips → [`Clip`]s (`clip`) are sampled (`sample`) into a
 //! [`Pose`] of local transforms and weights (`pose`), driven by an [`AnimationPlayer`]
-//! (`player`: play, pause, loop, ping-pong, reverse, events, crossfades) → `pose` gives world
-//! matrices → `deform` morphs (`morph`) and skins (`skin`) vertices, as world-space positions
+//! (`player`: play, pause, loop, ping-pong, reverse, events, crossfades; for characters
+//! `state_machine` picks the clip from how the body moves, `character_anim` runs it per body)
+//! → `pose` gives world matrices → `deform` morphs (`morph`) and skins (`skin`) vertices, as world-space positions
 //! or as mesh-space `Vec<Vec3>` for the deforming-mesh refit in `accel::Upkeep::deform`.
 //!
 //! Runs on the main thread (game update). Must not: touch the renderer or BVHs; only
-//! `entities` (clips that move level instances) and `skinned_entities` (characters) touch
-//! the ECS. Units: seconds (float64 clocks, float32
-//! key times as glTF stores them), metres, radians; right-handed, +Y up.
+//! `entities` (clips that move level instances), `skinned_entities` (characters) and
+//! `character_anim` (a character's body and its drawn model) touch the ECS.
+//! Units: seconds (float64 clocks, float32 key times as glTF stores them), metres, radians; right-handed, +Y up.
 
 mod authored;
+mod character_anim;
 mod clip;
 mod deform;
 mod entities;
@@ -28,8 +30,10 @@ mod pose;
 mod sample;
 mod skin;
 mod skinned_entities;
+mod state_machine;
 
 pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
+pub use character_anim::{CharacterAnimation, animate_characters, heading_direction};
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
     Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,
@@ -44,3 +48,7 @@ pub use pose::{NodeRest, NodeTree, Pose};
 pub use sample::{sample_channel, slerp};
 pub use skin::{Influence, Skin, SkinnedVertices, joint_matrices, skin_vertices};
 pub use skinned_entities::{SkinnedAnimator, deform_skinned, tick_skinned};
+pub use state_machine::{
+    AnimState, Contact, Locomotion, StateChange, StateCondition, StateMachine, StateMachineError,
+    rate,
+};

@@ -196,6 +196,11 @@ impl AnimationPlayer {
         self.current.as_ref()
     }
 
+    /// The clip fading out during a crossfade (its weight is `1 − current_weight()`).
+    pub fn fading_out(&self) -> Option<&Playback> {
+        self.fading_out.as_ref()
+    }
+
     /// The playing clip, to pause, resume, reverse, seek or change speed.
     pub fn current_mut(&mut self) -> Option<&mut Playback> {
         self.current.as_mut()
