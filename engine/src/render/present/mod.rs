@@ -2,12 +2,16 @@
 //! the egui overlay into the window's frame, screenshots of what the window shows.
 
 mod compose;
+mod cpu_compose;
+mod cpu_overlay;
 mod overlay;
 mod presenter;
 mod readback;
 mod surface;
 
 pub use compose::{FrameComposer, FrameTarget};
+pub use cpu_compose::compose_host_film;
+pub use cpu_overlay::CpuOverlay;
 pub use overlay::{OverlayPainter, TexturesToFree};
 pub use presenter::{Presented, Presenter};
 pub use readback::Screenshot;
