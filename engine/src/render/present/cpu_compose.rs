@@ -90,13 +90,18 @@ pub fn compose_host_film(
     let filmic = tonemap.filmic;
     let table = srgb_table();
     let fw = film.width as usize;
+    // Each film pixel made finite once (the window has several pixels per film pixel).
+    let texels: Vec<Vec3> = film.mean[..fw * film.height as usize]
+        .par_iter()
+        .map(|&c| finite(c))
+        .collect();
     out.par_chunks_mut(w * 4)
         .zip(rows.par_iter())
         .for_each(|(line, &(y0, y1, ty))| {
-            let (top, bottom) = (&film.mean[y0 * fw..][..fw], &film.mean[y1 * fw..][..fw]);
+            let (top, bottom) = (&texels[y0 * fw..][..fw], &texels[y1 * fw..][..fw]);
             for (px, &(x0, x1, tx)) in line.chunks_exact_mut(4).zip(&columns) {
-                let upper = finite(top[x0]).lerp(finite(top[x1]), tx);
-                let lower = finite(bottom[x0]).lerp(finite(bottom[x1]), tx);
+                let upper = top[x0].lerp(top[x1], tx);
+                let lower = bottom[x0].lerp(bottom[x1], tx);
                 let mut c = upper.lerp(lower, ty) * exposure;
                 if filmic {
                     c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);

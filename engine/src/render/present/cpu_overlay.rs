@@ -3,9 +3,10 @@
 //! vertex colour × texture (both premultiplied, gamma-encoded, interpolated in gamma space),
 //! blended `dst = src + dst · (1 − src.a)`, clipped to the primitive's scissor rectangle.
 //!
-//! Why: on lavapipe the overlay's render pass cost 58 ms of a 61 ms `queue.present` on the
-//! 2-core machine under load (docs/PERFORMANCE.md), the overlay's few thousand small
-//! triangles take about a millisecond here.
+//! Why: on lavapipe the overlay's render pass cost about 59 ms of a 62 ms `queue.present` on
+//! the 2-core machine under load; rasterised here (row spans, one source value for untextured
+//! one-colour triangles) the stats overlay took 6–17 ms on the same loaded machine
+//! (docs/PERFORMANCE.md, "Presenting the CPU tracer's film").
 //!
 //! Owns: [`CpuOverlay`]: CPU copies of egui's textures (font atlas, images) kept in step with
 //! every overlay's texture changes, and the rasteriser. Render thread. Must not: run egui

@@ -1,5 +1,6 @@
 //! Presenting in a window (render thread only): the surface, composing the tonemapped film and
-//! the egui overlay into the window's frame, screenshots of what the window shows.
+//! the egui overlay into the window's frame (by the present shader, or for the CPU tracer's
+//! film on the CPU: `cpu_compose`, `cpu_overlay`), screenshots of what the window shows.
 
 mod compose;
 mod cpu_compose;
