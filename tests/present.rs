@@ -10,13 +10,15 @@
 //!   memory (the CPU tracer's, uploaded) give the same bytes.
 //! * A film smaller than the window (workload scaling lowered the resolution) is upscaled
 //!   bilinearly with clamped edges: every pixel within 1 of 255 of a CPU bilinear reference.
+//! * The CPU compose of a host film (what the window shows of the CPU tracer's film) matches
+//!   the present pass within 1 of 255.
 //! * The egui overlay changes the frame inside the overlay's own rectangle and nowhere else.
 
 use candela::commit::Overlay;
 use candela::render::FilmView;
 use candela::render::film::{Film, TonemapSettings, linear_to_srgb8};
 use candela::render::gpu::GpuContext;
-use candela::render::present::{FrameComposer, Screenshot};
+use candela::render::present::{CpuOverlay, FrameComposer, Screenshot, compose_host_film};
 use glam::Vec3;
 use wgpu::util::DeviceExt;
 
@@ -168,6 +170,35 @@ fn a_smaller_film_is_upscaled_bilinearly_with_clamped_edges() {
     }
 }
 
+#[test]
+fn the_cpu_compose_of_a_host_film_matches_the_present_pass() {
+    // What the window shows of the CPU tracer's film (composed on the CPU and copied into the
+    // surface, `render/present/cpu_compose.rs`) against the present shader's offscreen frame:
+    // an upscaled film with bad values, exposure and the filmic curve. Tolerance: 1 of 255,
+    // the shader's own rounding (see the first test) plus the CPU's sRGB table (one step).
+    let film = test_film(40, 23);
+    for filmic in [false, true] {
+        let tonemap = TonemapSettings {
+            exposure_ev: 0.7,
+            filmic,
+        };
+        let size = (97, 61);
+        let mut composer = composer(wgpu::TextureFormat::Rgba8Unorm);
+        let shot = composer
+            .compose_offscreen(Some(FilmView::Host(&film)), size, &tonemap, None)
+            .expect("compose");
+        let cpu = compose_host_film(&film, size, &tonemap, false);
+        let (worst, _) = compare(&shot, |x, y| {
+            let i = ((y * size.0 + x) * 4) as usize;
+            [cpu[i], cpu[i + 1], cpu[i + 2]]
+        });
+        assert!(
+            worst <= 1,
+            "filmic {filmic}: CPU compose differs by up to {worst}"
+        );
+    }
+}
+
 /// A stats-like egui window, run until its layout settles; the overlay carries every
 /// texture change of those passes.
 fn overlay(size: (u32, u32)) -> (Overlay, egui::Rect) {
@@ -259,4 +290,74 @@ fn the_overlay_draws_over_the_frame_inside_its_rectangle_only() {
         "the overlay covers its rectangle ({inside_changed} of {area} pixels changed)"
     );
     assert_eq!(outside_changed, 0, "pixels outside the overlay changed");
+}
+
+#[test]
+fn the_cpu_overlay_draws_like_the_device_painter() {
+    // The overlay rasterised on the CPU (the CPU tracer's present path, gamma-space surface)
+    // against egui-wgpu on the device, over the same composed frame. The two sample the font
+    // atlas with different bilinear arithmetic and round differently, so single pixels may
+    // differ by a few steps on glyph edges; the mean difference over the overlay's pixels
+    // must stay below half a step, and no pixel may differ by more than 16 of 255 (a glyph
+    // edge pixel taken by one rasteriser and not the other would differ by far more).
+    let size = (240u32, 160u32);
+    let mut film = Film::new(size.0, size.1);
+    film.mean.fill(Vec3::new(0.2, 0.4, 0.1));
+    let tonemap = TonemapSettings::default();
+    let mut composer = composer(wgpu::TextureFormat::Rgba8Unorm);
+    let (mut gpu_overlay, bounds) = overlay(size);
+    let cpu_overlay = gpu_overlay.clone();
+    let gpu = composer
+        .compose_offscreen(
+            Some(FilmView::Host(&film)),
+            size,
+            &tonemap,
+            Some(&mut gpu_overlay),
+        )
+        .expect("compose with overlay");
+    let mut painter = CpuOverlay::default();
+    painter.apply(&cpu_overlay.textures_delta);
+    let mut cpu = compose_host_film(&film, size, &tonemap, false);
+    let plain = cpu.clone();
+    painter.draw(&mut cpu, size, false, &cpu_overlay);
+    let (mut sum, mut count, mut worst, mut changed) = (0u64, 0u64, 0u8, 0usize);
+    for y in 0..size.1 {
+        for x in 0..size.0 {
+            let i = ((y * size.0 + x) * 4) as usize;
+            let got = gpu.rgb(x, y).expect("inside");
+            if cpu[i..i + 3] != plain[i..i + 3] {
+                changed += 1;
+            }
+            if !bounds
+                .expand(1.0)
+                .contains(egui::pos2(x as f32 + 0.5, y as f32 + 0.5))
+            {
+                assert_eq!(
+                    &cpu[i..i + 3],
+                    &plain[i..i + 3],
+                    "CPU overlay outside at ({x}, {y})"
+                );
+                continue;
+            }
+            for c in 0..3 {
+                let d = got[c].abs_diff(cpu[i + c]);
+                worst = worst.max(d);
+                sum += d as u64;
+                count += 1;
+            }
+        }
+    }
+    eprintln!(
+        "CPU overlay against the device: mean {} worst {worst}",
+        sum as f64 / count as f64
+    );
+    assert!(
+        changed as f32 > 0.5 * bounds.width() * bounds.height(),
+        "{changed} pixels drawn"
+    );
+    let mean = sum as f64 / count as f64;
+    assert!(
+        mean < 0.5 && worst <= 16,
+        "mean difference {mean}, worst {worst}"
+    );
 }

@@ -375,10 +375,13 @@ fn planned_beam(
     error: &impl Fn(String) -> AssetError,
 ) -> AssetResult<PlannedBeam> {
     let color = Vec3::from(b.color);
-    if !(color.is_finite() && color.min_element() >= 0.0)
-        || !(b.strength.is_finite() && b.strength >= 0.0)
-        || !(b.radius.is_finite() && b.radius > 0.0)
-    {
+    let valid = color.is_finite()
+        && color.min_element() >= 0.0
+        && b.strength.is_finite()
+        && b.strength >= 0.0
+        && b.radius.is_finite()
+        && b.radius > 0.0;
+    if !valid {
         return Err(error(format!(
             "{user}: beam colour and strength must be finite and non-negative, its radius \
              positive (got colour {:?}, strength {}, radius {})",

@@ -243,6 +243,28 @@ impl FrameComposer {
         })
     }
 
+    /// Encodes `overlay` (if any) over `target`, keeping its content. Returns command buffers
+    /// to submit before `encoder`'s.
+    pub fn encode_overlay(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        target: &wgpu::TextureView,
+        size: (u32, u32),
+        overlay: Option<&Overlay>,
+    ) -> Vec<wgpu::CommandBuffer> {
+        match overlay {
+            Some(overlay) => self.overlay.encode(
+                &self.context.device,
+                &self.context.queue,
+                encoder,
+                target,
+                size,
+                overlay,
+            ),
+            None => Vec::new(),
+        }
+    }
+
     /// The buffer the present pass reads and the film's size: the tracer's own buffer, or the
     /// host film uploaded into ours.
     fn film_source(

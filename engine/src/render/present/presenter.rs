@@ -5,18 +5,31 @@
 //! (tonemap + upscale + overlay) into the offscreen frame and copy it to the surface — or,
 //! where the surface refuses copies, compose straight into it — present, and read the frame
 //! back when a screenshot was asked for. With the GPU tracer the film buffer is read in place
-//! (same device); the CPU tracer's film is uploaded.
+//! (same device); the CPU tracer's film is composed on the CPU (`cpu_compose.rs`) and copied
+//! straight into the surface, the overlay drawn over it on the CPU too (`cpu_overlay.rs`;
+//! by the device on an sRGB surface); a screenshot frame takes the shader path, whose
+//! offscreen frame it reads back.
 //! Must not: render, converge or touch the scene.
 
 use std::sync::Arc;
 use std::time::Instant;
 
 use super::compose::FrameComposer;
+use super::cpu_compose::compose_host_film;
+use super::cpu_overlay::CpuOverlay;
 use super::readback::{PendingReadback, Screenshot, encode_readback};
 use super::surface::{Acquired, PresentTarget, WindowSurface};
 use crate::commit::PresentRequest;
 use crate::render::gpu::GpuContext;
 use crate::render::tracer::{FilmView, RenderError};
+
+/// Whether a host film is composed on the CPU and copied into the surface (the default);
+/// `CANDELA_PRESENT_SHADER=1` sends it through the present shader instead (for comparing the
+/// two, docs/PERFORMANCE.md).
+fn host_blit_enabled() -> bool {
+    static ENABLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *ENABLED.get_or_init(|| std::env::var_os("CANDELA_PRESENT_SHADER").is_none_or(|v| v != "1"))
+}
 
 /// What presenting one frame did.
 #[derive(Clone, Debug, Default)]
@@ -33,6 +46,8 @@ pub struct Presented {
 pub struct Presenter {
     surface: WindowSurface,
     composer: FrameComposer,
+    /// egui's textures on the CPU, for the host-film path's overlay.
+    cpu_overlay: CpuOverlay,
 }
 
 impl Presenter {
@@ -41,7 +56,15 @@ impl Presenter {
     pub fn open(target: &PresentTarget) -> Result<(Self, Arc<GpuContext>), RenderError> {
         let (surface, context) = WindowSurface::open(target)?;
         let composer = FrameComposer::new(Arc::clone(&context), surface.format())?;
-        Ok((Self { surface, composer }, context))
+        let cpu_overlay = CpuOverlay::default();
+        Ok((
+            Self {
+                surface,
+                composer,
+                cpu_overlay,
+            },
+            context,
+        ))
     }
 
     /// Shows `film` as `request` asks.
@@ -52,6 +75,14 @@ impl Presenter {
     ) -> Result<Presented, RenderError> {
         let started = Instant::now();
         let context = Arc::clone(self.composer.context());
+        // The CPU copies of egui's textures follow every overlay, as the device's do.
+        let cpu_free = match &request.overlay {
+            Some(o) => {
+                self.cpu_overlay.apply(&o.textures_delta);
+                o.textures_delta.free.clone()
+            }
+            None => Default::default(),
+        };
         let to_free = request
             .overlay
             .as_mut()
@@ -66,6 +97,7 @@ impl Presenter {
         if let Some(textures) = to_free {
             self.composer.free_overlay_textures(textures);
         }
+        self.cpu_overlay.free(&cpu_free);
         presented.screenshot = match outcome? {
             Some(readback) => Some(readback.finish(&context.device)?),
             None => None,
@@ -81,17 +113,89 @@ impl Presenter {
         request: &PresentRequest,
         presented: &mut Presented,
     ) -> Result<Option<PendingReadback>, RenderError> {
+        let started = Instant::now();
         self.surface
             .update(context, request.surface_size, request.vsync);
         let size = self.surface.size();
         let surface_texture = match self.surface.acquire(context)? {
-            Acquired::Texture(t) => Some(t),
+            Acquired::Texture(t) => {
+                log::debug!(
+                    "present ms: acquire {:.2}",
+                    started.elapsed().as_secs_f64() * 1e3
+                );
+                Some(t)
+            }
             Acquired::Skip(reason) => {
                 presented.skipped = Some(reason);
                 None
             }
         };
         let overlay = request.overlay.as_ref();
+        if let (Some(FilmView::Host(host)), Some(texture)) = (film, &surface_texture)
+            && !request.screenshot
+            && self.surface.accepts_copies()
+            && host_blit_enabled()
+        {
+            // The CPU tracer's film: composed on the CPU and copied into the surface, the
+            // overlay drawn over it (see `cpu_compose.rs`).
+            let format = self.surface.format();
+            let bgra = matches!(
+                format,
+                wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
+            );
+            let mut pixels = compose_host_film(host, size, &request.tonemap, bgra);
+            log::debug!(
+                "present ms: cpu compose {:.2}",
+                started.elapsed().as_secs_f64() * 1e3
+            );
+            // A gamma-space surface: the overlay is drawn here as egui-wgpu would draw it;
+            // an sRGB one blends in linear space, which the device's painter does below.
+            let cpu_overlay = !format.is_srgb();
+            if let (true, Some(overlay)) = (cpu_overlay, overlay) {
+                self.cpu_overlay.draw(&mut pixels, size, bgra, overlay);
+                log::debug!(
+                    "present ms: cpu overlay {:.2}",
+                    started.elapsed().as_secs_f64() * 1e3
+                );
+            }
+            context.queue.write_texture(
+                texture.texture.as_image_copy(),
+                &pixels,
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(4 * size.0),
+                    rows_per_image: Some(size.1),
+                },
+                wgpu::Extent3d {
+                    width: size.0,
+                    height: size.1,
+                    depth_or_array_layers: 1,
+                },
+            );
+            let mut encoder = context.device.create_command_encoder(&Default::default());
+            let view = texture.texture.create_view(&Default::default());
+            let extra = if cpu_overlay {
+                Vec::new()
+            } else {
+                self.composer
+                    .encode_overlay(&mut encoder, &view, size, overlay)
+            };
+            let encoded = started.elapsed().as_secs_f64();
+            context
+                .queue
+                .submit(extra.into_iter().chain([encoder.finish()]));
+            let submitted = started.elapsed().as_secs_f64();
+            if let Some(texture) = surface_texture {
+                context.queue.present(texture);
+            }
+            log::debug!(
+                "present ms: host blit: acquire+compose+encode {:.2} submit {:.2} present {:.2}",
+                encoded * 1e3,
+                (submitted - encoded) * 1e3,
+                (started.elapsed().as_secs_f64() - submitted) * 1e3
+            );
+            return Ok(None);
+        }
         let direct = surface_texture.is_some() && !self.surface.accepts_copies();
         let mut encoder = context.device.create_command_encoder(&Default::default());
         let mut extra = Vec::new();
@@ -137,12 +241,20 @@ impl Presenter {
                 ));
             }
         }
+        let encoded = started.elapsed().as_secs_f64();
         context
             .queue
             .submit(extra.into_iter().chain([encoder.finish()]));
+        let submitted = started.elapsed().as_secs_f64();
         if let Some(texture) = surface_texture {
             context.queue.present(texture);
         }
+        log::debug!(
+            "present ms: acquire+encode {:.2} submit {:.2} present {:.2}",
+            encoded * 1e3,
+            (submitted - encoded) * 1e3,
+            (started.elapsed().as_secs_f64() - submitted) * 1e3
+        );
         Ok(readback)
     }
 }

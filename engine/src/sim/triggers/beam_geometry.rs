@@ -152,7 +152,12 @@ pub fn spawn_beam_pool(
 pub fn update_beams(world: &mut World) {
     let mut placements: Vec<(Entity, Transform)> = Vec::new();
     for (path, pool) in world.query::<(&LaserPath, &BeamPool)>().iter() {
-        let start = path.points.first().copied().unwrap_or(Vec3::ZERO);
+        // Hidden pieces wait 1 mm behind the beam's start (inside the emitter): off every
+        // ray the laser traces, so their point-sized bounds are never on its path.
+        let start = match path.segments().next() {
+            Some((a, b)) => a - (b - a).normalize_or_zero() * 1e-3,
+            None => path.points.first().copied().unwrap_or(Vec3::ZERO),
+        };
         let mut pieces = path.segments();
         for &segment in &pool.segments {
             let transform = match pieces.next() {

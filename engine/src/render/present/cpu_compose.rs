@@ -1,0 +1,165 @@
+//! Composing a host film (the CPU tracer's) into window pixels on the CPU: the same bilinear
+//! upscale with clamped edges and the same tonemap as `shaders/present.wgsl` (exposure, the
+//! optional ACES fit, NaN to black, clamp, sRGB encoding), written as 8-bit BGRA or RGBA rows
+//! that the presenter copies straight into the surface texture.
+//!
+//! Why: under Xvfb the only adapter is lavapipe, which runs the present shader on the CPU one
+//! fragment at a time; composing here (all cores, a lookup table for the sRGB curve) and
+//! copying the bytes is cheaper (docs/PERFORMANCE.md, "Frame phases in a window").
+//!
+//! Owns: [`compose_host_film`] and its sRGB table. Render thread (rayon over rows).
+//! Must not: touch the device (the presenter uploads the bytes).
+
+use std::sync::OnceLock;
+
+use glam::Vec3;
+use rayon::prelude::*;
+
+use crate::render::film::{Film, TonemapSettings};
+
+/// Entries of the sRGB table over linear [0, 1]. 4096 steps of 1/4095: the curve's steepest
+/// part (slope 12.92 below 0.0031308) moves at most 12.92 · 255 / 4095 ≈ 0.8 of an 8-bit step
+/// between entries, so with rounding to the nearest entry an output is within one step of
+/// the exact encoding (`linear_to_srgb8`).
+const SRGB_TABLE: usize = 4096;
+
+fn srgb_table() -> &'static [u8; SRGB_TABLE] {
+    static TABLE: OnceLock<[u8; SRGB_TABLE]> = OnceLock::new();
+    TABLE.get_or_init(|| {
+        let mut t = [0u8; SRGB_TABLE];
+        for (i, v) in t.iter_mut().enumerate() {
+            let c = i as f32 / (SRGB_TABLE - 1) as f32;
+            let s = if c <= 0.003_130_8 {
+                12.92 * c
+            } else {
+                1.055 * c.powf(1.0 / 2.4) - 0.055
+            };
+            *v = (s * 255.0 + 0.5) as u8;
+        }
+        t
+    })
+}
+
+/// NaN → 0 and ±infinity → ±1e30, as the shader's `finite` (so 0 × inf never spreads).
+fn finite(c: Vec3) -> Vec3 {
+    Vec3::from_array(c.to_array().map(|x| if x.is_nan() { 0.0 } else { x }))
+        .clamp(Vec3::splat(-1e30), Vec3::splat(1e30))
+}
+
+/// One tonemapped channel as an 8-bit sRGB value.
+fn encode(x: f32, table: &[u8; SRGB_TABLE]) -> u8 {
+    let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+    table[(x * (SRGB_TABLE - 1) as f32 + 0.5) as usize]
+}
+
+/// Source texel index pairs and weights along one axis: output pixel `i` of `to` reads film
+/// pixels `a`, `b` (clamped) mixed by `t`, as the shader maps centres.
+fn axis(from: u32, to: u32) -> Vec<(usize, usize, f32)> {
+    let scale = from as f32 / to.max(1) as f32;
+    (0..to)
+        .map(|i| {
+            let f = (i as f32 + 0.5) * scale - 0.5;
+            let base = f.floor();
+            let clamp = |v: f32| (v.max(0.0) as usize).min(from as usize - 1);
+            (clamp(base), clamp(base + 1.0), f - base)
+        })
+        .collect()
+}
+
+/// `film` upscaled (bilinear, clamped edges) to `size` (physical pixels) and tonemapped with
+/// `tonemap`, as rows of 4-byte pixels, top row first; `bgra` orders them B, G, R, A (else
+/// R, G, B, A), alpha 255. An empty film gives black.
+pub fn compose_host_film(
+    film: &Film,
+    size: (u32, u32),
+    tonemap: &TonemapSettings,
+    bgra: bool,
+) -> Vec<u8> {
+    let (w, h) = (size.0.max(1) as usize, size.1.max(1) as usize);
+    let mut out = vec![0u8; w * h * 4];
+    if film.width == 0 || film.height == 0 || film.mean.len() < (film.width * film.height) as usize
+    {
+        for px in out.chunks_exact_mut(4) {
+            px[3] = 255;
+        }
+        return out;
+    }
+    let columns = axis(film.width, w as u32);
+    let rows = axis(film.height, h as u32);
+    let exposure = tonemap.exposure_ev.exp2();
+    let filmic = tonemap.filmic;
+    let table = srgb_table();
+    let fw = film.width as usize;
+    // Each film pixel made finite once (the window has several pixels per film pixel).
+    let texels: Vec<Vec3> = film.mean[..fw * film.height as usize]
+        .par_iter()
+        .map(|&c| finite(c))
+        .collect();
+    out.par_chunks_mut(w * 4)
+        .zip(rows.par_iter())
+        .for_each(|(line, &(y0, y1, ty))| {
+            let (top, bottom) = (&texels[y0 * fw..][..fw], &texels[y1 * fw..][..fw]);
+            for (px, &(x0, x1, tx)) in line.chunks_exact_mut(4).zip(&columns) {
+                let upper = top[x0].lerp(top[x1], tx);
+                let lower = bottom[x0].lerp(bottom[x1], tx);
+                let mut c = upper.lerp(lower, ty) * exposure;
+                if filmic {
+                    c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
+                }
+                let [r, g, b] = c.to_array().map(|x| encode(x, table));
+                px.copy_from_slice(&if bgra { [b, g, r, 255] } else { [r, g, b, 255] });
+            }
+        });
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::film::linear_to_srgb8;
+
+    #[test]
+    fn at_equal_size_it_tonemaps_like_the_cpu_within_one_step() {
+        let mut film = Film::new(64, 32);
+        let n = film.mean.len() as f32;
+        for (i, p) in film.mean.iter_mut().enumerate() {
+            let t = i as f32 / n;
+            *p = Vec3::new(t * 1.2 - 0.1, (1.0 - t) * 0.02, (t * 7.0).fract());
+        }
+        film.mean[3] = Vec3::new(f32::NAN, 0.5, f32::INFINITY);
+        for filmic in [false, true] {
+            let settings = TonemapSettings {
+                exposure_ev: 0.5,
+                filmic,
+            };
+            let rgba = compose_host_film(&film, (64, 32), &settings, false);
+            for (i, c) in film.mean.iter().enumerate() {
+                let want = linear_to_srgb8(*c, &settings);
+                for k in 0..3 {
+                    let got = rgba[i * 4 + k];
+                    assert!(
+                        got.abs_diff(want[k]) <= 1,
+                        "pixel {i} {k}: {got} vs {want:?}"
+                    );
+                }
+                assert_eq!(rgba[i * 4 + 3], 255);
+            }
+        }
+        let bgra = compose_host_film(&film, (64, 32), &TonemapSettings::default(), true);
+        let rgba = compose_host_film(&film, (64, 32), &TonemapSettings::default(), false);
+        assert_eq!((bgra[40], bgra[42]), (rgba[42], rgba[40]));
+    }
+
+    #[test]
+    fn upscaling_blends_neighbours_and_clamps_edges() {
+        let mut film = Film::new(2, 1);
+        film.mean = vec![Vec3::ZERO, Vec3::ONE];
+        let out = compose_host_film(&film, (4, 1), &TonemapSettings::default(), false);
+        // Centres at 0.25, 0.75, 1.25, 1.75 film pixels: weights 0 (clamped), 0.25, 0.75, 1.
+        let expected = [0.0f32, 0.25, 0.75, 1.0]
+            .map(|v| linear_to_srgb8(Vec3::splat(v), &TonemapSettings::default())[0]);
+        for (i, e) in expected.iter().enumerate() {
+            assert!(out[i * 4].abs_diff(*e) <= 1, "{i}: {} vs {e}", out[i * 4]);
+        }
+    }
+}
