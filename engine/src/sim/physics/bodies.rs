@@ -181,7 +181,12 @@ pub(super) fn spawn_new(
         let builder = match body.kind {
             BodyKind::Static => RigidBodyBuilder::fixed(),
             BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
-            BodyKind::Kinematic => RigidBodyBuilder::kinematic_position_based(),
+            // Characters set their next pose; game-driven kinematic bodies (doors, lifts) are
+            // moved by velocity (`ride.rs`), so that characters standing on them can ride.
+            BodyKind::Kinematic if world.satisfies::<&CharacterController>(entity) => {
+                RigidBodyBuilder::kinematic_position_based()
+            }
+            BodyKind::Kinematic => RigidBodyBuilder::kinematic_velocity_based(),
         };
         let rb = builder
             .pose(pose_to_rapier(transform.translation, transform.rotation))
@@ -237,24 +242,6 @@ pub(super) fn remove_dead(
             rapier.remove_body(handle);
         }
         let _ = world.remove::<(BodyHandle, PhysicsPose)>(entity);
-    }
-}
-
-/// Game-driven kinematic bodies (no character controller) move to their `Transform`.
-pub(super) fn push_kinematic(rapier: &mut rapier3d::prelude::PhysicsWorld, world: &World) {
-    for (body, handle, transform) in world
-        .query::<Without<(&RigidBody, &BodyHandle, &Transform), &CharacterController>>()
-        .iter()
-    {
-        if body.kind != BodyKind::Kinematic {
-            continue;
-        }
-        if let Some(rb) = rapier.bodies.get_mut(handle.0) {
-            let target = pose_to_rapier(transform.translation, transform.rotation);
-            if *rb.position() != target {
-                rb.set_next_kinematic_position(target);
-            }
-        }
     }
 }
 

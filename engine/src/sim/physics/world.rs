@@ -3,9 +3,9 @@
 //! Owns: rapier's world (bodies, colliders, broad and narrow phase, islands, CCD solver), the
 //! entity ↔ body map, the list of bodies that moved last step (for render interpolation and
 //! the "sleeping bodies write nothing" rule) and the per-step counts. One step, in order:
-//! spawn new bodies → remove dead ones → game-driven kinematic poses in → carriers → characters
-//! → rapier step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out →
-//! sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
+//! spawn new bodies → remove dead ones → game-driven kinematic bodies' motions (`ride`) →
+//! carriers → characters (riding those motions) → the kinematic bodies' velocities → rapier
+//! step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out → sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
 //! inputs give bit-identical results on the same build and machine (rapier runs single-threaded
 //! here; every ECS walk is in entity order).
 //! Must not: render, read devices, or let rapier's math types out (see `convert`).
@@ -18,7 +18,7 @@ use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, Ray, RigidBody
 
 use super::bodies::{self, BodyHandle, entity_of};
 use super::convert::{pose_from_rapier, pose_to_rapier, vec_from_rapier, vec_to_rapier};
-use super::{carry, character, sensors};
+use super::{carry, character, ride, sensors};
 
 /// Gravity, m/s², along −Y.
 pub const GRAVITY: f32 = 9.81;
@@ -81,9 +81,10 @@ impl PhysicsWorld {
         let dt = step_seconds as f32;
         bodies::spawn_new(&mut self.rapier, world, &mut self.handles);
         bodies::remove_dead(&mut self.rapier, world, &mut self.handles);
-        bodies::push_kinematic(&mut self.rapier, world);
+        let platforms = ride::platform_moves(&mut self.rapier, world);
         carry::drive_carriers(&mut self.rapier, world, dt);
-        character::move_characters(&mut self.rapier, world, dt);
+        character::move_characters(&mut self.rapier, world, &platforms, dt);
+        ride::start_platforms(&mut self.rapier, &platforms, dt);
         self.rapier.integration_parameters.dt = dt;
         self.rapier.step();
         let transform_writes = bodies::sync_moved(&self.rapier, world, &mut self.moving);
