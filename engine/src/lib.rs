@@ -51,5 +51,8 @@ pub mod sim;
 /// A level to play: loading with bodies and gameplay.
 pub mod level;
 
+/// Players: first-person controller, what is under the crosshair, using and carrying.
+pub mod player;
+
 /// The runner: the frame's phases, the game-facing API, windows, scripts.
 pub mod app;

@@ -172,3 +172,49 @@ fn a_thrown_cube_flies_along_the_view() {
     // Falling 1.45 m takes 0.54 s: at 6 m/s it lands more than 3 m from the hold point.
     assert!(z < -4.5, "the cube landed at z = {z}");
 }
+
+/// A character walks on a lift at rest after it rose, and off its edge onto a floor at the
+/// same height.
+#[test]
+fn a_character_walks_on_and_off_a_lift_that_rose() {
+    use candela::sim::physics::{CharacterInput, CharacterState};
+    let mut sim = Sim::new();
+    // The upper floor: top at y = 3.3, from z = -1 to -5.
+    sim.fixed_box(Vec3::new(0.0, 3.2, -3.0), Vec3::new(3.0, 0.1, 2.0));
+    let lift = sim.world.spawn((
+        Transform::from_translation(DECK_START),
+        RigidBody::kinematic(),
+        Collider::new(&ColliderShape::Box { half_extents: DECK }).expect("box"),
+    ));
+    let bundle = character_bundle(
+        Vec3::new(0.0, 0.3 + 0.9 + 0.02, 0.0),
+        1.8,
+        0.3,
+        CharacterController::default(),
+    )
+    .expect("capsule");
+    let player = sim.world.spawn(bundle);
+    sim.steps(20);
+    for i in 0..240 {
+        let y = 3.0 * ((i + 1) as f32 / 180.0).min(1.0);
+        sim.world
+            .get::<&mut Transform>(lift)
+            .expect("lift")
+            .translation = DECK_START + Vec3::Y * y;
+        sim.step();
+    }
+    let start = sim.position(player);
+    sim.world
+        .get::<&mut CharacterInput>(player)
+        .expect("input")
+        .move_direction = Vec3::NEG_Z;
+    for _ in 0..90 {
+        sim.step();
+    }
+    let end = sim.position(player);
+    let state = *sim.world.get::<&CharacterState>(player).expect("state");
+    println!("walk off the lift: from {start} to {end}, {state:?}");
+    assert!(end.z < start.z - 2.5, "walked from {start} to {end}");
+    // The deck and the floor are flush: the character neither climbs nor drops.
+    assert!((end.y - start.y).abs() < 0.01, "from {start} to {end}");
+}

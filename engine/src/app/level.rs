@@ -2,7 +2,7 @@
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
 //! physics components when the level gives it a body, level materials, the environment, and
 //! the level's gameplay (clips, volumes, lasers, rules; light groups that start off; sound
-//! emitters on instances and the music).
+//! emitters on instances and the music; `Usable` on the instances the player can use).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -101,6 +101,11 @@ impl Engine {
                 spawned.by_name.insert(name.clone(), entity);
             }
             spawned.entities.push(entity);
+        }
+        for u in &level.gameplay.usables {
+            if let Some(&entity) = spawned.entities.get(u.instance) {
+                let _ = self.world.insert_one(entity, u.usable.clone());
+            }
         }
         for &group in &level.gameplay.lights_off {
             self.upkeep.set_light_group(group, false);

@@ -52,7 +52,7 @@ pub use level_body::{BodyEntry, ShapeEntry};
 mod level_gameplay;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry, LaserEntry,
-    MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
+    MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
 };
 mod level_load;
 mod level_shapes;

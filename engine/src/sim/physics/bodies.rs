@@ -181,12 +181,8 @@ pub(super) fn spawn_new(
         let builder = match body.kind {
             BodyKind::Static => RigidBodyBuilder::fixed(),
             BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
-            // Characters set their next pose; game-driven kinematic bodies (doors, lifts) are
-            // moved by velocity (`ride.rs`), so that characters standing on them can ride.
-            BodyKind::Kinematic if world.satisfies::<&CharacterController>(entity) => {
-                RigidBodyBuilder::kinematic_position_based()
-            }
-            BodyKind::Kinematic => RigidBodyBuilder::kinematic_velocity_based(),
+            // Characters set their next pose; so do game-driven ones (`ride.rs`).
+            BodyKind::Kinematic => RigidBodyBuilder::kinematic_position_based(),
         };
         let rb = builder
             .pose(pose_to_rapier(transform.translation, transform.rotation))

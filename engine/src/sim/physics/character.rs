@@ -15,11 +15,11 @@ use hecs::{Entity, World};
 use rapier3d::control::{
     CharacterAutostep, CharacterCollision, CharacterLength, KinematicCharacterController,
 };
-use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter};
+use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, RigidBodySet};
 
 use super::bodies::{BodyHandle, Collider, RigidBody};
 use super::convert::{vec_from_rapier, vec_to_rapier};
-use super::ride::{PlatformMove, ride};
+use super::ride::{PlatformMove, ride, walk_queries};
 use super::shapes::{ColliderShape, ShapeError};
 use crate::ecs::Transform;
 
@@ -158,6 +158,7 @@ pub(super) fn move_characters(
         .map(|(e, ..)| e)
         .collect();
     characters.sort_by_key(|e| e.to_bits());
+    let no_bodies = RigidBodySet::new();
     for entity in characters {
         let Ok((controller, input, state, handle)) = world.query_one_mut::<(
             &CharacterController,
@@ -209,7 +210,7 @@ pub(super) fn move_characters(
             .exclude_rigid_body(handle.0)
             .exclude_sensors();
         let movement = {
-            let queries = rapier.query_pipeline_with_filter(filter);
+            let queries = walk_queries(rapier, &no_bodies, filter);
             kcc.move_shape(dt, &queries, &*shape, &pose, vec_to_rapier(desired), |c| {
                 collisions.push(c)
             })

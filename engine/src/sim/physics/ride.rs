@@ -1,17 +1,19 @@
 //! Kinematic platforms — doors, lifts, moving floors driven by the game or by level clips —
 //! and characters riding them.
 //!
-//! Owns: moving game-driven kinematic bodies to their `Transform` ([`PlatformMove`]) and
-//! carrying the characters that stand on them. Such a body is velocity-based: each step it
-//! gets the velocity that takes it from its pose to its `Transform` in one step, so contacts
-//! and friction carry the dynamic bodies resting on it. The velocity is given only after the
-//! characters moved: rapier's own controller would otherwise add the platform's velocity too
-//! (its "kinematic friction"), one step late for a lift that starts or stops. Instead, a
+//!
+//! Owns: moving game-driven kinematic bodies to their `Transform` ([`PlatformMove`]: rapier's
+//! next kinematic pose, from which rapier derives the velocity, so contacts and friction carry
+//! the dynamic bodies resting on it) and carrying the characters that stand on them. A
 //! character first walks against the world as it is (the platform at its current pose) and is
 //! then carried by the platform's motion of this step — a second shape cast that ignores the
 //! platform, so a wall or ceiling still stops it — and the rapier step moves the platform by
 //! the same amount: the character keeps its gap to the deck exactly, going up, down or
-//! sideways. Units: metres, seconds, radians. Main thread, inside the physics step.
+//! sideways. The walk itself sees the world through [`walk_queries`], without rapier's body
+//! set: rapier's controller would otherwise treat kinematic floors specially (its "kinematic
+//! friction": a platform's velocity added one step late, and walking blocked on a kinematic
+//! floor after two steps in rapier 0.36 — `tests/physics_ride.rs` walks on and off a lift).
+//! Units: metres, seconds, radians. Main thread, inside the physics step.
 //! Must not: write `Transform`s (the game or the level's clips do).
 
 use glam::{Quat, Vec3};
@@ -19,11 +21,13 @@ use hecs::{Without, World};
 use rapier3d::control::{CharacterLength, KinematicCharacterController};
 use rapier3d::parry::query::ShapeCastOptions;
 use rapier3d::parry::shape::Shape;
-use rapier3d::prelude::{PhysicsWorld as RapierWorld, Pose, QueryFilter, RigidBodyHandle};
+use rapier3d::prelude::{
+    PhysicsWorld as RapierWorld, Pose, QueryFilter, QueryPipeline, RigidBodyHandle, RigidBodySet,
+};
 
 use super::bodies::{BodyHandle, BodyKind, RigidBody};
 use super::character::CharacterController;
-use super::convert::{pose_from_rapier, vec_from_rapier, vec_to_rapier};
+use super::convert::{pose_from_rapier, pose_to_rapier, vec_from_rapier, vec_to_rapier};
 use crate::ecs::Transform;
 
 /// How far below the capsule a platform still counts as stood on, metres beyond the skin.
@@ -45,9 +49,9 @@ impl PlatformMove {
     }
 }
 
-/// This step's motion of every game-driven kinematic body (no character controller) whose
-/// `Transform` moved away from its simulated pose, in handle order; their velocities are
-/// zero until [`start_platforms`].
+/// Sets every game-driven kinematic body (no character controller) on its way to its
+/// `Transform` (rapier's next kinematic pose) and returns the motions of those that move, in
+/// handle order.
 pub(super) fn platform_moves(rapier: &mut RapierWorld, world: &World) -> Vec<PlatformMove> {
     let mut moves = Vec::new();
     for (body, handle, transform) in world
@@ -60,11 +64,10 @@ pub(super) fn platform_moves(rapier: &mut RapierWorld, world: &World) -> Vec<Pla
         let Some(rb) = rapier.bodies.get_mut(handle.0) else {
             continue;
         };
-        rb.set_linvel(vec_to_rapier(Vec3::ZERO), false);
-        rb.set_angvel(vec_to_rapier(Vec3::ZERO), false);
         let from = pose_from_rapier(rb.position());
         let to = (transform.translation, transform.rotation);
         if from != to && to.0.is_finite() && to.1.is_finite() {
+            rb.set_next_kinematic_position(pose_to_rapier(to.0, to.1));
             moves.push(PlatformMove {
                 handle: handle.0,
                 from,
@@ -76,28 +79,20 @@ pub(super) fn platform_moves(rapier: &mut RapierWorld, world: &World) -> Vec<Pla
     moves
 }
 
-/// Gives each moving platform the velocity that takes it to its target in `dt` seconds (about
-/// its centre of mass, as rapier integrates), waking it.
-pub(super) fn start_platforms(rapier: &mut RapierWorld, moves: &[PlatformMove], dt: f32) {
-    for m in moves {
-        let Some(rb) = rapier.bodies.get_mut(m.handle) else {
-            continue;
-        };
-        let com0 = vec_from_rapier(rb.center_of_mass());
-        let linvel = (m.carry(com0) - com0) / dt;
-        let mut turn = m.to.1 * m.from.1.inverse();
-        if turn.w < 0.0 {
-            turn = -turn;
-        }
-        let (axis, angle) = turn.to_axis_angle();
-        let angvel = if angle.is_finite() && angle > 0.0 {
-            axis * (angle / dt)
-        } else {
-            Vec3::ZERO
-        };
-        rb.set_linvel(vec_to_rapier(linvel), true);
-        rb.set_angvel(vec_to_rapier(angvel), true);
-    }
+/// Queries for a character's own walk: the world's colliders without rapier's body set, so
+/// the controller treats every solid collider alike (see the module doc). `empty` is an empty
+/// body set that outlives the queries.
+pub(super) fn walk_queries<'a>(
+    rapier: &'a RapierWorld,
+    empty: &'a RigidBodySet,
+    filter: QueryFilter<'a>,
+) -> QueryPipeline<'a> {
+    rapier.broad_phase.as_query_pipeline(
+        rapier.narrow_phase.query_dispatcher(),
+        empty,
+        &rapier.colliders,
+        filter,
+    )
 }
 
 /// The moving platform right under a character whose shape is at `pose` (ignoring the
@@ -162,7 +157,8 @@ pub(super) fn ride(
         .exclude_rigid_body(me)
         .exclude_sensors()
         .predicate(&not_deck);
-    let queries = rapier.query_pipeline_with_filter(filter);
+    let empty = RigidBodySet::new();
+    let queries = walk_queries(rapier, &empty, filter);
     let moved = carry.move_shape(dt, &queries, shape, pose, vec_to_rapier(motion), |_| {});
     vec_from_rapier(moved.translation)
 }

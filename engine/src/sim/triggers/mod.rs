@@ -19,8 +19,8 @@ mod volumes;
 pub use laser::{LaserBeam, LaserPath, trace_laser};
 pub use logic::{Facts, RuleBook, RuleFiring};
 pub use plan::{
-    Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedVolume,
-    Rule,
+    Action, Condition, GameplayPlan, PlannedEmitter, PlannedLaser, PlannedSound, PlannedUsable,
+    PlannedVolume, Rule, Usable,
 };
 pub use runtime::{Effect, LevelLogic, Outcome, StepLog, world_from_model};
 pub use volumes::{OccupantKind, Phase, VolumeEvent, VolumeFacts, VolumeTracker};
