@@ -183,6 +183,7 @@ impl Bot {
                 if walk_to(player, feet, LIFT.xz(), 0.0, 0.08, &mut act) {
                     aim(player, 0.0, 0.0, &mut act);
                     self.phase = Phase::Ride;
+                    self.waited = 0;
                 }
             }
             Phase::Ride => {
