@@ -119,7 +119,7 @@ impl Bot {
             .get::<&Transform>(self.cube)
             .map_or(Vec3::ZERO, |t| t.translation);
         let held = player.held(world);
-        if std::env::var_os("BOT_TRACE").is_some() && step % 30 == 0 {
+        if std::env::var_os("BOT_TRACE").is_some() && step.is_multiple_of(30) {
             println!(
                 "step {step} {:?}: feet {feet} yaw {:.3} pitch {:.3} cube {cube} held {held:?} focus {:?}",
                 self.phase,

@@ -114,9 +114,9 @@ fn a_usable_naming_an_unknown_instance_fails_the_load() {
         r#"usables: [(instance: "no_such_switch", prompt: "Press E", event: "lever")],"#,
     );
     let root = AssetRoot::new(&dir).expect("root");
-    let error = load_level(&path, &root)
-        .err()
-        .expect("an unknown usable instance fails");
+    let Err(error) = load_level(&path, &root) else {
+        panic!("an unknown usable instance must fail the load");
+    };
     let _ = std::fs::remove_dir_all(&dir);
     let message = error.to_string();
     assert!(
@@ -132,9 +132,9 @@ fn a_usable_sending_an_undeclared_event_fails_the_load() {
         r#"usables: [(instance: "switch", prompt: "Press E", event: "not_declared")],"#,
     );
     let root = AssetRoot::new(&dir).expect("root");
-    let error = load_level(&path, &root)
-        .err()
-        .expect("an undeclared usable event fails");
+    let Err(error) = load_level(&path, &root) else {
+        panic!("an undeclared usable event must fail the load");
+    };
     let _ = std::fs::remove_dir_all(&dir);
     let message = error.to_string();
     assert!(

@@ -18,6 +18,7 @@ use super::player_input::player_input;
 use super::replay_error::ReplayError;
 use super::replay_format::level_hash;
 use super::settings::Settings;
+use super::step_input::StepInput;
 use crate::assets::{AssetResult, AssetRoot};
 use crate::level::{PlayableLevel, load_level};
 use crate::player::{FirstPersonConfig, FirstPersonPlayer};
@@ -45,6 +46,7 @@ pub struct FirstPersonGame {
     player: Option<FirstPersonPlayer>,
     spawned: SpawnedLevel,
     log: Vec<(u64, Happened)>,
+    start_input: Option<StepInput>,
 }
 
 impl FirstPersonGame {
@@ -58,6 +60,7 @@ impl FirstPersonGame {
             player: None,
             spawned: SpawnedLevel::default(),
             log: Vec::new(),
+            start_input: None,
         })
     }
 
@@ -84,6 +87,12 @@ impl FirstPersonGame {
         level_hash(&self.level_path)
     }
 
+    /// Where the steps' input comes from once set up (a replay in a window; the devices by
+    /// default).
+    pub fn start_with(&mut self, input: StepInput) {
+        self.start_input = Some(input);
+    }
+
     /// The player, once set up.
     pub fn player(&self) -> Option<&FirstPersonPlayer> {
         self.player.as_ref()
@@ -108,6 +117,9 @@ impl Game for FirstPersonGame {
         let player = FirstPersonPlayer::at_view(engine.world_mut(), &camera, self.config)
             .map_err(|e| format!("{}: the player: {e}", self.level_path.display()))?;
         self.player = Some(player);
+        if let Some(input) = self.start_input.take() {
+            engine.set_step_input(input);
+        }
         Ok(())
     }
 
@@ -121,7 +133,7 @@ impl Game for FirstPersonGame {
             &self.settings,
             step.step_seconds,
         );
-        let done = player.step(step.world, &step.queries, &input);
+        let done = player.step(step.world, step.physics, &step.queries, &input);
         if let Some(event) = done.used {
             step.commands.send_event(event.clone());
             self.log.push((step.index, Happened::Used(event)));

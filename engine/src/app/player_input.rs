@@ -71,7 +71,8 @@ mod tests {
     fn mouse_right_turns_right_and_invert_y_flips_pitch() {
         let set = ActionSet::standard();
         let mut frame = ActionFrame::empty(&set);
-        let (x, y) = (set.id(ga::LOOK_X).unwrap(), set.id(ga::LOOK_Y).unwrap());
+        let id = |name| set.id(name).expect("a standard action");
+        let (x, y) = (id(ga::LOOK_X), id(ga::LOOK_Y));
         frame.values[x.0 as usize] = quantise_motion(10.0);
         frame.values[y.0 as usize] = quantise_motion(5.0);
         let plain = player_input(&frame, &set, &Settings::default(), 1.0 / 60.0);

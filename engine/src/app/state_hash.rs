@@ -1,5 +1,7 @@
 //! [`Engine::state_hash`]: one 64-bit fingerprint of the simulation, to check that two runs
-//! (a recording and its replay, two replays) went through the very same states.
+//! (a recording and its replay, two replays) went through the very same states. Compare hashes
+//! of runs with the same steps per frame: `Transform`s are hashed as the frame posed them
+//! (physics interpolation), the bodies' simulated states as of the last step.
 //!
 //! Covers, in this order (FNV-1a over 64-bit words): the fixed steps run; every entity's
 //! `Transform` (translation, rotation, scale as f32 bits) in entity order; every character's

@@ -179,7 +179,7 @@ pub fn plan_gameplay(
     for (i, u) in g.usables.iter().enumerate() {
         let user = format!("usable {i} ({:?})", u.instance);
         let instance = instance(&u.instance, &user)?;
-        if !g.events.iter().any(|e| *e == u.event) {
+        if !g.events.contains(&u.event) {
             return Err(error(format!(
                 "{user} sends the event {:?}, which `events` does not declare",
                 u.event

@@ -13,7 +13,9 @@
 //!
 //! Conventions: right-handed, +Y up, metres, seconds, radians; yaw about +Y, 0 looking along
 //! −Z, positive turning left; pitch positive up, clamped to ±`max_pitch`; no roll. The eye
-//! follows the body as of the last physics step (it lags the body by one fixed step, 1/60 s).
+//! follows the body's simulated pose as of the last physics step (it lags the body by one
+//! fixed step, 1/60 s). What is under the crosshair comes from ray queries on the last
+//! rendered frame's scene, which a replay at another frame rate sees a few steps older.
 //! Main thread, fixed step, before physics. Must not: read devices or send events itself.
 
 use glam::{EulerRot, Quat, Vec2, Vec3};
@@ -25,7 +27,8 @@ use crate::assets::CameraDesc;
 use crate::ecs::{CameraRig, Transform};
 use crate::query::Queries;
 use crate::sim::physics::{
-    Carrier, CarryRequest, CharacterController, CharacterInput, ShapeError, character_bundle,
+    Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, ShapeError,
+    character_bundle,
 };
 
 /// How a first-person player is built and moves.
@@ -203,6 +206,7 @@ impl FirstPersonPlayer {
     pub fn step(
         &mut self,
         world: &mut World,
+        physics: &PhysicsWorld,
         queries: &Queries<'_>,
         input: &PlayerInput,
     ) -> PlayerStep {
@@ -233,7 +237,12 @@ impl FirstPersonPlayer {
             };
         }
 
-        let eye = self.eye(world);
+        // The body's simulated pose, not its `Transform` (which the frame may have posed
+        // between two steps): the same steps give the same eye at any frame rate.
+        let centre = physics
+            .pose(self.body)
+            .map_or_else(|| self.position(world), |(t, _)| t);
+        let eye = centre + self.eye_offset();
         let rotation = self.rotation();
         if let Ok(mut t) = world.get::<&mut Transform>(self.camera) {
             t.translation = eye;
