@@ -2,8 +2,9 @@
 //! `assets/test_scenes/platform/first_person.replay` played headless on the CPU tracer through
 //! the engine's own frame loop carries the glass cube onto the plate, rides the lift up and
 //! pulls the lever, which wins the level; a second run goes through the identical state hash
-//! at every step. If the level or the player changes so that the replay no longer solves it,
-//! these assertions fail (re-record: `docs/LEVELS.md`).
+//! at every step, and a run of eight steps per frame through the same states. If the level or
+//! the player changes so that the replay no longer solves it, these assertions fail
+//! (re-record: `docs/LEVELS.md`).
 
 use std::path::PathBuf;
 
@@ -33,7 +34,9 @@ struct Run {
     finished: bool,
 }
 
-fn play() -> anyhow::Result<Run> {
+/// Plays the committed replay, `per_frame` fixed steps per rendered frame, hashing the state
+/// after every frame.
+fn play(per_frame: u64) -> anyhow::Result<Run> {
     let level = assets().join("test_scenes/platform/first_person.ron");
     let replay = assets().join("test_scenes/platform/first_person.replay");
     let root = AssetRoot::new(assets())?;
@@ -54,11 +57,14 @@ fn play() -> anyhow::Result<Run> {
     let steps = replay.steps();
     engine.set_step_input(StepInput::Replay(replay));
     let mut hashes = Vec::new();
-    // One step per frame; a few steps past the end must not be needed.
-    for _ in 0..steps + 1 {
-        engine.frame(1.0 / 60.0, &mut game)?;
+    // One step past the end finds the replay finished.
+    let mut done = 0;
+    while done < steps + 1 {
+        let n = per_frame.min(steps + 1 - done);
+        engine.frame(n as f64 / 60.0, &mut game)?;
         let _ = engine.rendered();
         hashes.push(engine.state_hash());
+        done += n;
     }
     let finished = engine.replay_finished();
     let by_name = &game.spawned().by_name;
@@ -92,7 +98,7 @@ fn play() -> anyhow::Result<Run> {
 
 #[test]
 fn the_committed_replay_solves_the_level_and_repeats_exactly() -> anyhow::Result<()> {
-    let run = play()?;
+    let run = play(1)?;
     for (step, h) in &run.log {
         println!("step {step}: {h:?}");
     }
@@ -150,7 +156,7 @@ fn the_committed_replay_solves_the_level_and_repeats_exactly() -> anyhow::Result
         "the level was not won"
     );
 
-    let again = play()?;
+    let again = play(1)?;
     assert_eq!(again.hashes.len(), run.hashes.len());
     for (step, (a, b)) in run.hashes.iter().zip(&again.hashes).enumerate() {
         assert_eq!(a, b, "the second run's state differs at step {step}");
@@ -158,6 +164,23 @@ fn the_committed_replay_solves_the_level_and_repeats_exactly() -> anyhow::Result
     assert!(
         run.hashes.windows(2).filter(|w| w[0] != w[1]).count() > run.hashes.len() / 2,
         "the state hash hardly changes: it does not see the run"
+    );
+    // Eight steps per frame (a faster replay, fewer renders) ends in the same state, and
+    // passes through the same states every eighth step.
+    let fast = play(8)?;
+    assert_eq!(fast.outcome, run.outcome);
+    for (frame, h) in fast.hashes.iter().enumerate().take(fast.hashes.len() - 1) {
+        assert_eq!(
+            *h,
+            run.hashes[frame * 8 + 7],
+            "eight steps per frame: the state differs after step {}",
+            frame * 8 + 7
+        );
+    }
+    assert_eq!(
+        fast.hashes.last(),
+        run.hashes.last(),
+        "the final state differs"
     );
     Ok(())
 }
