@@ -51,7 +51,8 @@ pub mod sim;
 /// A level to play: loading with bodies and gameplay.
 pub mod level;
 
-/// Players: per-step input in game terms, the third-person character and its follow camera.
+/// Players: per-step input in game terms, the first-person controller, what is under the
+/// crosshair, using and carrying; the third-person character and its follow camera.
 pub mod player;
 
 /// The runner: the frame's phases, the game-facing API, windows, scripts.

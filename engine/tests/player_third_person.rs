@@ -36,12 +36,14 @@ fn player_input(actions: &ActionFrame, set: &ActionSet) -> PlayerInput {
         actions.button_axis(id(a::MOVE_FORWARD), id(a::MOVE_BACK)) + actions.axis(id(a::MOVE_Y));
     PlayerInput {
         move_axes: Vec2::new(x, y).clamp_length_max(1.0),
+        // Mouse right turns right: negative yaw in `PlayerInput`'s convention.
         look: Vec2::new(
-            actions.motion(id(a::LOOK_X)),
+            -actions.motion(id(a::LOOK_X)),
             -actions.motion(id(a::LOOK_Y)),
         ) * LOOK_RAD_PER_COUNT,
         jump: actions.held(id(a::JUMP)),
         run: actions.held(id(a::RUN)),
+        ..PlayerInput::default()
     }
 }
 

@@ -2,9 +2,9 @@
 //! level instance (static unless the level marks it dynamic or gives it a moving body), its
 //! physics components when the level gives it a body, level materials, the environment, and
 //! the level's gameplay (clips, volumes, lasers and their visible beams, rules; light groups
-//! that start off; sound emitters on instances and the music), and its characters (a capsule
-//! body with the controller and the animation state machine, and a child entity drawing the
-//! skinned model).
+//! that start off; sound emitters on instances and the music; `Usable` on the instances the
+//! player can use), and its characters (a capsule body with the controller and the animation
+//! state machine, and a child entity drawing the skinned model).
 //!
 //! Owns: [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
 //! Must not: load files (assets did) or run systems.
@@ -127,6 +127,11 @@ impl Engine {
                         .insert(character.name.clone(), spawned_character);
                 }
                 Err(message) => log::error!("{}: {message}", desc.source.display()),
+            }
+        }
+        for u in &level.gameplay.usables {
+            if let Some(&entity) = spawned.entities.get(u.instance) {
+                let _ = self.world.insert_one(entity, u.usable.clone());
             }
         }
         for &group in &level.gameplay.lights_off {

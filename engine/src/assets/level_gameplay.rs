@@ -17,6 +17,8 @@
 //!                                       (time_seconds: 1.2, value: [1.6, 0, 0])])])],
 //!     lights_off: [2],
 //!     volumes: [(name: "plate", instance: "plate_sensor")],
+//!     usables: [(instance: "switch", prompt: "Press E to pull the lever", event: "lever")],
+//!     events: ["lever"],
 //!     rules: [(name: "open", when: Occupied("plate"),
 //!              then: [Play(clip: "door_open"), Lights(group: 2, on: true), Sound(sound: "chime")],
 //!              otherwise: [Reverse(clip: "door_open")])],
@@ -64,6 +66,10 @@ pub struct GameplayEntry {
     /// that `Event(name)` conditions may wait for them as for clip events.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub events: Vec<String>,
+    /// Instances the player can use (a switch, a lever): looking at one shows its prompt, the
+    /// use action sends its event to the rules (the event must be declared in `events`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub usables: Vec<UsableEntry>,
 }
 
 impl GameplayEntry {
@@ -74,6 +80,18 @@ impl GameplayEntry {
 }
 
 /// A sound file under a name.
+/// `(instance: "switch", prompt: "Press E to pull the lever", event: "lever")`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct UsableEntry {
+    /// The instance's `name`.
+    pub instance: String,
+    /// What the HUD shows while the player looks at it.
+    pub prompt: String,
+    /// Sent to the rules (`Event(name)`) when the player uses it.
+    pub event: String,
+}
+
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SoundEntry {

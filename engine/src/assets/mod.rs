@@ -54,7 +54,7 @@ pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact,
 mod level_gameplay;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry,
-    LaserEntry, MusicEntry, RuleEntry, SoundEntry, VolumeEntry,
+    LaserEntry, MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
 };
 mod level_load;
 mod level_shapes;

@@ -1,6 +1,6 @@
 //! Checking a level's `gameplay` section and turning it into a [`GameplayPlan`]: every name it
-//! uses (instances, materials, sounds, clips, volumes, clip events, light groups) must exist,
-//! and the error names the level and the item that uses the unknown name.
+//! uses (instances, materials, sounds, clips, volumes, clip events, light groups, usables)
+//! must exist, and the error names the level and the item that uses the unknown name.
 //!
 //! Owns: [`plan_gameplay`]. Sound files are resolved through the [`AssetRoot`] and decoded
 //! here (`audio::decode_sound`), so a sound that does not decode fails the level load.
@@ -17,7 +17,7 @@ use crate::assets::{
 };
 use crate::sim::triggers::{
     Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
-    PlannedVolume, Rule,
+    PlannedUsable, PlannedVolume, Rule, Usable,
 };
 
 /// Name → index of a list of named items; a name used twice is an error.
@@ -194,6 +194,26 @@ pub fn plan_gameplay(
         .flat_map(|c| c.events.iter().map(|e| e.name.as_str()))
         .chain(g.events.iter().map(String::as_str))
         .collect();
+    for (i, u) in g.usables.iter().enumerate() {
+        let user = format!("usable {i} ({:?})", u.instance);
+        let instance = instance(&u.instance, &user)?;
+        if !g.events.contains(&u.event) {
+            return Err(error(format!(
+                "{user} sends the event {:?}, which `events` does not declare",
+                u.event
+            )));
+        }
+        if u.prompt.trim().is_empty() {
+            return Err(error(format!("{user} has an empty prompt")));
+        }
+        plan.usables.push(PlannedUsable {
+            instance,
+            usable: Usable {
+                prompt: u.prompt.clone(),
+                event: u.event.clone(),
+            },
+        });
+    }
     let refs = Refs {
         volumes: &volumes,
         events: &events,

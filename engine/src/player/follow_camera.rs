@@ -87,7 +87,8 @@ impl FollowCamera {
         self.pull_in_mps.max(self.ease_out_mps) * dt_seconds.max(0.0)
     }
 
-    /// One fixed step of `dt_seconds`: turns by `look` (radians; x yaw right, y pitch up),
+    /// One fixed step of `dt_seconds`: turns by `look` (radians, as in
+    /// [`super::PlayerInput::look`]: x positive turns left, y positive looks up),
     /// probes the way from the pivot above `body_centre` back to the wanted distance on
     /// `queries` (skipping hits on `ignore`), and eases the distance. Returns the new pose.
     pub fn update(
@@ -99,7 +100,7 @@ impl FollowCamera {
         dt_seconds: f32,
     ) -> CameraPose {
         if look.is_finite() {
-            self.yaw_rad = (self.yaw_rad + look.x).rem_euclid(std::f32::consts::TAU);
+            self.yaw_rad = (self.yaw_rad - look.x).rem_euclid(std::f32::consts::TAU);
             let (low, high) = self.pitch_limits_rad;
             self.pitch_rad = (self.pitch_rad + look.y).clamp(low, high);
         }

@@ -1,21 +1,28 @@
-//! [`PlayerInput`]: what one player asks for in one fixed step, in game terms (move, look,
-//! jump, run), whatever device or replay it came from.
+//! [`PlayerInput`]: what the player asked for in one fixed step, in the units controllers use
+//! (no devices, no bindings). `app::player_input` builds it from an `ActionFrame` and the
+//! settings (mouse sensitivity, invert Y); tests and bots may fill it directly.
 //!
-//! Owns: the type only. Main thread. Must not: read devices (game code fills it from the
-//! step's `app::ActionFrame`, which replays reproduce exactly).
-//! Units: move axes in [−1, 1]; look in radians for the step.
+//! Data only. Must not: read devices.
 
 use glam::Vec2;
 
-/// One player's input for one fixed step.
+/// One fixed step of player intent.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct PlayerInput {
-    /// x: right, y: forward, each in [−1, 1] (a stick, or WASD as ±1).
+    /// Walk direction in the view's frame: `x` right, `y` forward, each in [−1, 1]; a longer
+    /// vector is clamped to length 1.
     pub move_axes: Vec2,
-    /// Look motion this step, radians: x turns right (yaw), y looks up (pitch).
+    /// Turn during this step, radians: `x` yaw (positive turns left, counter-clockwise seen
+    /// from above, right-handed about +Y), `y` pitch (positive looks up).
     pub look: Vec2,
-    /// Jump (held: jumps again on landing).
+    /// Jump held (jumps on the ground).
     pub jump: bool,
-    /// Run while held.
+    /// Run held.
     pub run: bool,
+    /// The use action went down this step (use a switch, pick up or drop a body).
+    pub use_pressed: bool,
+    /// The primary action went down this step (throw the held body).
+    pub primary_pressed: bool,
+    /// The secondary action went down this step (drop the held body gently).
+    pub secondary_pressed: bool,
 }

@@ -1,15 +1,21 @@
-//! Players: what one player does in a fixed step ([`PlayerInput`], `input`) and the
-//! controllers that turn it into motion — the third-person character (`third_person`) and the
-//! camera that follows it (`follow_camera`).
+//! Players: the game platform's neutral player controllers, driven by a plain per-step
+//! [`PlayerInput`] (built by `app` from the step's actions and the player's settings), so that
+//! they know nothing of devices, bindings or replays: the first-person player (`first_person`)
+//! and what is under its crosshair (`interact`), the third-person character (`third_person`)
+//! and the camera that follows it (`follow_camera`).
 //!
-//! Sits above `level` and below `app` (it must not use `app`: game code turns an
-//! `app::ActionFrame` into a [`PlayerInput`]). Main thread, in the game's fixed step.
-//! Must not: read devices or clocks (input arrives per step), or render.
+//! Sits above `level` (it reads `sim::triggers::Usable` that level spawning puts on usable
+//! instances) and below `app`. Main thread, fixed step, before physics. Must not: read
+//! devices, clocks or the engine's runner.
 
+mod first_person;
 mod follow_camera;
 mod input;
+mod interact;
 mod third_person;
 
+pub use first_person::{FirstPersonConfig, FirstPersonPlayer, PlayerStep};
 pub use follow_camera::{CameraPose, FollowCamera, ease_distance};
 pub use input::PlayerInput;
+pub use interact::{Focus, FocusKind, focus};
 pub use third_person::{ThirdPersonController, camera_relative_move, turn_towards};

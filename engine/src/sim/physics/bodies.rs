@@ -181,6 +181,7 @@ pub(super) fn spawn_new(
         let builder = match body.kind {
             BodyKind::Static => RigidBodyBuilder::fixed(),
             BodyKind::Dynamic => RigidBodyBuilder::dynamic(),
+            // Characters set their next pose; so do game-driven ones (`ride.rs`).
             BodyKind::Kinematic => RigidBodyBuilder::kinematic_position_based(),
         };
         let rb = builder
@@ -237,24 +238,6 @@ pub(super) fn remove_dead(
             rapier.remove_body(handle);
         }
         let _ = world.remove::<(BodyHandle, PhysicsPose)>(entity);
-    }
-}
-
-/// Game-driven kinematic bodies (no character controller) move to their `Transform`.
-pub(super) fn push_kinematic(rapier: &mut rapier3d::prelude::PhysicsWorld, world: &World) {
-    for (body, handle, transform) in world
-        .query::<Without<(&RigidBody, &BodyHandle, &Transform), &CharacterController>>()
-        .iter()
-    {
-        if body.kind != BodyKind::Kinematic {
-            continue;
-        }
-        if let Some(rb) = rapier.bodies.get_mut(handle.0) {
-            let target = pose_to_rapier(transform.translation, transform.rotation);
-            if *rb.position() != target {
-                rb.set_next_kinematic_position(target);
-            }
-        }
     }
 }
 

@@ -5,7 +5,9 @@
 //! stays dynamic, so it still collides with walls and other bodies: each step its velocity is
 //! set to close the gap to the hold point (a critically damped spring in velocity form, capped
 //! in speed), its spin is damped and gravity is off; dropping restores gravity and keeps its
-//! velocity. Units: metres, seconds, kilograms. Main thread, before the pipeline step.
+//! velocity; throwing also gives it a speed along the view. Because it stays a dynamic body
+//! driven by velocity, a wall stops it (and the carrier lets go once the body is stuck more
+//! than `break_distance` behind it). Units: metres, seconds, kilograms. Main thread, before the pipeline step.
 //! Must not: read devices (game rules set [`Carrier::request`]).
 
 use glam::{Quat, Vec3};
@@ -17,11 +19,15 @@ use super::convert::{vec_from_rapier, vec_to_rapier};
 use crate::ecs::Transform;
 
 /// What the game asks of a [`Carrier`] this step.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum CarryRequest {
     /// Pick up the dynamic body under the view's centre, within reach.
     Pick,
+    /// Let go: gravity back on, the body keeps its velocity.
     Drop,
+    /// Let go and throw: the body leaves along the view at `speed` m/s (added to the
+    /// carrier's motion the body already had).
+    Throw { speed: f32 },
 }
 
 /// Carries at most one body at a point in front of its entity's view.
@@ -86,7 +92,18 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
         let (holding, reach, max_mass) =
             (carrier.held.is_some(), carrier.reach, carrier.max_mass_kg);
         match request {
-            Some(CarryRequest::Drop) => release(rapier, world, entity),
+            Some(CarryRequest::Drop) => {
+                let _ = release(rapier, world, entity);
+            }
+            Some(CarryRequest::Throw { speed }) => {
+                if let Some(handle) = release(rapier, world, entity)
+                    && let Some(body) = rapier.bodies.get_mut(handle)
+                    && speed.is_finite()
+                {
+                    let v = vec_from_rapier(body.linvel()) + view * speed;
+                    body.set_linvel(vec_to_rapier(v), true);
+                }
+            }
             Some(CarryRequest::Pick) if !holding => {
                 if let Some((picked, handle)) = pick(rapier, eye, view, reach, ignore_body)
                     && let Some(body) = rapier.bodies.get_mut(handle)
@@ -110,17 +127,17 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
         let carrier = *carrier;
         let handle = world.get::<&BodyHandle>(held).map(|h| h.0).ok();
         let Some(handle) = handle else {
-            release(rapier, world, entity);
+            let _ = release(rapier, world, entity);
             continue;
         };
         let target = eye + view * carrier.hold_distance;
         let Some(body) = rapier.bodies.get_mut(handle) else {
-            release(rapier, world, entity);
+            let _ = release(rapier, world, entity);
             continue;
         };
         let gap = target - vec_from_rapier(body.translation());
         if gap.length() > carrier.break_distance {
-            release(rapier, world, entity);
+            let _ = release(rapier, world, entity);
             continue;
         }
         let velocity = (gap * (GAP_CLOSED_PER_STEP / dt)).clamp_length_max(carrier.max_speed);
@@ -165,17 +182,16 @@ fn pick(
     Some((entity, handle))
 }
 
-/// Lets go of the carrier's body: gravity back on, velocity kept.
-fn release(rapier: &mut RapierWorld, world: &mut World, carrier: Entity) {
-    let Ok(c) = world.query_one_mut::<&mut Carrier>(carrier) else {
-        return;
-    };
-    let Some(held) = c.held.take() else {
-        return;
-    };
-    if let Ok(handle) = world.get::<&BodyHandle>(held)
-        && let Some(body) = rapier.bodies.get_mut(handle.0)
-    {
-        body.set_gravity_scale(1.0, true);
-    }
+/// Lets go of the carrier's body: gravity back on, velocity kept. Returns the released body.
+fn release(
+    rapier: &mut RapierWorld,
+    world: &mut World,
+    carrier: Entity,
+) -> Option<rapier3d::prelude::RigidBodyHandle> {
+    let c = world.query_one_mut::<&mut Carrier>(carrier).ok()?;
+    let held = c.held.take()?;
+    let handle = world.get::<&BodyHandle>(held).ok()?.0;
+    let body = rapier.bodies.get_mut(handle)?;
+    body.set_gravity_scale(1.0, true);
+    Some(handle)
 }

@@ -6,7 +6,8 @@
 //! with rapier's `KinematicCharacterController` (shape casts against the world as of the last
 //! step). A character is an entity with these components, a capsule [`super::Collider`] and a
 //! kinematic [`super::RigidBody`] ([`character_bundle`] makes one); its `Transform` is the
-//! capsule's centre. Units: metres, seconds, kilograms; +Y up. Main thread, before the
+//! capsule's centre. Standing on a kinematic body moved by the game (a lift) carries the
+//! character with it (`ride.rs`). Units: metres, seconds, kilograms; +Y up. Main thread, before the
 //! pipeline step. Must not: read devices (game rules fill [`CharacterInput`]).
 
 use glam::Vec3;
@@ -14,10 +15,11 @@ use hecs::{Entity, World};
 use rapier3d::control::{
     CharacterAutostep, CharacterCollision, CharacterLength, KinematicCharacterController,
 };
-use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter};
+use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, RigidBodySet};
 
 use super::bodies::{BodyHandle, Collider, RigidBody};
 use super::convert::{vec_from_rapier, vec_to_rapier};
+use super::ride::{PlatformMove, ride, walk_queries};
 use super::shapes::{ColliderShape, ShapeError};
 use crate::ecs::Transform;
 
@@ -83,8 +85,11 @@ pub struct CharacterState {
     pub grounded: bool,
     /// On a slope too steep to stand on.
     pub sliding: bool,
-    /// Metres moved in the last step.
+    /// Metres moved in the last step by the character's own motion (walking, falling).
     pub last_translation: Vec3,
+    /// Metres the kinematic platform it stands on (a lift, a moving floor) carried it in the
+    /// last step, on top of [`Self::last_translation`] (`sim/physics/ride.rs`).
+    pub platform_motion: Vec3,
 }
 
 /// The components of a character with a capsule `height` metres tall (feet to head) and
@@ -139,14 +144,21 @@ fn rapier_controller(c: &CharacterController) -> KinematicCharacterController {
 }
 
 /// Moves every character by one step of `dt` seconds (entity order: deterministic) and sets
-/// its body's next kinematic pose; pushes the dynamic bodies it ran into.
-pub(super) fn move_characters(rapier: &mut RapierWorld, world: &mut World, dt: f32) {
+/// its body's next kinematic pose; pushes the dynamic bodies it ran into; carries it by the
+/// motion of the platform in `platforms` it stands on.
+pub(super) fn move_characters(
+    rapier: &mut RapierWorld,
+    world: &mut World,
+    platforms: &[PlatformMove],
+    dt: f32,
+) {
     let mut characters: Vec<Entity> = world
         .query::<(Entity, &CharacterController, &BodyHandle)>()
         .iter()
         .map(|(e, ..)| e)
         .collect();
     characters.sort_by_key(|e| e.to_bits());
+    let no_bodies = RigidBodySet::new();
     for entity in characters {
         let Ok((controller, input, state, handle)) = world.query_one_mut::<(
             &CharacterController,
@@ -198,7 +210,7 @@ pub(super) fn move_characters(rapier: &mut RapierWorld, world: &mut World, dt: f
             .exclude_rigid_body(handle.0)
             .exclude_sensors();
         let movement = {
-            let queries = rapier.query_pipeline_with_filter(filter);
+            let queries = walk_queries(rapier, &no_bodies, filter);
             kcc.move_shape(dt, &queries, &*shape, &pose, vec_to_rapier(desired), |c| {
                 collisions.push(c)
             })
@@ -229,8 +241,21 @@ pub(super) fn move_characters(rapier: &mut RapierWorld, world: &mut World, dt: f
                 &collisions,
             );
         }
+        // Standing on a lift or a moving door: carried by its motion of this step.
+        let mut after = pose;
+        after.translation += movement.translation;
+        let ridden = ride(
+            rapier,
+            platforms,
+            &*shape,
+            &after,
+            handle.0,
+            controller.skin,
+            dt,
+        );
+        state.platform_motion = ridden;
         if let Some(body) = rapier.bodies.get_mut(handle.0) {
-            body.set_next_kinematic_translation(pose.translation + movement.translation);
+            body.set_next_kinematic_translation(after.translation + vec_to_rapier(ridden));
         }
     }
 }

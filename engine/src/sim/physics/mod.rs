@@ -11,6 +11,7 @@ mod bodies;
 mod carry;
 mod character;
 mod convert;
+mod ride;
 mod sensors;
 mod shapes;
 mod world;

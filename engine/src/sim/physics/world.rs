@@ -3,9 +3,8 @@
 //! Owns: rapier's world (bodies, colliders, broad and narrow phase, islands, CCD solver), the
 //! entity ↔ body map, the list of bodies that moved last step (for render interpolation and
 //! the "sleeping bodies write nothing" rule) and the per-step counts. One step, in order:
-//! spawn new bodies → remove dead ones → game-driven kinematic poses in → carriers → characters
-//! → rapier step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out →
-//! sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
+//! spawn new bodies → remove dead ones → game-driven kinematic bodies' motions (`ride`) →
+//! carriers → characters (riding those motions) → rapier step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out → sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
 //! inputs give bit-identical results on the same build and machine (rapier runs single-threaded
 //! here; every ECS walk is in entity order).
 //! Must not: render, read devices, or let rapier's math types out (see `convert`).
@@ -18,7 +17,7 @@ use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, Ray, RigidBody
 
 use super::bodies::{self, BodyHandle, entity_of};
 use super::convert::{pose_from_rapier, pose_to_rapier, vec_from_rapier, vec_to_rapier};
-use super::{carry, character, sensors};
+use super::{carry, character, ride, sensors};
 
 /// Gravity, m/s², along −Y.
 pub const GRAVITY: f32 = 9.81;
@@ -81,9 +80,9 @@ impl PhysicsWorld {
         let dt = step_seconds as f32;
         bodies::spawn_new(&mut self.rapier, world, &mut self.handles);
         bodies::remove_dead(&mut self.rapier, world, &mut self.handles);
-        bodies::push_kinematic(&mut self.rapier, world);
+        let platforms = ride::platform_moves(&mut self.rapier, world);
         carry::drive_carriers(&mut self.rapier, world, dt);
-        character::move_characters(&mut self.rapier, world, dt);
+        character::move_characters(&mut self.rapier, world, &platforms, dt);
         self.rapier.integration_parameters.dt = dt;
         self.rapier.step();
         let transform_writes = bodies::sync_moved(&self.rapier, world, &mut self.moving);
@@ -203,6 +202,31 @@ impl PhysicsWorld {
                     .intersects_ray(collider.position(), &ray, length)
             })
         })
+    }
+
+    /// Every body's simulated state as words, in entity order, for state hashes: the entity's
+    /// bits, the pose (translation, rotation), linear and angular velocity (f32 bits) and
+    /// whether it sleeps.
+    pub fn state_words(&self) -> Vec<u64> {
+        let mut bodies: Vec<(&Entity, &RigidBodyHandle)> = self.handles.iter().collect();
+        bodies.sort_by_key(|(e, _)| e.to_bits());
+        let mut out = Vec::with_capacity(bodies.len() * 15);
+        for (entity, &handle) in bodies {
+            let Some(b) = self.rapier.bodies.get(handle) else {
+                continue;
+            };
+            out.push(entity.to_bits().get());
+            let (t, r) = pose_from_rapier(b.position());
+            let (v, w) = (vec_from_rapier(b.linvel()), vec_from_rapier(b.angvel()));
+            let floats = t
+                .to_array()
+                .into_iter()
+                .chain(r.to_array())
+                .chain(v.to_array());
+            out.extend(floats.chain(w.to_array()).map(|x| u64::from(x.to_bits())));
+            out.push(u64::from(b.is_sleeping()));
+        }
+        out
     }
 
     /// The handle of `entity`'s body, if it has one.

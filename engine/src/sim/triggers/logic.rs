@@ -38,6 +38,13 @@ struct RuleState {
     times: Vec<(bool, u32)>,
 }
 
+/// FNV-1a of `text` (names folded into state hashes).
+pub(super) fn text_bits(text: &str) -> u64 {
+    text.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
 /// The level's rules and their state.
 #[derive(Clone, Debug, Default)]
 pub struct RuleBook {
@@ -108,6 +115,19 @@ impl RuleBook {
 
     pub fn rules(&self) -> &[Rule] {
         &self.rules
+    }
+
+    /// The rules' state as words, rule by rule (last value, spent, each `Times` node's value
+    /// and count), for state hashes.
+    pub fn state_words(&self, out: &mut Vec<u64>) {
+        for s in &self.state {
+            out.push(u64::from(s.was) | u64::from(s.spent) << 1);
+            out.extend(
+                s.times
+                    .iter()
+                    .map(|&(b, n)| u64::from(b) | u64::from(n) << 1),
+            );
+        }
     }
 
     /// Evaluates every rule on `facts`; returns the rules that fired and, in order, the

@@ -26,7 +26,7 @@ pub use laser::{LaserBeam, LaserPath, trace_laser};
 pub use logic::{Facts, RuleBook, RuleFiring};
 pub use plan::{
     Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
-    PlannedVolume, Rule,
+    PlannedUsable, PlannedVolume, Rule, Usable,
 };
 pub use runtime::{Effect, LevelLogic, Outcome, StepLog, world_from_model};
 pub use volumes::{OccupantKind, Phase, VolumeEvent, VolumeFacts, VolumeTracker};

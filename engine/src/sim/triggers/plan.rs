@@ -29,6 +29,22 @@ pub struct GameplayPlan {
     pub volumes: Vec<PlannedVolume>,
     pub lasers: Vec<PlannedLaser>,
     pub rules: Vec<Rule>,
+    pub usables: Vec<PlannedUsable>,
+}
+
+/// An instance the player can use: its prompt and the event using it sends.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannedUsable {
+    pub instance: usize,
+    pub usable: Usable,
+}
+
+/// On an entity the player can use (spawned from the level's `usables`): what the HUD shows
+/// while the player looks at it, and the event (`Event(name)` in the rules) using it sends.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Usable {
+    pub prompt: String,
+    pub event: String,
 }
 
 /// A sound of the level: its name, file, and the decoded sound.

@@ -174,6 +174,42 @@ impl LevelLogic {
         self.steps
     }
 
+    /// The logic's state as words in a fixed order, for state hashes: steps, outcome, each
+    /// rule's state, each volume's occupants (entity bits and kind, in the tracker's order),
+    /// each clip's playhead (time bits, direction, paused, finished) and the events waiting
+    /// for the next step.
+    pub fn state_words(&self) -> Vec<u64> {
+        let mut out = vec![self.steps];
+        out.push(match &self.outcome {
+            None => 0,
+            Some(Outcome::Won(r)) => 1 | super::logic::text_bits(r) << 2,
+            Some(Outcome::Lost(r)) => 2 | super::logic::text_bits(r) << 2,
+        });
+        self.rules.state_words(&mut out);
+        for v in 0..self.volumes.len() {
+            out.push(u64::MAX);
+            for (e, kind) in self.volumes.occupants(v) {
+                out.push(e.to_bits().get());
+                out.push(kind as u64);
+            }
+        }
+        for c in 0..self.animations.clips().len() {
+            match self.animations.playhead(c) {
+                None => out.push(u64::MAX - 1),
+                Some(p) => {
+                    out.push(p.time_seconds.to_bits());
+                    out.push(
+                        u64::from(p.reversed)
+                            | u64::from(p.paused) << 1
+                            | u64::from(p.finished) << 2,
+                    );
+                }
+            }
+        }
+        out.extend(self.sent.iter().map(|s| super::logic::text_bits(s)));
+        out
+    }
+
     /// One fixed step of `dt_seconds`; returns the effects the engine carries out.
     pub fn step(
         &mut self,

@@ -1,0 +1,172 @@
+//! [`FirstPersonGame`]: a level played in first person — the game the `playground` tool runs
+//! and the platform tests replay. Spawns the level and a [`FirstPersonPlayer`] at the level's
+//! camera; each fixed step turns the step's actions into a `PlayerInput` (`player_input.rs`,
+//! with the player's settings), steps the player and sends the event of what it used to the
+//! level's rules; keeps a log of what happened (events sent, rules fired, the outcome) for
+//! tools and tests; in a window, draws a crosshair and the focused usable's prompt.
+//!
+//! Main thread, inside the engine's hooks. Must not: read devices (the step's actions come
+//! from the devices or from a replay, alike).
+
+use std::path::{Path, PathBuf};
+
+use super::action_set::ActionSet;
+use super::engine::{Engine, Environment};
+use super::game::{Game, LevelEvent, SetupError, Step};
+use super::level::SpawnedLevel;
+use super::player_input::player_input;
+use super::replay_error::ReplayError;
+use super::replay_format::level_hash;
+use super::settings::Settings;
+use super::step_input::StepInput;
+use crate::assets::{AssetResult, AssetRoot};
+use crate::level::{PlayableLevel, load_level};
+use crate::player::{FirstPersonConfig, FirstPersonPlayer};
+
+/// The game name replays of [`FirstPersonGame`] carry.
+pub const FIRST_PERSON_GAME: &str = "playground";
+
+/// Something that happened, with the fixed step it happened in (0-based).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Happened {
+    /// The player used a usable: its event, sent to the rules.
+    Used(String),
+    /// A rule's condition rose (`then` ran) or fell (`otherwise` ran).
+    Rule { name: String, rising: bool },
+    /// The level was won or lost; the rule's name.
+    Ended(String),
+}
+
+/// A level played in first person.
+pub struct FirstPersonGame {
+    level_path: PathBuf,
+    level: PlayableLevel,
+    settings: Settings,
+    config: FirstPersonConfig,
+    player: Option<FirstPersonPlayer>,
+    spawned: SpawnedLevel,
+    log: Vec<(u64, Happened)>,
+    start_input: Option<StepInput>,
+}
+
+impl FirstPersonGame {
+    /// Loads `level_path` (paths confined to `root`); the level is spawned by [`Game::setup`].
+    pub fn load(level_path: &Path, root: &AssetRoot, settings: Settings) -> AssetResult<Self> {
+        Ok(Self {
+            level_path: level_path.to_path_buf(),
+            level: load_level(level_path, root)?,
+            settings,
+            config: FirstPersonConfig::default(),
+            player: None,
+            spawned: SpawnedLevel::default(),
+            log: Vec::new(),
+            start_input: None,
+        })
+    }
+
+    /// The environment (sun, sky, render settings, camera) of the level, for `Engine::new`.
+    pub fn environment(&self) -> Environment {
+        Environment::of(&self.level.scene)
+    }
+
+    /// The level file.
+    pub fn level_path(&self) -> &Path {
+        &self.level_path
+    }
+
+    /// The level's id in replays: its file name without the extension.
+    pub fn level_id(&self) -> String {
+        self.level_path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_default()
+    }
+
+    /// The content hash of the level file now (replays must match it).
+    pub fn level_hash(&self) -> Result<u64, ReplayError> {
+        level_hash(&self.level_path)
+    }
+
+    /// Where the steps' input comes from once set up (a replay in a window; the devices by
+    /// default).
+    pub fn start_with(&mut self, input: StepInput) {
+        self.start_input = Some(input);
+    }
+
+    /// The player, once set up.
+    pub fn player(&self) -> Option<&FirstPersonPlayer> {
+        self.player.as_ref()
+    }
+
+    /// The level's instances, once set up.
+    pub fn spawned(&self) -> &SpawnedLevel {
+        &self.spawned
+    }
+
+    /// What happened so far, in order, with the step index.
+    pub fn log(&self) -> &[(u64, Happened)] {
+        &self.log
+    }
+}
+
+impl Game for FirstPersonGame {
+    fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {
+        engine.set_actions(ActionSet::standard());
+        self.spawned = engine.spawn_level(&self.level);
+        let camera = self.level.scene.camera;
+        let player = FirstPersonPlayer::at_view(engine.world_mut(), &camera, self.config)
+            .map_err(|e| format!("{}: the player: {e}", self.level_path.display()))?;
+        self.player = Some(player);
+        if let Some(input) = self.start_input.take() {
+            engine.set_step_input(input);
+        }
+        Ok(())
+    }
+
+    fn fixed_step(&mut self, step: &mut Step<'_>) {
+        let Some(player) = self.player.as_mut() else {
+            return;
+        };
+        let input = player_input(
+            step.actions,
+            step.action_set,
+            &self.settings,
+            step.step_seconds,
+        );
+        let done = player.step(step.world, step.physics, &step.queries, &input);
+        if let Some(event) = done.used {
+            step.commands.send_event(event.clone());
+            self.log.push((step.index, Happened::Used(event)));
+        }
+    }
+
+    fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
+        let happened = match event {
+            LevelEvent::Rule { name, firing } => Happened::Rule {
+                name: name.clone(),
+                rising: firing.rising,
+            },
+            LevelEvent::Ended(outcome) => Happened::Ended(format!("{outcome:?}")),
+            _ => return,
+        };
+        self.log.push((step.index, happened));
+    }
+
+    fn has_ui(&self) -> bool {
+        true
+    }
+
+    fn ui(&mut self, ctx: &egui::Context) {
+        let prompt = self.player.as_ref().and_then(|p| p.prompt());
+        egui::Area::new(egui::Id::unique("crosshair"))
+            .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+            .show(ctx, |ui| {
+                ui.vertical_centered(|ui| {
+                    ui.label(egui::RichText::new("+").size(20.0));
+                    if let Some(prompt) = prompt {
+                        ui.label(egui::RichText::new(prompt).size(18.0).strong());
+                    }
+                });
+            });
+    }
+}

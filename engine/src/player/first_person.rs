@@ -1,0 +1,280 @@
+//! [`FirstPersonPlayer`]: walking, looking, using and carrying in first person.
+//!
+//! Owns: the player's yaw and pitch, its two entities — a character (capsule, kinematic
+//! controller: `sim::physics::character`) and a camera whose `Transform` is the eye (with a
+//! `CameraRig` the renderer follows and a `Carrier` that holds bodies in front of it) — and
+//! turning one [`PlayerInput`] per fixed step into the character's input, the eye's pose, the
+//! focus under the crosshair and carrying requests.
+//!
+//! Mapping (the standard actions, `app::player_input`): move axes walk in the view's frame
+//! (yaw only, so looking down does not slow walking); `use` uses the focused usable (its
+//! event is returned for the game to send to the rules), picks up the focused dynamic body,
+//! or drops the held one; `primary` throws the held body along the view; `secondary` drops it.
+//!
+//! Conventions: right-handed, +Y up, metres, seconds, radians; yaw about +Y, 0 looking along
+//! −Z, positive turning left; pitch positive up, clamped to ±`max_pitch`; no roll. The eye
+//! follows the body's simulated pose as of the last physics step (it lags the body by one
+//! fixed step, 1/60 s). What is under the crosshair comes from ray queries on the last
+//! rendered frame's scene, which a replay at another frame rate sees a few steps older.
+//! Main thread, fixed step, before physics. Must not: read devices or send events itself.
+
+use glam::{EulerRot, Quat, Vec2, Vec3};
+use hecs::{Entity, World};
+
+use super::input::PlayerInput;
+use super::interact::{Focus, FocusKind, focus};
+use crate::assets::CameraDesc;
+use crate::ecs::{CameraRig, Transform};
+use crate::query::Queries;
+use crate::sim::physics::{
+    Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, ShapeError,
+    character_bundle,
+};
+
+/// How a first-person player is built and moves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FirstPersonConfig {
+    /// Capsule height, feet to head, metres.
+    pub height: f32,
+    /// Capsule radius, metres.
+    pub radius: f32,
+    /// Eye above the feet, metres.
+    pub eye_height: f32,
+    /// Largest pitch up or down, radians.
+    pub max_pitch: f32,
+    /// Longest use and pick ray, metres.
+    pub reach: f32,
+    /// Where a held body floats, metres along the view.
+    pub hold_distance: f32,
+    /// Speed a throw gives the held body, m/s.
+    pub throw_speed: f32,
+    /// Vertical field of view, radians.
+    pub vertical_fov: f32,
+    pub controller: CharacterController,
+}
+
+impl Default for FirstPersonConfig {
+    fn default() -> Self {
+        Self {
+            height: 1.8,
+            radius: 0.3,
+            eye_height: 1.65,
+            max_pitch: 89f32.to_radians(),
+            reach: 2.5,
+            hold_distance: 1.3,
+            throw_speed: 6.0,
+            vertical_fov: 70f32.to_radians(),
+            controller: CharacterController::default(),
+        }
+    }
+}
+
+/// What a step of the player did that the game carries out.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PlayerStep {
+    /// The event of the usable the player used this step (for `Commands::send_event`).
+    pub used: Option<String>,
+}
+
+/// A first-person player in a world.
+#[derive(Clone, Debug)]
+pub struct FirstPersonPlayer {
+    /// The character entity (capsule centre at its `Transform`).
+    pub body: Entity,
+    /// The eye: `Transform`, `CameraRig`, `Carrier`.
+    pub camera: Entity,
+    /// Radians, see the module doc.
+    pub yaw: f32,
+    /// Radians, positive up.
+    pub pitch: f32,
+    pub config: FirstPersonConfig,
+    focus: Option<Focus>,
+}
+
+impl FirstPersonPlayer {
+    /// Spawns a player standing with its feet at `feet`, looking along `yaw` (level).
+    pub fn spawn(
+        world: &mut World,
+        feet: Vec3,
+        yaw: f32,
+        config: FirstPersonConfig,
+    ) -> Result<Self, ShapeError> {
+        let centre = feet + Vec3::Y * (config.height * 0.5 + config.controller.skin);
+        let body = world.spawn(character_bundle(
+            centre,
+            config.height,
+            config.radius,
+            config.controller,
+        )?);
+        let mut player = Self {
+            body,
+            camera: body,
+            yaw,
+            pitch: 0.0,
+            config,
+            focus: None,
+        };
+        let eye = Transform {
+            translation: centre + player.eye_offset(),
+            rotation: player.rotation(),
+            scale: Vec3::ONE,
+        };
+        let rig = CameraRig {
+            vertical_fov: config.vertical_fov,
+            aperture_radius: 0.0,
+            focus_distance: 2.0,
+        };
+        let carrier = Carrier {
+            hold_distance: config.hold_distance,
+            reach: config.reach,
+            ignore: Some(body),
+            ..Carrier::default()
+        };
+        player.camera = world.spawn((eye, rig, carrier));
+        Ok(player)
+    }
+
+    /// Spawns a player whose eye is where `camera` (a level's camera) is, looking towards its
+    /// target horizontally.
+    pub fn at_view(
+        world: &mut World,
+        camera: &CameraDesc,
+        config: FirstPersonConfig,
+    ) -> Result<Self, ShapeError> {
+        let eye = Vec3::from(camera.position);
+        let ahead = Vec3::from(camera.look_at) - eye;
+        let yaw = if ahead.x == 0.0 && ahead.z == 0.0 {
+            0.0
+        } else {
+            (-ahead.x).atan2(-ahead.z)
+        };
+        Self::spawn(world, eye - Vec3::Y * config.eye_height, yaw, config)
+    }
+
+    /// The eye's rotation (yaw, then pitch; no roll).
+    pub fn rotation(&self) -> Quat {
+        Quat::from_euler(EulerRot::YXZ, self.yaw, self.pitch, 0.0)
+    }
+
+    /// Unit view direction.
+    pub fn view(&self) -> Vec3 {
+        self.rotation() * Vec3::NEG_Z
+    }
+
+    /// From the capsule's centre to the eye, metres.
+    fn eye_offset(&self) -> Vec3 {
+        Vec3::Y * (self.config.eye_height - self.config.height * 0.5)
+    }
+
+    /// The body's capsule centre (metres), as of the last physics step.
+    pub fn position(&self, world: &World) -> Vec3 {
+        world
+            .get::<&Transform>(self.body)
+            .map_or(Vec3::ZERO, |t| t.translation)
+    }
+
+    /// The feet (bottom of the capsule less the controller's gap), metres.
+    pub fn feet(&self, world: &World) -> Vec3 {
+        self.position(world) - Vec3::Y * (self.config.height * 0.5 + self.config.controller.skin)
+    }
+
+    /// The eye, metres.
+    pub fn eye(&self, world: &World) -> Vec3 {
+        self.position(world) + self.eye_offset()
+    }
+
+    /// The body being carried, if any.
+    pub fn held(&self, world: &World) -> Option<Entity> {
+        world.get::<&Carrier>(self.camera).ok().and_then(|c| c.held)
+    }
+
+    /// What was under the crosshair at the last step.
+    pub fn focus(&self) -> Option<&Focus> {
+        self.focus.as_ref()
+    }
+
+    /// The prompt of the usable under the crosshair, for the HUD.
+    pub fn prompt(&self) -> Option<&str> {
+        match &self.focus.as_ref()?.kind {
+            FocusKind::Usable(u) => Some(&u.prompt),
+            _ => None,
+        }
+    }
+
+    /// One fixed step: turn by `input.look`, set the character's walk, place the eye, find
+    /// the focus and act on `use`, `primary` and `secondary`.
+    pub fn step(
+        &mut self,
+        world: &mut World,
+        physics: &PhysicsWorld,
+        queries: &Queries<'_>,
+        input: &PlayerInput,
+    ) -> PlayerStep {
+        let look = if input.look.is_finite() {
+            input.look
+        } else {
+            Vec2::ZERO
+        };
+        self.yaw = (self.yaw + look.x).rem_euclid(std::f32::consts::TAU);
+        let limit = self.config.max_pitch;
+        self.pitch = (self.pitch + look.y).clamp(-limit, limit);
+
+        let facing = Quat::from_rotation_y(self.yaw);
+        let mut axes = if input.move_axes.is_finite() {
+            input.move_axes
+        } else {
+            Vec2::ZERO
+        };
+        if axes.length_squared() > 1.0 {
+            axes = axes.normalize();
+        }
+        let walk = facing * Vec3::X * axes.x + facing * Vec3::NEG_Z * axes.y;
+        if let Ok(mut c) = world.get::<&mut CharacterInput>(self.body) {
+            *c = CharacterInput {
+                move_direction: walk,
+                run: input.run,
+                jump: input.jump,
+            };
+        }
+
+        // The body's simulated pose, not its `Transform` (which the frame may have posed
+        // between two steps): the same steps give the same eye at any frame rate.
+        let centre = physics
+            .pose(self.body)
+            .map_or_else(|| self.position(world), |(t, _)| t);
+        let eye = centre + self.eye_offset();
+        let rotation = self.rotation();
+        if let Ok(mut t) = world.get::<&mut Transform>(self.camera) {
+            t.translation = eye;
+            t.rotation = rotation;
+        }
+        self.focus = focus(world, queries, eye, self.view(), self.config.reach);
+
+        let held = self.held(world);
+        let mut out = PlayerStep::default();
+        let request = if input.primary_pressed && held.is_some() {
+            Some(CarryRequest::Throw {
+                speed: self.config.throw_speed,
+            })
+        } else if (input.use_pressed || input.secondary_pressed) && held.is_some() {
+            Some(CarryRequest::Drop)
+        } else if input.use_pressed {
+            match self.focus.as_ref().map(|f| &f.kind) {
+                Some(FocusKind::Usable(u)) => {
+                    out.used = Some(u.event.clone());
+                    None
+                }
+                Some(FocusKind::Body) => Some(CarryRequest::Pick),
+                _ => None,
+            }
+        } else {
+            None
+        };
+        if let Some(request) = request
+            && let Ok(mut c) = world.get::<&mut Carrier>(self.camera)
+        {
+            c.request = Some(request);
+        }
+        out
+    }
+}

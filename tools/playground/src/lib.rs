@@ -1,0 +1,153 @@
+//! The `playground` tool as a library: play a platform test level in first person
+//! (`candela::app::FirstPersonGame`) in a window, or headless — replaying a recording step by
+//! step and summing it up in one line, or timing the replay (`--bench`: fixed steps per second
+//! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
+//!
+//! Owns: the arguments, loading (a bad level or replay fails before anything runs) and the
+//! summary. Must not: contain game logic (the engine's `FirstPersonGame` has it). Recording
+//! (`--record`) in a window is not wired yet: the window runner has no end-of-run hook to
+//! write the file (record with the bot, `engine/examples/record_platform_replays.rs`).
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{Context, bail};
+use candela::app::{
+    ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, InputMap, Replay, ReplayTarget,
+    Settings, StepInput, WindowConfig, run_window,
+};
+use candela::assets::AssetRoot;
+use candela::render::scaling::ScalingTarget;
+use candela::render::{RenderConfig, TracerChoice};
+use clap::Parser;
+
+/// Play a level in first person: WASD to walk, mouse to look (click to capture it), E to use
+/// or to pick up and drop, left button to throw, Space to jump, Shift to run.
+#[derive(Clone, Debug, Parser)]
+#[command(name = "playground", version)]
+pub struct Args {
+    /// The level file (RON).
+    pub level: PathBuf,
+    /// Folder every path of the level must stay in (default: the level file's folder).
+    #[arg(long)]
+    pub asset_root: Option<PathBuf>,
+    /// Play this recording instead of the devices.
+    #[arg(long)]
+    pub replay: Option<PathBuf>,
+    /// Record the run to this file (not available yet; see the module doc).
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// No window: run fixed steps on the CPU tracer at 16×9 and print a summary.
+    #[arg(long)]
+    pub headless: bool,
+    /// Headless: fixed steps to run (default: the replay's length, else 600).
+    #[arg(long)]
+    pub steps: Option<u64>,
+    /// Headless: time the run (eight steps per rendered frame) and print steps per second.
+    #[arg(long)]
+    pub bench: bool,
+}
+
+fn asset_root(level: &Path, root: Option<&Path>) -> anyhow::Result<AssetRoot> {
+    let dir = match root {
+        Some(r) => r.to_path_buf(),
+        None => level
+            .parent()
+            .context("the level has no folder")?
+            .to_path_buf(),
+    };
+    Ok(AssetRoot::new(dir)?)
+}
+
+/// Runs what `args` asks; returns the summary line.
+pub fn run(args: &Args) -> anyhow::Result<String> {
+    if args.record.is_some() {
+        bail!("--record is not available yet; record with the bot (docs/LEVELS.md)");
+    }
+    let root = asset_root(&args.level, args.asset_root.as_deref())?;
+    let mut game = FirstPersonGame::load(&args.level, &root, Settings::default())?;
+    let set = ActionSet::standard();
+    let (id, hash) = (game.level_id(), game.level_hash()?);
+    let target = ReplayTarget {
+        game: FIRST_PERSON_GAME,
+        level_id: &id,
+        level_hash: hash,
+        step_hz: 60.0,
+        actions: &set,
+    };
+    let replay = match &args.replay {
+        Some(path) => Some(Replay::open(path, &target)?),
+        None => None,
+    };
+    if args.headless || args.bench {
+        return headless(args, game, replay);
+    }
+    if let Some(replay) = replay {
+        game.start_with(StepInput::Replay(replay));
+    }
+    let config = WindowConfig {
+        title: format!("Candela playground — {}", args.level.display()),
+        input: InputMap::fly_camera_defaults().merged(set.default_map()),
+        ..WindowConfig::default()
+    };
+    let environment = game.environment();
+    // The tracer `auto` picks, at 640×360 and 1 spp, holding 30 fps by workload scaling.
+    let render = RenderConfig {
+        tracer: TracerChoice::Auto,
+        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        ..RenderConfig::cpu(640, 360)
+    };
+    let report = run_window(config, render, environment, &mut game)?;
+    Ok(format!("{} frames", report.frames))
+}
+
+fn headless(
+    args: &Args,
+    mut game: FirstPersonGame,
+    replay: Option<Replay>,
+) -> anyhow::Result<String> {
+    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.environment())?;
+    game.setup(&mut engine)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    let replayed = replay.as_ref().map(|r| (r.path().to_path_buf(), r.steps()));
+    // A replay ends when a step finds no frame left: one step past its length.
+    let steps = args
+        .steps
+        .or(replayed.as_ref().map(|r| r.1 + 1))
+        .unwrap_or(600);
+    if let Some(replay) = replay {
+        engine.set_step_input(StepInput::Replay(replay));
+    }
+    let per_frame: u64 = if args.bench { 8 } else { 1 };
+    let start = Instant::now();
+    let mut done = 0;
+    while done < steps {
+        let n = per_frame.min(steps - done);
+        engine.frame(n as f64 / 60.0, &mut game)?;
+        let _ = engine.rendered();
+        done += n;
+    }
+    let seconds = start.elapsed().as_secs_f64();
+    let hash = engine.state_hash();
+    let outcome = engine.logic().outcome().cloned();
+    let finished = engine.replay_finished();
+    let _ = engine.shutdown();
+    let mut line = format!(
+        "{}: {done} steps, outcome {outcome:?}, state hash {hash:016x}",
+        args.level.display()
+    );
+    if let Some((path, recorded)) = &replayed {
+        line += &format!(", replay {} ({recorded} steps)", path.display());
+        if !finished {
+            bail!("{line}: the replay did not finish in {done} steps");
+        }
+    }
+    if args.bench {
+        let rate = done as f64 / seconds;
+        line += &format!(
+            ", {rate:.0} steps/s = {:.1}× real time at 60 Hz ({per_frame} steps per 16×9 CPU frame)",
+            rate / 60.0
+        );
+    }
+    Ok(line)
+}
