@@ -15,7 +15,7 @@ use std::path::PathBuf;
 use anyhow::{Context, bail};
 use candela::app::{
     ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Happened, KeyCode,
-    MOUSE_RADIANS_PER_COUNT, Recorder, Settings, StepInput,
+    MOUSE_RADIANS_PER_COUNT, Recorder, StepInput,
 };
 use candela::assets::AssetRoot;
 use candela::ecs::Transform;
@@ -221,7 +221,7 @@ fn main() -> anyhow::Result<()> {
     let level = assets().join("test_scenes/platform/first_person.ron");
     let out = assets().join("test_scenes/platform/first_person.replay");
     let root = AssetRoot::new(assets())?;
-    let mut game = FirstPersonGame::load(&level, &root, Settings::default())?;
+    let mut game = FirstPersonGame::load(&level, &root)?;
     let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.environment())?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;

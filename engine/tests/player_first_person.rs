@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use candela::app::{
     ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Happened, Replay, ReplayTarget,
-    Settings, StepInput,
+    StepInput,
 };
 use candela::assets::AssetRoot;
 use candela::ecs::Transform;
@@ -40,7 +40,7 @@ fn play(per_frame: u64) -> anyhow::Result<Run> {
     let level = assets().join("test_scenes/platform/first_person.ron");
     let replay = assets().join("test_scenes/platform/first_person.replay");
     let root = AssetRoot::new(assets())?;
-    let mut game = FirstPersonGame::load(&level, &root, Settings::default())?;
+    let mut game = FirstPersonGame::load(&level, &root)?;
     let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.environment())?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;

@@ -17,11 +17,11 @@ use super::level::SpawnedLevel;
 use super::player_input::player_input;
 use super::replay_error::ReplayError;
 use super::replay_format::level_hash;
-use super::settings::Settings;
+use super::shell::{HudInfo, LevelEntry, ShellInfo};
 use super::step_input::StepInput;
 use crate::assets::{AssetResult, AssetRoot};
 use crate::level::{PlayableLevel, load_level};
-use crate::player::{FirstPersonConfig, FirstPersonPlayer};
+use crate::player::{FirstPersonConfig, FirstPersonPlayer, FocusKind};
 
 /// The game name replays of [`FirstPersonGame`] carry.
 pub const FIRST_PERSON_GAME: &str = "playground";
@@ -41,7 +41,9 @@ pub enum Happened {
 pub struct FirstPersonGame {
     level_path: PathBuf,
     level: PlayableLevel,
-    settings: Settings,
+    /// Draw the crosshair and prompt in `Game::ui` (the plain window runner); under the shell
+    /// its HUD draws them from `Game::hud` instead.
+    own_hud: bool,
     config: FirstPersonConfig,
     player: Option<FirstPersonPlayer>,
     spawned: SpawnedLevel,
@@ -51,11 +53,11 @@ pub struct FirstPersonGame {
 
 impl FirstPersonGame {
     /// Loads `level_path` (paths confined to `root`); the level is spawned by [`Game::setup`].
-    pub fn load(level_path: &Path, root: &AssetRoot, settings: Settings) -> AssetResult<Self> {
+    pub fn load(level_path: &Path, root: &AssetRoot) -> AssetResult<Self> {
         Ok(Self {
             level_path: level_path.to_path_buf(),
             level: load_level(level_path, root)?,
-            settings,
+            own_hud: true,
             config: FirstPersonConfig::default(),
             player: None,
             spawned: SpawnedLevel::default(),
@@ -91,6 +93,11 @@ impl FirstPersonGame {
     /// default).
     pub fn start_with(&mut self, input: StepInput) {
         self.start_input = Some(input);
+    }
+
+    /// Leaves the crosshair and prompt to the shell's HUD (`run_game`).
+    pub fn use_shell_hud(&mut self) {
+        self.own_hud = false;
     }
 
     /// The player, once set up.
@@ -130,7 +137,7 @@ impl Game for FirstPersonGame {
         let input = player_input(
             step.actions,
             step.action_set,
-            &self.settings,
+            step.settings,
             step.step_seconds,
         );
         let done = player.step(step.world, step.physics, &step.queries, &input);
@@ -153,10 +160,38 @@ impl Game for FirstPersonGame {
     }
 
     fn has_ui(&self) -> bool {
-        true
+        self.own_hud
+    }
+
+    fn shell_info(&self) -> ShellInfo {
+        let id = self.level_id();
+        ShellInfo {
+            title: "Candela Playground".into(),
+            subtitle: "Walk, carry, ride and use: the game platform's test level".into(),
+            levels: vec![LevelEntry {
+                name: id.replace('_', " "),
+                id,
+            }],
+        }
+    }
+
+    fn hud(&self) -> HudInfo {
+        HudInfo {
+            crosshair: true,
+            objective: Some("Look around: E uses a switch or picks up a cube".into()),
+            prompt: self.player.as_ref().and_then(|p| match &p.focus()?.kind {
+                FocusKind::Usable(u) => Some(u.prompt.clone()),
+                FocusKind::Body => Some("E  pick up · left mouse  throw".into()),
+                FocusKind::Surface => None,
+            }),
+            counters: Vec::new(),
+        }
     }
 
     fn ui(&mut self, ctx: &egui::Context) {
+        if !self.own_hud {
+            return;
+        }
         let prompt = self.player.as_ref().and_then(|p| p.prompt());
         egui::Area::new(egui::Id::unique("crosshair"))
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)

@@ -169,6 +169,7 @@ impl Engine {
             index,
             step_seconds: self.clock.step_seconds,
             commands: &mut self.commands,
+            settings: &self.settings,
         }
     }
 

@@ -22,6 +22,7 @@ use hecs::World;
 use super::action_frame::ActionFrame;
 use super::action_set::ActionSet;
 use super::input::InputState;
+use super::settings::Settings;
 use super::shell::{GameSummary, HudInfo, LevelStart, ShellInfo};
 use crate::query::Queries;
 use crate::sim::animation::FiredEvent;
@@ -116,6 +117,9 @@ pub struct Step<'a> {
     pub step_seconds: f64,
     /// Work for the engine after the step.
     pub commands: &'a mut Commands,
+    /// The player's settings as they are now (mouse sensitivity, invert Y for looking;
+    /// replays play with the engine's settings, the defaults headless).
+    pub settings: &'a Settings,
 }
 
 /// What the per-frame hook gets.
