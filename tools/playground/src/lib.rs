@@ -15,7 +15,8 @@ use std::time::Instant;
 use anyhow::{Context, bail};
 use candela::app::{
     ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Replay, ReplayTarget, StepInput,
-    UserDirs, WindowConfig, run_game, shell::ShellConfig,
+    UserDirs, WindowConfig, run_game,
+    shell::{Cue, LevelStart, ShellConfig, ShellInput},
 };
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
@@ -52,6 +53,13 @@ pub struct Args {
     /// Headless: soak the level for this many frames with random input (see `soak`).
     #[arg(long)]
     pub soak: Option<u64>,
+    /// Windowed: take screenshots of the title menu and of play (title.png, play.png in this
+    /// folder), walking forward a little, then quit (a look at the game under Xvfb).
+    #[arg(long)]
+    pub screenshots: Option<PathBuf>,
+    /// Windowed: show the stats overlay from the start (F3 toggles it).
+    #[arg(long)]
+    pub stats: bool,
     /// The soak's random seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -60,10 +68,11 @@ pub struct Args {
 fn asset_root(level: &Path, root: Option<&Path>) -> anyhow::Result<AssetRoot> {
     let dir = match root {
         Some(r) => r.to_path_buf(),
-        None => level
-            .parent()
-            .context("the level has no folder")?
-            .to_path_buf(),
+        // A bare file name's parent is "": the current folder.
+        None => match level.parent().context("the level has no folder")? {
+            p if p.as_os_str().is_empty() => PathBuf::from("."),
+            p => p.to_path_buf(),
+        },
     };
     Ok(AssetRoot::new(dir)?)
 }
@@ -113,11 +122,16 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     game.use_shell_hud();
     let config = WindowConfig {
         title: format!("Candela playground — {}", args.level.display()),
+        show_stats: args.stats,
         ..WindowConfig::default()
     };
     let shell = ShellConfig {
         dirs: UserDirs::from_env("playground")?,
-        cues: Vec::new(),
+        cues: args
+            .screenshots
+            .as_deref()
+            .map(|dir| screenshot_cues(dir, &game.level_id()))
+            .unwrap_or_default(),
     };
     let environment = game.environment();
     // The tracer `auto` picks, at 640×360 and 1 spp, holding 30 fps by workload scaling.
@@ -128,6 +142,22 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     };
     let report = run_game(config, shell, render, environment, &mut game)?;
     Ok(format!("{} frames", report.frames))
+}
+
+/// The title menu, then a few seconds of play, each as a screenshot in `dir`; then quit.
+fn screenshot_cues(dir: &Path, level: &str) -> Vec<Cue> {
+    vec![
+        Cue::screenshot(30, dir.join("title.png")),
+        Cue::input(
+            2,
+            ShellInput::Start(LevelStart {
+                level: level.to_string(),
+                checkpoint: None,
+            }),
+        ),
+        Cue::screenshot(60, dir.join("play.png")),
+        Cue::input(2, ShellInput::Quit),
+    ]
 }
 
 fn headless(
