@@ -8,10 +8,7 @@
 
 use std::path::PathBuf;
 
-use candela::app::{
-    ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Happened, Replay, ReplayTarget,
-    StepInput,
-};
+use candela::app::{Engine, FirstPersonGame, Game, Happened, StepInput};
 use candela::assets::AssetRoot;
 use candela::ecs::Transform;
 use candela::render::RenderConfig;
@@ -44,16 +41,7 @@ fn play(per_frame: u64) -> anyhow::Result<Run> {
     let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.environment())?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
-    let set = ActionSet::standard();
-    let (id, hash) = (game.level_id(), game.level_hash()?);
-    let target = ReplayTarget {
-        game: FIRST_PERSON_GAME,
-        level_id: &id,
-        level_hash: hash,
-        step_hz: 60.0,
-        actions: &set,
-    };
-    let replay = Replay::open(&replay, &target)?;
+    let replay = game.open_replay(&replay)?;
     let steps = replay.steps();
     engine.set_step_input(StepInput::Replay(replay));
     let mut hashes = Vec::new();

@@ -15,6 +15,7 @@ use super::engine::{Engine, Environment};
 use super::game::{Game, LevelEvent, SetupError, Step};
 use super::level::SpawnedLevel;
 use super::player_input::player_input;
+use super::replay::{Replay, ReplayTarget};
 use super::replay_error::ReplayError;
 use super::replay_format::level_hash;
 use super::shell::{HudInfo, LevelEntry, ShellInfo};
@@ -87,6 +88,22 @@ impl FirstPersonGame {
     /// The content hash of the level file now (replays must match it).
     pub fn level_hash(&self) -> Result<u64, ReplayError> {
         level_hash(&self.level_path)
+    }
+
+    /// Opens the recording at `path` for this level: the standard actions at 60 steps per
+    /// second, and the level file as it is now (a replay of another level or of an older
+    /// version of this one is refused, naming `path`).
+    pub fn open_replay(&self, path: &Path) -> Result<Replay, ReplayError> {
+        let set = ActionSet::standard();
+        let id = self.level_id();
+        let target = ReplayTarget {
+            game: FIRST_PERSON_GAME,
+            level_id: &id,
+            level_hash: self.level_hash()?,
+            step_hz: 60.0,
+            actions: &set,
+        };
+        Replay::open(path, &target)
     }
 
     /// Where the steps' input comes from once set up (a replay in a window; the devices by

@@ -14,8 +14,7 @@ use std::time::Instant;
 
 use anyhow::{Context, bail};
 use candela::app::{
-    ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Replay, ReplayTarget, StepInput,
-    UserDirs, WindowConfig, run_game,
+    Engine, FirstPersonGame, Game, Replay, StepInput, UserDirs, WindowConfig, run_game,
     shell::{Cue, LevelStart, ShellConfig, ShellInput},
 };
 use candela::assets::AssetRoot;
@@ -98,17 +97,8 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             mib(r.rss_end)
         ));
     }
-    let set = ActionSet::standard();
-    let (id, hash) = (game.level_id(), game.level_hash()?);
-    let target = ReplayTarget {
-        game: FIRST_PERSON_GAME,
-        level_id: &id,
-        level_hash: hash,
-        step_hz: 60.0,
-        actions: &set,
-    };
     let replay = match &args.replay {
-        Some(path) => Some(Replay::open(path, &target)?),
+        Some(path) => Some(game.open_replay(path)?),
         None => None,
     };
     if args.headless || args.bench {
