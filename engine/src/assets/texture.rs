@@ -164,11 +164,15 @@ fn decode_image(context: &LoadContext, name: &str, bytes: &[u8]) -> AssetResult<
         message,
     };
     let reader = || -> AssetResult<ImageReader<Cursor<&[u8]>>> {
-        let reader = ImageReader::new(Cursor::new(bytes))
+        let mut reader = ImageReader::new(Cursor::new(bytes))
             .with_guessed_format()
             .map_err(|e| error(e.to_string()))?;
         if reader.format().is_none() {
-            return Err(error("unknown image format".to_string()));
+            // Formats without a magic number (TGA) are known by the file's extension.
+            match image::ImageFormat::from_path(name) {
+                Ok(format) => reader.set_format(format),
+                Err(_) => return Err(error("unknown image format".to_string())),
+            }
         }
         Ok(reader)
     };
