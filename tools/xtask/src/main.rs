@@ -18,17 +18,18 @@ use std::process::{Command, ExitCode};
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some(command) = args.first() else {
-        eprintln!("usage: cargo xtask render [capture args…] | cargo xtask test [nextest args…]");
+        eprintln!("usage: cargo xtask play | render [capture args…] | test [nextest args…] | fuzz");
         return ExitCode::from(2);
     };
     let rest = &args[1..];
     let result = match command.as_str() {
         "render" => render(rest),
+        "play" => play(rest),
         "test" => test(rest),
         "packages" => packages::ensure(packages::ALL).map(|_| ()),
         "fuzz" => fuzz::fuzz(rest),
         other => Err(format!(
-            "unknown command {other:?}: use `render`, `test` or `fuzz`"
+            "unknown command {other:?}: use `play`, `render`, `test` or `fuzz`"
         )),
     };
     match result {
@@ -84,6 +85,17 @@ fn run(mut command: Command) -> Result<(), String> {
 
 fn cargo() -> Command {
     Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+}
+
+/// Plays the game platform's first-person test level in a window (Reflect takes its place once
+/// it exists); extra arguments go to the playground tool.
+fn play(extra: &[String]) -> Result<(), String> {
+    packages::ensure(packages::RENDER)?;
+    let mut command = cargo();
+    command.args(["run", "--release", "--package", "playground", "--"]);
+    command.arg("assets/test_scenes/platform/first_person.ron");
+    command.args(extra);
+    run(command)
 }
 
 fn render(extra: &[String]) -> Result<(), String> {
