@@ -180,19 +180,13 @@ impl Presenter {
                 self.composer
                     .encode_overlay(&mut encoder, &view, size, overlay)
             };
-            let encoded = started.elapsed().as_secs_f64();
-            context
-                .queue
-                .submit(extra.into_iter().chain([encoder.finish()]));
-            let submitted = started.elapsed().as_secs_f64();
-            if let Some(texture) = surface_texture {
-                context.queue.present(texture);
-            }
-            log::debug!(
-                "present ms: host blit: acquire+compose+encode {:.2} submit {:.2} present {:.2}",
-                encoded * 1e3,
-                (submitted - encoded) * 1e3,
-                (started.elapsed().as_secs_f64() - submitted) * 1e3
+            submit_and_present(
+                context,
+                extra,
+                encoder,
+                surface_texture,
+                started,
+                "host blit: acquire+compose+encode",
             );
             return Ok(None);
         }
@@ -241,20 +235,40 @@ impl Presenter {
                 ));
             }
         }
-        let encoded = started.elapsed().as_secs_f64();
-        context
-            .queue
-            .submit(extra.into_iter().chain([encoder.finish()]));
-        let submitted = started.elapsed().as_secs_f64();
-        if let Some(texture) = surface_texture {
-            context.queue.present(texture);
-        }
-        log::debug!(
-            "present ms: acquire+encode {:.2} submit {:.2} present {:.2}",
-            encoded * 1e3,
-            (submitted - encoded) * 1e3,
-            (started.elapsed().as_secs_f64() - submitted) * 1e3
+        submit_and_present(
+            context,
+            extra,
+            encoder,
+            surface_texture,
+            started,
+            "acquire+encode",
         );
         Ok(readback)
     }
+}
+
+/// Submits `extra` then `encoder`, presents `surface_texture` (if any), and logs (debug) how
+/// long encoding (`what`, since `started`), the submit and the present took, in milliseconds.
+fn submit_and_present(
+    context: &GpuContext,
+    extra: Vec<wgpu::CommandBuffer>,
+    encoder: wgpu::CommandEncoder,
+    surface_texture: Option<wgpu::SurfaceTexture>,
+    started: Instant,
+    what: &str,
+) {
+    let encoded = started.elapsed().as_secs_f64();
+    context
+        .queue
+        .submit(extra.into_iter().chain([encoder.finish()]));
+    let submitted = started.elapsed().as_secs_f64();
+    if let Some(texture) = surface_texture {
+        context.queue.present(texture);
+    }
+    log::debug!(
+        "present ms: {what} {:.2} submit {:.2} present {:.2}",
+        encoded * 1e3,
+        (submitted - encoded) * 1e3,
+        (started.elapsed().as_secs_f64() - submitted) * 1e3
+    );
 }
