@@ -67,6 +67,7 @@ impl Game for RoomGame {
                 id: "room".into(),
                 name: "The room".into(),
             }],
+            finished_only: false,
         }
     }
 

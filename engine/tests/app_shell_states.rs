@@ -183,6 +183,7 @@ fn continue_starts_at_the_first_unfinished_level_and_its_checkpoint() {
                 name: id.to_uppercase(),
             })
             .collect(),
+        finished_only: false,
     };
     let mut progress = Progress::default();
     assert_eq!(continue_point(&info, &progress), None, "nothing played yet");

@@ -55,16 +55,22 @@ pub struct FirstPersonGame {
 impl FirstPersonGame {
     /// Loads `level_path` (paths confined to `root`); the level is spawned by [`Game::setup`].
     pub fn load(level_path: &Path, root: &AssetRoot) -> AssetResult<Self> {
-        Ok(Self {
+        Ok(Self::of_level(level_path, load_level(level_path, root)?))
+    }
+
+    /// A game of an already loaded `level` (a composed level, `level::load_composed`);
+    /// `level_path` names it in messages and replays.
+    pub fn of_level(level_path: &Path, level: PlayableLevel) -> Self {
+        Self {
             level_path: level_path.to_path_buf(),
-            level: load_level(level_path, root)?,
+            level,
             own_hud: true,
             config: FirstPersonConfig::default(),
             player: None,
             spawned: SpawnedLevel::default(),
             log: Vec::new(),
             start_input: None,
-        })
+        }
     }
 
     /// The environment (sun, sky, render settings, camera) of the level, for `Engine::new`.
@@ -120,6 +126,16 @@ impl FirstPersonGame {
     /// The player, once set up.
     pub fn player(&self) -> Option<&FirstPersonPlayer> {
         self.player.as_ref()
+    }
+
+    /// The player, once set up, to move it (a checkpoint, a respawn).
+    pub fn player_mut(&mut self) -> Option<&mut FirstPersonPlayer> {
+        self.player.as_mut()
+    }
+
+    /// The loaded level (its scene, bodies and gameplay).
+    pub fn level(&self) -> &PlayableLevel {
+        &self.level
     }
 
     /// The level's instances, once set up.
@@ -189,6 +205,7 @@ impl Game for FirstPersonGame {
                 name: id.replace('_', " "),
                 id,
             }],
+            finished_only: false,
         }
     }
 

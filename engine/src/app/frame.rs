@@ -270,6 +270,9 @@ impl Engine {
                 Command::EndLevel(outcome) => {
                     self.progress_events.push(ProgressEvent::Ended(outcome));
                 }
+                Command::Finished(level) => {
+                    self.progress_events.push(ProgressEvent::Finished(level));
+                }
             }
         }
     }

@@ -165,6 +165,9 @@ pub enum Command {
     Checkpoint(String),
     /// The game ends the level by its own rules (the shell shows the ending).
     EndLevel(Outcome),
+    /// The player finished the level with this id without leaving play (a game of chambers
+    /// in one world: the chamber behind the player counts as finished; the shell saves it).
+    Finished(String),
 }
 
 impl Commands {
@@ -194,6 +197,13 @@ impl Commands {
     /// Ends the level being played with `outcome` (won levels count as finished).
     pub fn end_level(&mut self, outcome: Outcome) {
         self.queue.push(Command::EndLevel(outcome));
+    }
+
+    /// Reports that the level with id `level` (a `LevelEntry::id`) is finished while play goes
+    /// on (the next chamber of the same world); the shell saves it and offers it in its level
+    /// select.
+    pub fn finish_level(&mut self, level: impl Into<String>) {
+        self.queue.push(Command::Finished(level.into()));
     }
 
     /// Takes the queued commands, oldest first.

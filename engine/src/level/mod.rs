@@ -9,10 +9,12 @@
 
 mod body;
 mod character;
+mod compose;
 mod gameplay_check;
 mod load;
 
 pub use body::{InstanceBody, resolve_body};
 pub use character::{PlayableCharacter, load_characters};
+pub use compose::{compose_levels, load_composed};
 pub use gameplay_check::plan_gameplay;
 pub use load::{PlayableLevel, load_level, playable_from_level};

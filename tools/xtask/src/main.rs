@@ -1,5 +1,7 @@
 //! `cargo xtask`: the two commands of the README, and the machine set-up they need.
 //!
+//! `cargo xtask play [reflect args…]` plays Reflect in a window; `cargo xtask playground [args…]`
+//! plays the game platform's test level;
 //! `cargo xtask render [capture args…]` renders the Cornell box test scene to `out/cornell_box.png`;
 //! `cargo xtask test [nextest args…]` runs every test of the workspace; `cargo xtask fuzz` runs the
 //! afl campaigns (`fuzz.rs`). Both first install the
@@ -18,18 +20,21 @@ use std::process::{Command, ExitCode};
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some(command) = args.first() else {
-        eprintln!("usage: cargo xtask play | render [capture args…] | test [nextest args…] | fuzz");
+        eprintln!(
+            "usage: cargo xtask play | playground | render [capture args…] | test [nextest args…] | fuzz"
+        );
         return ExitCode::from(2);
     };
     let rest = &args[1..];
     let result = match command.as_str() {
         "render" => render(rest),
         "play" => play(rest),
+        "playground" => playground(rest),
         "test" => test(rest),
         "packages" => packages::ensure(packages::ALL).map(|_| ()),
         "fuzz" => fuzz::fuzz(rest),
         other => Err(format!(
-            "unknown command {other:?}: use `play`, `render`, `test` or `fuzz`"
+            "unknown command {other:?}: use `play`, `playground`, `render`, `test` or `fuzz`"
         )),
     };
     match result {
@@ -87,9 +92,18 @@ fn cargo() -> Command {
     Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
 }
 
-/// Plays the game platform's first-person test level in a window (Reflect takes its place once
-/// it exists); extra arguments go to the playground tool.
+/// Plays Reflect in a window (title menu, chambers, ending); extra arguments go to `reflect`.
 fn play(extra: &[String]) -> Result<(), String> {
+    packages::ensure(packages::RENDER)?;
+    let mut command = cargo();
+    command.args(["run", "--release", "--package", "reflect", "--bin", "reflect", "--"]);
+    command.args(extra);
+    run(command)
+}
+
+/// Plays the game platform's first-person test level in a window; extra arguments go to the
+/// playground tool.
+fn playground(extra: &[String]) -> Result<(), String> {
     packages::ensure(packages::RENDER)?;
     let mut command = cargo();
     command.args(["run", "--release", "--package", "playground", "--"]);

@@ -17,6 +17,9 @@ pub struct ShellInfo {
     /// The levels in play order; the title menu offers Continue (the first unfinished one, from
     /// its checkpoint), New game (the first from the start) and each level by name.
     pub levels: Vec<LevelEntry>,
+    /// The level list offers only finished levels (a chamber select: levels are reached by
+    /// playing on, not picked ahead); Continue and New game are always there.
+    pub finished_only: bool,
 }
 
 impl Default for ShellInfo {
@@ -28,6 +31,7 @@ impl Default for ShellInfo {
                 id: "main".into(),
                 name: "Play".into(),
             }],
+            finished_only: false,
         }
     }
 }
@@ -91,4 +95,6 @@ pub enum ProgressEvent {
     Checkpoint(String),
     /// The level ended.
     Ended(Outcome),
+    /// The level with this id was finished while play goes on (`Commands::finish_level`).
+    Finished(String),
 }

@@ -225,6 +225,10 @@ impl ShellRun {
                     }
                 }
                 ProgressEvent::Ended(outcome) => self.pending.push(ShellInput::LevelEnded(outcome)),
+                ProgressEvent::Finished(level) => {
+                    self.files.progress.finish_level(&level);
+                    reached = true;
+                }
             }
         }
         if reached {

@@ -69,10 +69,15 @@ pub fn show(
                             checkpoint: None,
                         }));
                     }
-                    if info.levels.len() > 1 {
+                    let offered: Vec<_> = info
+                        .levels
+                        .iter()
+                        .filter(|l| !info.finished_only || progress.is_finished(&l.id))
+                        .collect();
+                    if offered.len() > 1 || (info.finished_only && !offered.is_empty()) {
                         ui.add_space(6.0);
                         ui.label(theme::section("Levels"));
-                        for level in &info.levels {
+                        for level in offered {
                             let mark = if progress.is_finished(&level.id) {
                                 "✔ "
                             } else {

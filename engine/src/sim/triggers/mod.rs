@@ -28,5 +28,5 @@ pub use plan::{
     Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
     PlannedUsable, PlannedVolume, Rule, Usable,
 };
-pub use runtime::{Effect, LevelLogic, Outcome, StepLog, world_from_model};
+pub use runtime::{Effect, LevelLogic, Outcome, StepLog, set_material, world_from_model};
 pub use volumes::{OccupantKind, Phase, VolumeEvent, VolumeFacts, VolumeTracker};

@@ -281,8 +281,8 @@ impl LevelLogic {
 }
 
 /// Gives `entity` level material `material` (or its model's own back) and tells the extractor
-/// to look at it again even if it is static.
-fn set_material(world: &mut World, entity: Entity, material: Option<u32>) {
+/// to look at it again even if it is static (the `Material` rule action; a game's mirror gun).
+pub fn set_material(world: &mut World, entity: Entity, material: Option<u32>) {
     let changed = match world.get::<&mut Renderable>(entity) {
         Ok(mut r) if r.material_override != material => {
             r.material_override = material;

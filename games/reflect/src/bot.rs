@@ -1,0 +1,259 @@
+//! The scripted player that records Reflect's committed replays: a list of [`Task`]s (walk
+//! somewhere, pick up a cube, carry it and drop it, shoot a panel, use a lever, wait for a
+//! rule), each turned into the keys and mouse motion a player would give, from the player's
+//! state after each step. The engine records the resulting actions (`StepInput::record`), so a
+//! replay is exactly what a person pressing those keys would have recorded.
+//!
+//! Owns: [`Task`], [`Bot`] and [`Act`]. Main thread, between frames. Must not: move anything
+//! itself (only input reaches the game). Units: metres, radians, mouse counts.
+
+use candela::app::{Engine, MOUSE_RADIANS_PER_COUNT};
+use candela::ecs::Transform;
+use candela::player::{FirstPersonPlayer, FocusKind};
+use glam::{Vec2, Vec3, Vec3Swizzles};
+
+use crate::game::{ReflectEvent, ReflectGame};
+
+/// Most mouse counts per step (about 6° a step).
+const MAX_COUNTS: f32 = 60.0;
+
+/// One thing the bot does, in order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Task {
+    /// Walk to a point (x, z) until within `within` metres.
+    Walk { to: Vec2, within: f32 },
+    /// Walk up to the named body and pick it up.
+    Pick { body: String },
+    /// Carry what is held until it is over `over` (x, z within `within`), facing `yaw`
+    /// (radians) when given, then drop it and wait for it to settle.
+    Carry { over: Vec3, within: f32, yaw: Option<f32> },
+    /// From where it stands, aim at `at` and shoot the panel named `panel` (left button to
+    /// make a mirror, right to revert) until it is what was asked.
+    Shoot { at: Vec3, panel: String, mirror: bool },
+    /// Aim at `at` and press E until the player used something.
+    Use { at: Vec3 },
+    /// Wait until the rule `name` has risen.
+    Rule { name: String },
+    /// Wait until the player is in chamber `index`.
+    Entered { index: usize },
+    /// Wait until the ending.
+    Ending,
+    /// Wait this many steps.
+    Wait { steps: u32 },
+}
+
+/// What the bot does this step: keys held, buttons pressed, mouse counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Act {
+    pub forward: bool,
+    pub use_key: bool,
+    pub primary: bool,
+    pub secondary: bool,
+    pub mouse: Vec2,
+}
+
+/// The bot: its tasks and where it is in them.
+#[derive(Clone, Debug)]
+pub struct Bot {
+    tasks: Vec<Task>,
+    next: usize,
+    waited: u32,
+    /// Alternates button presses (a press needs a release before it counts again).
+    toggle: bool,
+    /// The first-person log's length when the task under way began.
+    mark: Option<usize>,
+}
+
+fn wrap(a: f32) -> f32 {
+    (a + std::f32::consts::PI).rem_euclid(std::f32::consts::TAU) - std::f32::consts::PI
+}
+
+/// Yaw that looks from `from` towards `to` horizontally.
+pub fn yaw_to(from: Vec3, to: Vec3) -> f32 {
+    let d = to - from;
+    (-d.x).atan2(-d.z)
+}
+
+/// Pitch that looks from `eye` at `to`.
+fn pitch_to(eye: Vec3, to: Vec3) -> f32 {
+    (to.y - eye.y).atan2((to - eye).with_y(0.0).length())
+}
+
+/// Turns towards `yaw`, `pitch` (capped mouse counts); returns the remaining errors.
+fn aim(player: &FirstPersonPlayer, yaw: f32, pitch: f32, act: &mut Act) -> (f32, f32) {
+    let dy = wrap(yaw - player.yaw);
+    let dp = pitch - player.pitch;
+    act.mouse = (Vec2::new(-dy, -dp) / MOUSE_RADIANS_PER_COUNT)
+        .clamp(Vec2::splat(-MAX_COUNTS), Vec2::splat(MAX_COUNTS));
+    (dy.abs(), dp.abs())
+}
+
+/// Walks towards `target` looking at `pitch`; true once within `within`.
+fn walk_to(player: &FirstPersonPlayer, feet: Vec3, target: Vec2, pitch: f32, within: f32, act: &mut Act) -> bool {
+    let to = Vec3::new(target.x, feet.y, target.y);
+    if (to - feet).with_y(0.0).length() <= within {
+        aim(player, player.yaw, pitch, act);
+        return true;
+    }
+    let (dy, _) = aim(player, yaw_to(feet, to), pitch, act);
+    act.forward = dy < 0.15;
+    false
+}
+
+impl Bot {
+    pub fn new(tasks: Vec<Task>) -> Self {
+        Self {
+            tasks,
+            next: 0,
+            waited: 0,
+            toggle: false,
+            mark: None,
+        }
+    }
+
+    /// The task under way (`None`: all done).
+    pub fn task(&self) -> Option<&Task> {
+        self.tasks.get(self.next)
+    }
+
+    /// Whether every task is done.
+    pub fn done(&self) -> bool {
+        self.next >= self.tasks.len()
+    }
+
+    fn advance(&mut self) {
+        self.next += 1;
+        self.waited = 0;
+        self.mark = None;
+    }
+
+    /// A press every other step (pressing needs a release in between).
+    fn pulse(&mut self) -> bool {
+        self.toggle = !self.toggle;
+        self.toggle
+    }
+
+    /// What to do this step.
+    pub fn act(&mut self, engine: &Engine, game: &ReflectGame) -> Act {
+        let mut act = Act::default();
+        let world = engine.world();
+        let Some(player) = game.inner().player() else {
+            return act;
+        };
+        let Some(task) = self.tasks.get(self.next).cloned() else {
+            return act;
+        };
+        let feet = player.feet(world);
+        let eye = player.eye(world);
+        let held = player.held(world);
+        let named = |name: &str| game.inner().spawned().by_name.get(name).copied();
+        let position = |e: hecs::Entity| world.get::<&Transform>(e).map_or(Vec3::ZERO, |t| t.translation);
+        match task {
+            Task::Walk { to, within } => {
+                if walk_to(player, feet, to, 0.0, within, &mut act) {
+                    self.advance();
+                }
+            }
+            Task::Pick { body } => {
+                let Some(e) = named(&body) else {
+                    return act;
+                };
+                let at = position(e);
+                let flat = (at - feet).with_y(0.0);
+                let stand = at.xz() - flat.xz().normalize_or_zero() * 1.0;
+                let pitch = pitch_to(eye, at);
+                if walk_to(player, feet, stand, pitch, 0.06, &mut act) {
+                    let (dy, dp) = aim(player, yaw_to(feet, at), pitch, &mut act);
+                    let on = player
+                        .focus()
+                        .is_some_and(|f| f.entity == e && f.kind == FocusKind::Body);
+                    if dy < 0.03 && dp < 0.03 && on && self.pulse() {
+                        act.use_key = true;
+                    }
+                }
+                if held == Some(e) {
+                    self.advance();
+                }
+            }
+            Task::Carry { over, within, yaw } => {
+                let Some(h) = held else {
+                    // Dropped: let it settle.
+                    self.waited += 1;
+                    if self.waited > 60 {
+                        self.advance();
+                    }
+                    return act;
+                };
+                let pitch = -30f32.to_radians();
+                let ahead = player.config.hold_distance * pitch.cos();
+                let facing = yaw.unwrap_or_else(|| yaw_to(feet, over));
+                let back = Vec2::new(-facing.sin(), -facing.cos()) * ahead;
+                let stand = over.xz() - back;
+                if walk_to(player, feet, stand, pitch, 0.04, &mut act) {
+                    aim(player, facing, pitch, &mut act);
+                    let off = (position(h) - over).with_y(0.0).length();
+                    self.waited += 1;
+                    if off < within && self.waited > 40 {
+                        act.use_key = true;
+                        self.waited = 0;
+                    }
+                }
+            }
+            Task::Shoot { at, panel, mirror } => {
+                let Some(e) = named(&panel) else {
+                    return act;
+                };
+                let (dy, dp) = aim(player, yaw_to(eye, at), pitch_to(eye, at), &mut act);
+                if dy < 0.01 && dp < 0.01 && self.pulse() {
+                    if mirror {
+                        act.primary = true;
+                    } else {
+                        act.secondary = true;
+                    }
+                }
+                if game.gun().is_mirror(e) == mirror {
+                    self.advance();
+                }
+            }
+            Task::Use { at } => {
+                let (dy, dp) = aim(player, yaw_to(eye, at), pitch_to(eye, at), &mut act);
+                if dy < 0.02 && dp < 0.02 && player.prompt().is_some() && self.pulse() {
+                    act.use_key = true;
+                }
+                let log = game.inner().log();
+                let mark = *self.mark.get_or_insert(log.len());
+                if log[mark.min(log.len())..]
+                    .iter()
+                    .any(|(_, h)| matches!(h, candela::app::Happened::Used(_)))
+                {
+                    self.advance();
+                }
+            }
+            Task::Rule { name } => {
+                let risen = game.log().iter().any(|(_, e)| {
+                    matches!(e, ReflectEvent::Rule { name: n, rising: true } if *n == name)
+                });
+                if risen {
+                    self.advance();
+                }
+            }
+            Task::Entered { index } => {
+                if game.current() == Some(index) {
+                    self.advance();
+                }
+            }
+            Task::Ending => {
+                if game.ended() {
+                    self.advance();
+                }
+            }
+            Task::Wait { steps } => {
+                self.waited += 1;
+                if self.waited >= steps {
+                    self.advance();
+                }
+            }
+        }
+        act
+    }
+}

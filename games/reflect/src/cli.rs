@@ -1,0 +1,145 @@
+//! The `reflect` binary's arguments and what each mode does: play in a window inside the
+//! engine's shell (title, HUD, pause, settings, chamber select, ending), or replay a recording
+//! headless and print one summary line.
+//!
+//! Owns: [`Args`] and [`run`]. Main thread. Must not: contain game rules (`game` has them).
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{Context, bail};
+use candela::app::{
+    StepInput, UserDirs, WindowConfig, run_game,
+    shell::{Cue, LevelStart, ShellConfig, ShellInput},
+};
+use candela::assets::AssetRoot;
+use candela::render::scaling::ScalingTarget;
+use candela::render::{RenderConfig, TracerChoice};
+use clap::Parser;
+
+use crate::game::ReflectGame;
+use crate::headless::play_replay;
+use crate::replays::{FULL_GAME, open_replay};
+use crate::world::ReflectWorld;
+
+/// Reflect: WASD walk, mouse look (click to capture), E pick up / drop / use, left mouse make a
+/// mirror, right mouse revert it, Space jump, Shift run, Esc pause.
+#[derive(Clone, Debug, Parser)]
+#[command(name = "reflect", version)]
+pub struct Args {
+    /// The game file (default: `assets/reflect/reflect.ron` under the current folder, else
+    /// next to the source).
+    #[arg(long)]
+    pub game: Option<PathBuf>,
+    /// Play this recording (a chamber's or the whole game's).
+    #[arg(long)]
+    pub replay: Option<PathBuf>,
+    /// No window: replay the recording on the CPU tracer at 16×9, print a summary line, exit
+    /// 0 only if the recording solved what it was recorded for.
+    #[arg(long)]
+    pub headless: bool,
+    /// Windowed: take screenshots (title.png, then play.png in each chamber) into this folder,
+    /// then quit.
+    #[arg(long)]
+    pub screenshots: Option<PathBuf>,
+    /// Windowed: show the stats overlay from the start (F3 toggles it).
+    #[arg(long)]
+    pub stats: bool,
+}
+
+/// The game file and the asset root it lives in (`…/assets`, two folders above it).
+pub fn locate(game: Option<&Path>) -> anyhow::Result<(PathBuf, AssetRoot)> {
+    let path = match game {
+        Some(p) => p.to_path_buf(),
+        None => {
+            let here = PathBuf::from("assets/reflect/reflect.ron");
+            if here.is_file() {
+                here
+            } else {
+                PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../assets/reflect/reflect.ron")
+            }
+        }
+    };
+    let root = path
+        .parent()
+        .and_then(Path::parent)
+        .context("the game file must sit in <asset root>/reflect/")?;
+    let root = if root.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        root
+    };
+    Ok((path.clone(), AssetRoot::new(root)?))
+}
+
+/// Runs what `args` asks; returns the line to print.
+pub fn run(args: &Args) -> anyhow::Result<String> {
+    let (path, root) = locate(args.game.as_deref())?;
+    let world = ReflectWorld::load(&path, &root)?;
+    if args.headless {
+        let Some(replay) = &args.replay else {
+            bail!("--headless plays a recording: give --replay FILE");
+        };
+        let whole = candela::app::Recording::read(replay)?.header.level_id == FULL_GAME;
+        let summary = play_replay(&world, replay)?;
+        let line = summary.line(&world);
+        if !summary.solved(whole) {
+            bail!("{line}: the recording {} did not solve what it was recorded for", replay.display());
+        }
+        return Ok(line);
+    }
+    let mut start_input = None;
+    let mut start = 0;
+    if let Some(path) = &args.replay {
+        let (replay, at) = open_replay(&world, path)?;
+        start_input = Some(StepInput::Replay(replay));
+        start = at;
+    }
+    let cues = args
+        .screenshots
+        .as_deref()
+        .map(|dir| screenshot_cues(dir, &world))
+        .unwrap_or_default();
+    let mut game = ReflectGame::new(world, start);
+    if let Some(input) = start_input {
+        game.inner_mut().start_with(input);
+    }
+    game.inner_mut().use_shell_hud();
+    let config = WindowConfig {
+        title: "Reflect".into(),
+        show_stats: args.stats,
+        ..WindowConfig::default()
+    };
+    let shell = ShellConfig {
+        dirs: UserDirs::from_env("reflect")?,
+        cues,
+    };
+    let environment = game.inner().environment();
+    // The tracer `auto` picks (the CPU one on machines without a GPU), 1 spp, holding 30 fps
+    // by workload scaling.
+    let render = RenderConfig {
+        tracer: TracerChoice::Auto,
+        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        ..RenderConfig::cpu(640, 360)
+    };
+    let report = run_game(config, shell, render, environment, &mut game)?;
+    Ok(format!("{} frames", report.frames))
+}
+
+/// The title, then each chamber from its start (two seconds in), as screenshots; then quit.
+fn screenshot_cues(dir: &Path, world: &ReflectWorld) -> Vec<Cue> {
+    let mut cues = vec![Cue::screenshot(30, dir.join("title.png"))];
+    for chamber in &world.chambers {
+        cues.push(Cue::input(
+            2,
+            ShellInput::Start(LevelStart {
+                level: chamber.id.clone(),
+                checkpoint: None,
+            }),
+        ));
+        cues.push(Cue::screenshot(90, dir.join(format!("{}.png", chamber.id))));
+        cues.push(Cue::input(2, ShellInput::Pause));
+        cues.push(Cue::input(2, ShellInput::QuitToTitle));
+    }
+    cues.push(Cue::input(2, ShellInput::Quit));
+    cues
+}

@@ -1,0 +1,362 @@
+//! [`ReflectGame`]: Reflect's rules over the engine's first-person game — the world of
+//! chambers, the mirror gun, lasers that send the player back, which chamber the player is in
+//! (finishing the one behind them), the HUD, the chamber select and the ending's summary.
+//!
+//! Main thread, inside the engine's hooks (`candela::app::Game`). Must not: read devices (the
+//! step's actions come from the devices or a replay alike) or reach into the renderer.
+
+use candela::app::{
+    FirstPersonGame, Game, LevelEvent, SetupError, Step, player_input,
+    shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellInfo},
+};
+use candela::ecs::{Renderable, Transform};
+use candela::sim::triggers::Outcome;
+use hecs::Entity;
+
+use crate::hazard::{beam_crosses, send_back};
+use crate::mirror_gun::{GunShot, MirrorGun};
+use crate::world::ReflectWorld;
+
+/// Events the level's rules hear from the game (declared in the base level's `events`), for
+/// sounds: a mirror made, a mirror reverted, a refused shot, the player sent back.
+pub const EVENTS: [&str; 4] = ["mirror_on", "mirror_off", "mirror_refused", "zapped"];
+
+/// Something that happened, for tools, tests and the bot.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ReflectEvent {
+    /// The player entered chamber `index`.
+    Entered(usize),
+    /// Chamber `index` is finished (the player went on to the next, or reached the ending).
+    Finished(usize),
+    /// A mirror gun shot (not `Nothing`).
+    Shot(GunShot),
+    /// A laser crossed the player in chamber `index`.
+    SentBack(usize),
+    /// A level rule's condition rose or fell.
+    Rule { name: String, rising: bool },
+    /// The ending was reached.
+    Ending,
+}
+
+/// Reflect.
+pub struct ReflectGame {
+    world: ReflectWorld,
+    inner: FirstPersonGame,
+    gun: MirrorGun,
+    /// Chamber to put the player in at the next step.
+    pending_start: Option<usize>,
+    current: Option<usize>,
+    /// Fixed steps played since the start (the ending's time).
+    steps: u64,
+    step_seconds: f64,
+    ended_at: Option<u64>,
+    sent_back: u32,
+    aimed: Option<Entity>,
+    log: Vec<(u64, ReflectEvent)>,
+}
+
+impl ReflectGame {
+    /// Reflect over the loaded `world`, starting in chamber `start` (an index).
+    pub fn new(world: ReflectWorld, start: usize) -> Self {
+        let inner = FirstPersonGame::of_level(&world.game_path, world.playable.clone());
+        Self {
+            world,
+            inner,
+            gun: MirrorGun::default(),
+            pending_start: Some(start),
+            current: None,
+            steps: 0,
+            step_seconds: 1.0 / 60.0,
+            ended_at: None,
+            sent_back: 0,
+            aimed: None,
+            log: Vec::new(),
+        }
+    }
+
+    /// The first-person game underneath (the player, the spawned level, its log).
+    pub fn inner(&self) -> &FirstPersonGame {
+        &self.inner
+    }
+
+    /// Mutable access, for the runner (replays, the shell's HUD).
+    pub fn inner_mut(&mut self) -> &mut FirstPersonGame {
+        &mut self.inner
+    }
+
+    pub fn world(&self) -> &ReflectWorld {
+        &self.world
+    }
+
+    pub fn gun(&self) -> &MirrorGun {
+        &self.gun
+    }
+
+    /// What happened so far, with the step index.
+    pub fn log(&self) -> &[(u64, ReflectEvent)] {
+        &self.log
+    }
+
+    /// The chamber the player is in.
+    pub fn current(&self) -> Option<usize> {
+        self.current
+    }
+
+    /// Chambers finished, in the order they were.
+    pub fn finished(&self) -> Vec<usize> {
+        self.log
+            .iter()
+            .filter_map(|(_, e)| match e {
+                ReflectEvent::Finished(i) => Some(*i),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// Whether the ending was reached.
+    pub fn ended(&self) -> bool {
+        self.ended_at.is_some()
+    }
+
+    /// Seconds of play until the ending (or until now).
+    pub fn play_seconds(&self) -> f64 {
+        self.ended_at.unwrap_or(self.steps) as f64 * self.step_seconds
+    }
+
+    /// Times a laser sent the player back.
+    pub fn sent_back(&self) -> u32 {
+        self.sent_back
+    }
+
+    fn note(&mut self, step: u64, event: ReflectEvent) {
+        self.log.push((step, event));
+    }
+
+    /// Which chamber holds the player's feet, and what changes when it is a new one.
+    fn track_chamber(&mut self, step: &mut Step<'_>) {
+        let Some(player) = self.inner.player() else {
+            return;
+        };
+        let feet = player.feet(step.world);
+        let Some(k) = self.world.chambers.iter().position(|c| c.contains(feet)) else {
+            return;
+        };
+        if self.current == Some(k) {
+            return;
+        }
+        if let Some(c) = self.current
+            && k == c + 1
+        {
+            step.commands.finish_level(self.world.chambers[c].id.clone());
+            self.note(step.index, ReflectEvent::Finished(c));
+        }
+        self.current = Some(k);
+        step.commands.checkpoint(self.world.chambers[k].id.clone());
+        self.note(step.index, ReflectEvent::Entered(k));
+    }
+
+    fn mirror_gun(&mut self, step: &mut Step<'_>, held_before: bool) {
+        let Some(player) = self.inner.player() else {
+            return;
+        };
+        let (eye, view) = (player.eye(step.world), player.view());
+        self.aimed = self.gun.aimed(step.world, &step.queries, eye, view);
+        if held_before {
+            return;
+        }
+        let input = player_input(step.actions, step.action_set, step.settings, step.step_seconds);
+        let mirror = match (input.primary_pressed, input.secondary_pressed) {
+            (true, _) => true,
+            (false, true) => false,
+            _ => return,
+        };
+        let chambers = &self.world.chambers;
+        let shot = self
+            .gun
+            .shoot(step.world, self.aimed, mirror, |c| chambers[c].mirror_cap);
+        let event = match shot {
+            GunShot::Mirrored(_) => "mirror_on",
+            GunShot::Reverted(_) => "mirror_off",
+            GunShot::AtCap => "mirror_refused",
+            GunShot::Nothing => return,
+        };
+        step.commands.send_event(event);
+        self.note(step.index, ReflectEvent::Shot(shot));
+    }
+}
+
+/// A carried cube turns with the player, corner first: its yaw is the player's plus 45°, so
+/// that setting it down facing a beam squarely puts a corner towards it (the glass chamber).
+fn turn_held_cube(step: &mut Step<'_>, inner: &FirstPersonGame) {
+    let Some(player) = inner.player() else {
+        return;
+    };
+    if let Some(held) = player.held(step.world)
+        && let Some((at, _)) = step.physics.pose(held)
+    {
+        let yaw = player.yaw + std::f32::consts::FRAC_PI_4;
+        step.physics.set_pose(held, at, glam::Quat::from_rotation_y(yaw));
+    }
+}
+
+impl Game for ReflectGame {
+    fn setup(&mut self, engine: &mut candela::app::Engine) -> Result<(), SetupError> {
+        self.inner.setup(engine)?;
+        self.step_seconds = engine.clock().step_seconds;
+        let world = engine.world();
+        let spawned = self.inner.spawned();
+        let panels: Vec<(Entity, Option<usize>, Option<u32>)> = self
+            .world
+            .mirrorable
+            .iter()
+            .filter_map(|&i| spawned.entities.get(i).copied())
+            .map(|e| {
+                let at = world.get::<&Transform>(e).map_or(glam::Vec3::NAN, |t| t.translation);
+                let chamber = self.world.chambers.iter().position(|c| c.contains(at));
+                let original = world
+                    .get::<&Renderable>(e)
+                    .ok()
+                    .and_then(|r| r.material_override);
+                (e, chamber, original)
+            })
+            .collect();
+        self.gun = MirrorGun::new(panels, self.world.mirror_material);
+        Ok(())
+    }
+
+    fn begin_level(
+        &mut self,
+        _engine: &mut candela::app::Engine,
+        start: &LevelStart,
+    ) -> Result<(), SetupError> {
+        let index = self
+            .world
+            .chamber_index(&start.level)
+            .ok_or_else(|| format!("Reflect has no chamber {:?}", start.level))?;
+        self.pending_start = Some(index);
+        Ok(())
+    }
+
+    fn fixed_step(&mut self, step: &mut Step<'_>) {
+        if let Some(k) = self.pending_start.take()
+            && let Some(player) = self.inner.player_mut()
+        {
+            let c = &self.world.chambers[k];
+            send_back(step.world, step.physics, player, c.start, c.yaw);
+            step.commands.cut();
+            self.current = None;
+        }
+        let held_before = self
+            .inner
+            .player()
+            .is_some_and(|p| p.held(step.world).is_some());
+        self.inner.fixed_step(step);
+        turn_held_cube(step, &self.inner);
+        self.mirror_gun(step, held_before);
+        self.track_chamber(step);
+        if let (Some(k), Some(player)) = (self.current, self.inner.player())
+            && beam_crosses(step.world, step.physics, player)
+        {
+            let c = &self.world.chambers[k];
+            let (start, yaw) = (c.start, c.yaw);
+            if let Some(player) = self.inner.player_mut() {
+                send_back(step.world, step.physics, player, start, yaw);
+            }
+            self.sent_back += 1;
+            step.commands.send_event("zapped");
+            step.commands.cut();
+            self.note(step.index, ReflectEvent::SentBack(k));
+        }
+        if self.ended_at.is_none() {
+            self.steps += 1;
+        }
+    }
+
+    fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
+        self.inner.level_event(step, event);
+        match event {
+            LevelEvent::Rule { name, firing } => {
+                let rule = ReflectEvent::Rule {
+                    name: name.clone(),
+                    rising: firing.rising,
+                };
+                self.note(step.index, rule);
+            }
+            LevelEvent::Ended(Outcome::Won(_)) if self.ended_at.is_none() => {
+                self.ended_at = Some(self.steps);
+                if let Some(c) = self.current {
+                    step.commands.finish_level(self.world.chambers[c].id.clone());
+                    self.note(step.index, ReflectEvent::Finished(c));
+                }
+                self.note(step.index, ReflectEvent::Ending);
+            }
+            _ => {}
+        }
+    }
+
+    fn has_ui(&self) -> bool {
+        self.inner.has_ui()
+    }
+
+    fn ui(&mut self, ctx: &egui::Context) {
+        self.inner.ui(ctx);
+    }
+
+    fn shell_info(&self) -> ShellInfo {
+        ShellInfo {
+            title: "Reflect".into(),
+            subtitle: "Mirrors, lasers and glass in five test chambers".into(),
+            levels: self
+                .world
+                .chambers
+                .iter()
+                .enumerate()
+                .map(|(i, c)| LevelEntry {
+                    id: c.id.clone(),
+                    name: format!("{} · {}", i + 1, c.name),
+                })
+                .collect(),
+            finished_only: true,
+        }
+    }
+
+    fn hud(&self) -> HudInfo {
+        let mut hud = self.inner.hud();
+        let Some(k) = self.current else {
+            hud.objective = None;
+            return hud;
+        };
+        let chamber = &self.world.chambers[k];
+        hud.objective = Some(chamber.objective.clone());
+        if self.aimed.is_some() && hud.prompt.is_none() {
+            hud.prompt = Some("Left mouse  make a mirror · Right mouse  revert".into());
+        }
+        hud.counters = vec![(
+            "Chamber".into(),
+            format!("{} / {}", k + 1, self.world.chambers.len()),
+        )];
+        if chamber.mirror_cap > 0 {
+            hud.counters.push((
+                "Mirrors".into(),
+                format!("{} / {}", self.gun.active_in(k), chamber.mirror_cap),
+            ));
+        }
+        hud
+    }
+
+    fn summary(&self) -> GameSummary {
+        let seconds = self.play_seconds();
+        GameSummary {
+            headline: "You reached the surface".into(),
+            lines: vec![
+                format!(
+                    "Time  {}:{:02}",
+                    (seconds / 60.0) as u64,
+                    (seconds % 60.0) as u64
+                ),
+                format!("Mirrors made  {}", self.gun.made),
+                format!("Sent back by lasers  {}", self.sent_back),
+            ],
+        }
+    }
+}

@@ -1,0 +1,149 @@
+//! Playing Reflect without a window: a recording replayed step by step on a tiny CPU-traced
+//! frame (the lasers and the mirror gun query the scene, so the scene is still committed every
+//! frame), summed up in a [`RunSummary`] and one line.
+//!
+//! Owns: [`play_replay`] and [`RunSummary`]. Main thread. Must not: open windows or devices.
+
+use std::path::Path;
+
+use anyhow::bail;
+use candela::app::{Engine, Game, StepInput};
+use candela::render::RenderConfig;
+use candela::sim::triggers::LaserPath;
+
+use crate::game::{ReflectEvent, ReflectGame};
+use crate::replays::open_replay;
+use crate::world::ReflectWorld;
+
+/// What a headless run did.
+#[derive(Clone, Debug)]
+pub struct RunSummary {
+    /// Index of the chamber the recording starts in (0 for the whole game).
+    pub start: usize,
+    /// Chambers finished, in order.
+    pub finished: Vec<usize>,
+    /// Whether the ending was reached.
+    pub ending: bool,
+    /// Seconds of play (fixed steps × step length) until the ending or the recording's end.
+    pub seconds: f64,
+    /// Mirrors the gun made.
+    pub mirrors: u32,
+    /// Times a laser sent the player back.
+    pub sent_back: u32,
+    /// Fixed steps run.
+    pub steps: u64,
+    /// The engine's state hash after the last step.
+    pub state_hash: u64,
+    /// Everything that happened, with the step.
+    pub log: Vec<(u64, ReflectEvent)>,
+    /// Every laser's beam after the last step.
+    pub beams: Vec<Beam>,
+}
+
+/// A laser's beam as traced in the last step.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Beam {
+    /// The emitter instance's name.
+    pub laser: String,
+    /// Where it starts, turns and stops (world space, metres).
+    pub points: Vec<glam::Vec3>,
+    /// The name of the instance it stopped at, if it has one.
+    pub stopped_at: Option<String>,
+}
+
+/// The beams of every named laser in `engine`'s world.
+fn beams(engine: &Engine, game: &ReflectGame) -> Vec<Beam> {
+    let names: std::collections::HashMap<hecs::Entity, &str> = game
+        .inner()
+        .spawned()
+        .by_name
+        .iter()
+        .map(|(n, &e)| (e, n.as_str()))
+        .collect();
+    let mut out: Vec<Beam> = engine
+        .world()
+        .query::<(hecs::Entity, &LaserPath)>()
+        .iter()
+        .filter_map(|(e, path)| {
+            Some(Beam {
+                laser: names.get(&e)?.to_string(),
+                points: path.points.clone(),
+                stopped_at: path
+                    .stopped_at
+                    .and_then(|s| names.get(&s).map(|n| n.to_string())),
+            })
+        })
+        .collect();
+    out.sort_by(|a, b| a.laser.cmp(&b.laser));
+    out
+}
+
+impl RunSummary {
+    /// Whether the recording did what it is for: the ending for the whole game, its chamber
+    /// finished for a chamber.
+    pub fn solved(&self, whole_game: bool) -> bool {
+        if whole_game {
+            self.ending
+        } else {
+            self.finished.contains(&self.start)
+        }
+    }
+
+    /// The summary line `reflect --replay FILE --headless` prints.
+    pub fn line(&self, world: &ReflectWorld) -> String {
+        let names: Vec<&str> = self
+            .finished
+            .iter()
+            .map(|&i| world.chambers[i].id.as_str())
+            .collect();
+        format!(
+            "reflect: chambers finished {}/{} [{}], time {}:{:02}, mirrors used {}, sent back {}, \
+             ending {}, {} steps, state hash {:016x}",
+            self.finished.len(),
+            world.chambers.len(),
+            names.join(", "),
+            (self.seconds / 60.0) as u64,
+            (self.seconds % 60.0) as u64,
+            self.mirrors,
+            self.sent_back,
+            if self.ending { "reached" } else { "not reached" },
+            self.steps,
+            self.state_hash
+        )
+    }
+}
+
+/// Replays `replay` on `world` headless; errors when the recording does not fit the world.
+pub fn play_replay(world: &ReflectWorld, replay: &Path) -> anyhow::Result<RunSummary> {
+    let (replay, start) = open_replay(world, replay)?;
+    let steps = replay.steps() + 1;
+    let mut game = ReflectGame::new(world.clone(), start);
+    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
+    game.setup(&mut engine)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    engine.set_step_input(StepInput::Replay(replay));
+    for _ in 0..steps {
+        engine.frame(1.0 / 60.0, &mut game)?;
+        let _ = engine.rendered();
+        if engine.replay_finished() {
+            break;
+        }
+    }
+    if !engine.replay_finished() {
+        bail!("the replay did not finish in {steps} steps");
+    }
+    let summary = RunSummary {
+        start,
+        finished: game.finished(),
+        ending: game.ended(),
+        seconds: game.play_seconds(),
+        mirrors: game.gun().made,
+        sent_back: game.sent_back(),
+        steps: engine.clock().steps,
+        state_hash: engine.state_hash(),
+        log: game.log().to_vec(),
+        beams: beams(&engine, &game),
+    };
+    let _ = engine.shutdown();
+    Ok(summary)
+}

@@ -1,0 +1,20 @@
+//! Reflect: the first-person mirror-and-laser puzzle game (design: `../shared/games/REFLECT.md`),
+//! a thin crate over the engine's game API (`candela::app::Game`, the first-person player, the
+//! shell). Its chambers are level files under `assets/reflect/levels/` merged into one world;
+//! its art and sounds are made by `tools/assetgen`.
+//!
+//! Modules: `chambers` (the game file), `world` (loading the world), `game` (the rules),
+//! `mirror_gun`, `hazard` (lasers that send the player back), `replays`, `headless`, `cli`,
+//! `bot` (the scripted player that records the committed replays).
+//! Main thread throughout. Must not: reach into the renderer.
+
+pub mod bot;
+pub mod bot_tasks;
+pub mod chambers;
+pub mod cli;
+pub mod game;
+pub mod hazard;
+pub mod headless;
+pub mod mirror_gun;
+pub mod replays;
+pub mod world;

@@ -1,0 +1,113 @@
+//! Loading Reflect's world: the game file, then the base level and every chamber's level file
+//! merged into one level (`candela::level::load_composed`), so the chambers stand side by side
+//! in one world whose light groups switch as the player walks through.
+//!
+//! Owns: [`ReflectWorld`] (the loaded level, the chambers, what the mirror gun may touch) and
+//! [`world_hash`] (what a replay must match). Main thread, at start.
+//! Must not: spawn anything (`ReflectGame::setup` does).
+
+use std::path::{Path, PathBuf};
+
+use candela::app::fnv1a64;
+use candela::assets::{AssetError, AssetRoot, Level};
+use candela::level::{PlayableLevel, load_composed};
+
+use crate::chambers::{Chamber, GameFile, GameFileError};
+
+/// Why the world did not load.
+#[derive(Debug, thiserror::Error)]
+pub enum WorldError {
+    #[error(transparent)]
+    GameFile(#[from] GameFileError),
+    #[error(transparent)]
+    Asset(#[from] AssetError),
+    #[error("{path}: {message}")]
+    Invalid { path: PathBuf, message: String },
+}
+
+/// The loaded world.
+#[derive(Clone, Debug)]
+pub struct ReflectWorld {
+    /// The game file.
+    pub game_path: PathBuf,
+    /// The base level file and the chambers' files, in order (for messages and hashes).
+    pub files: Vec<PathBuf>,
+    pub chambers: Vec<Chamber>,
+    /// The merged level as written (names of materials and instances).
+    pub level: Level,
+    pub playable: PlayableLevel,
+    /// Index of the mirror material among the level's materials.
+    pub mirror_material: u32,
+    /// Instances (by index) the mirror gun may turn into mirrors.
+    pub mirrorable: Vec<usize>,
+}
+
+impl ReflectWorld {
+    /// Reads `game_path` and loads every level file it names from `root`.
+    pub fn load(game_path: &Path, root: &AssetRoot) -> Result<Self, WorldError> {
+        let game = GameFile::read(game_path)?;
+        let chambers = game.chambers(game_path)?;
+        let invalid = |message: String| WorldError::Invalid {
+            path: game_path.to_path_buf(),
+            message,
+        };
+        let base = root.resolve(game_path, None, &game.base)?;
+        let mut parts = Vec::with_capacity(chambers.len());
+        for chamber in &chambers {
+            parts.push(root.resolve(game_path, None, &chamber.file)?);
+        }
+        let (level, playable) = load_composed(&base, &parts, root)?;
+        let mirror_material = level
+            .materials
+            .iter()
+            .position(|m| m.name == game.mirror_material)
+            .ok_or_else(|| {
+                invalid(format!(
+                    "mirror_material: no level file defines the material {:?}",
+                    game.mirror_material
+                ))
+            })? as u32;
+        for model in &game.mirrorable_models {
+            if !level.models.iter().any(|m| &m.name == model)
+                && !level.boxes.iter().any(|b| &b.name == model)
+            {
+                return Err(invalid(format!(
+                    "mirrorable_models: no level file defines the model {model:?}"
+                )));
+            }
+        }
+        let mirrorable = level
+            .instances
+            .iter()
+            .enumerate()
+            .filter(|(_, i)| game.mirrorable_models.contains(&i.model))
+            .map(|(index, _)| index)
+            .collect();
+        let mut files = vec![base];
+        files.extend(parts);
+        Ok(Self {
+            game_path: game_path.to_path_buf(),
+            files,
+            chambers,
+            level,
+            playable,
+            mirror_material,
+            mirrorable,
+        })
+    }
+
+    /// Index of the chamber with id `id`.
+    pub fn chamber_index(&self, id: &str) -> Option<usize> {
+        self.chambers.iter().position(|c| c.id == id)
+    }
+}
+
+/// The content hash of the game file and every level file it names, in order: a replay
+/// recorded before any of them changed is refused.
+pub fn world_hash(world: &ReflectWorld) -> Result<u64, std::io::Error> {
+    let mut words = Vec::new();
+    for path in std::iter::once(&world.game_path).chain(&world.files) {
+        words.extend_from_slice(&fnv1a64(&std::fs::read(path)?).to_le_bytes());
+    }
+    Ok(fnv1a64(&words))
+}
