@@ -13,10 +13,11 @@ const ROUND: u32 = 48;
 
 /// The cube dispenser: a vertical tube 1 m across, y ∈ [0, 3], centred on the Y axis. Dark
 /// metal rings at the bottom (y < 0.26) and top (y > 2.6), each with a recessed orange band,
-/// a glass wall between them, four dark struts and a dark hatch inside the top.
+/// a glass wall between them, four dark struts, and inside the top a dark hatch with a ring of
+/// light under it (`elevator_light`).
 pub fn dispenser() -> Piece {
-    let (metal, glass, orange) = (0, 1, 2);
-    let mut b = Builder::new(3);
+    let (metal, glass, orange, light) = (0, 1, 2, 3);
+    let mut b = Builder::new(4);
     let ring = |b: &mut Builder, y0: f32, y1: f32| {
         b.tube(metal, 0.5, 0.4, y0, y1, ROUND, true, 1.0);
     };
@@ -28,6 +29,8 @@ pub fn dispenser() -> Piece {
     ring(&mut b, 2.8, 3.0);
     b.tube(glass, 0.46, 0.44, 0.26, 2.6, ROUND, true, 1.0);
     b.tube(metal, 0.4, 0.0, 2.9, 2.94, ROUND, true, 1.0);
+    // A light ring under the hatch shows the tube's inside (and the cube in it).
+    b.tube(light, 0.38, 0.3, 2.86, 2.88, 24, true, 1.0);
     for (x, z) in [(1.0f32, 0.0f32), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)] {
         let centre = Vec3::new(x, 0.0, z) * 0.475;
         let half = Vec3::new(0.02 + 0.005 * x.abs(), 0.0, 0.02 + 0.005 * z.abs());
@@ -41,7 +44,12 @@ pub fn dispenser() -> Piece {
     }
     Piece::new(
         "dispenser",
-        vec![mat::metal_dark(), mat::glass(), mat::accent_orange()],
+        vec![
+            mat::metal_dark(),
+            mat::glass(),
+            mat::accent_orange(),
+            mat::elevator_light(),
+        ],
         b,
     )
 }
