@@ -11,13 +11,17 @@
 //! W·sr⁻¹·m⁻² = factor × strength), `KHR_materials_transmission` and `KHR_materials_ior` for
 //! glass. Textures are referenced by URI relative to the `.gltf` file, sampled REPEAT/LINEAR.
 //!
-//! Deterministic bytes: the JSON comes from `derive(Serialize)` structs (field order fixed, no
-//! map iteration), floats are printed by `serde_json` (shortest round-trip form, the same on
-//! every machine), and the buffer is little-endian `f32`/`u32` in a fixed layout: positions,
+//! Deterministic bytes: the JSON comes from the `derive(Serialize)` structs of `gltf_json`
+//! (field order fixed, no map iteration), floats are printed by `serde_json` (shortest
+//! round-trip form, the same on every machine), and the buffer is little-endian `f32`/`u32` in a fixed layout: positions,
 //! normals, texture coordinates, then each primitive's indices. Must not: read files or know
 //! about any particular piece.
 
-use serde::Serialize;
+use crate::gltf_json::{
+    Accessor, Asset, Attributes, Buffer, BufferView, EmissiveStrength, Image, Ior, Material,
+    MaterialExtensions, Mesh, Node, Pbr, Primitive, Root, Sampler, Scene, Texture, TextureInfo,
+    Transmission,
+};
 
 /// One material as written to glTF. Colours are linear; `emissive_strength` multiplies
 /// `emissive` (so radiance = `emissive` × `emissive_strength`, W·sr⁻¹·m⁻²).
@@ -269,183 +273,4 @@ fn bounds(positions: &[[f32; 3]]) -> ([f32; 3], [f32; 3]) {
         return ([0.0; 3], [0.0; 3]);
     }
     (min, max)
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Root {
-    asset: Asset,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    extensions_used: Vec<&'static str>,
-    scene: usize,
-    scenes: Vec<Scene>,
-    nodes: Vec<Node>,
-    meshes: Vec<Mesh>,
-    materials: Vec<Material>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    samplers: Vec<Sampler>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    images: Vec<Image>,
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    textures: Vec<Texture>,
-    accessors: Vec<Accessor>,
-    buffer_views: Vec<BufferView>,
-    buffers: Vec<Buffer>,
-}
-
-#[derive(Serialize)]
-struct Asset {
-    version: &'static str,
-    generator: &'static str,
-}
-
-#[derive(Serialize)]
-struct Scene {
-    nodes: Vec<usize>,
-}
-
-#[derive(Serialize)]
-struct Node {
-    name: String,
-    mesh: usize,
-}
-
-#[derive(Serialize)]
-struct Mesh {
-    name: String,
-    primitives: Vec<Primitive>,
-}
-
-#[derive(Serialize)]
-struct Primitive {
-    attributes: Attributes,
-    indices: usize,
-    material: usize,
-}
-
-#[derive(Serialize)]
-struct Attributes {
-    #[serde(rename = "POSITION")]
-    position: usize,
-    #[serde(rename = "NORMAL")]
-    normal: usize,
-    #[serde(rename = "TEXCOORD_0")]
-    texcoord_0: usize,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Material {
-    name: String,
-    pbr_metallic_roughness: Pbr,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    emissive_factor: Option<[f32; 3]>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    emissive_texture: Option<TextureInfo>,
-    #[serde(skip_serializing_if = "MaterialExtensions::is_empty")]
-    extensions: MaterialExtensions,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Pbr {
-    base_color_factor: [f32; 4],
-    #[serde(skip_serializing_if = "Option::is_none")]
-    base_color_texture: Option<TextureInfo>,
-    metallic_factor: f32,
-    roughness_factor: f32,
-}
-
-#[derive(Serialize)]
-struct TextureInfo {
-    index: usize,
-}
-
-#[derive(Serialize)]
-struct MaterialExtensions {
-    #[serde(
-        rename = "KHR_materials_emissive_strength",
-        skip_serializing_if = "Option::is_none"
-    )]
-    emissive_strength: Option<EmissiveStrength>,
-    #[serde(rename = "KHR_materials_ior", skip_serializing_if = "Option::is_none")]
-    ior: Option<Ior>,
-    #[serde(
-        rename = "KHR_materials_transmission",
-        skip_serializing_if = "Option::is_none"
-    )]
-    transmission: Option<Transmission>,
-}
-
-impl MaterialExtensions {
-    fn is_empty(&self) -> bool {
-        self.emissive_strength.is_none() && self.ior.is_none() && self.transmission.is_none()
-    }
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct EmissiveStrength {
-    emissive_strength: f32,
-}
-
-#[derive(Serialize)]
-struct Ior {
-    ior: f32,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Transmission {
-    transmission_factor: f32,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Sampler {
-    mag_filter: u32,
-    min_filter: u32,
-    wrap_s: u32,
-    wrap_t: u32,
-}
-
-#[derive(Serialize)]
-struct Image {
-    uri: String,
-}
-
-#[derive(Serialize)]
-struct Texture {
-    sampler: usize,
-    source: usize,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Accessor {
-    buffer_view: usize,
-    component_type: u32,
-    count: usize,
-    #[serde(rename = "type")]
-    kind: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    min: Option<Vec<f32>>,
-    #[serde(skip_serializing_if = "Option::is_none")]
-    max: Option<Vec<f32>>,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct BufferView {
-    buffer: usize,
-    byte_offset: usize,
-    byte_length: usize,
-    target: u32,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Buffer {
-    uri: String,
-    byte_length: usize,
 }

@@ -17,6 +17,7 @@ use candela::assets::{
     Needs, RenderSettings, SkyDesc, SunDesc, TerrainEntry, TransformDesc, WaveDesc,
 };
 
+mod gltf_json;
 pub mod gltf_writer;
 pub mod reflect_kit;
 mod reflect_sounds;

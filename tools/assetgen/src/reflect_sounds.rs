@@ -41,8 +41,8 @@ fn sum_partials(partials: &[(f64, f64, f64)], t: f64) -> f64 {
         .sum()
 }
 
-/// A bright rising shimmer: four inharmonic partials gliding up an octave with a 32 Hz
-/// tremolo, over a soft high bell.
+/// A bright rising shimmer: four inharmonic partials gliding up an octave (900 → 1800 Hz, the
+/// top partial to 5.5 kHz) with a 32 Hz tremolo, over a soft E6 bell (partials to 7.1 kHz).
 pub(crate) fn mirror_toggle() -> Vec<f64> {
     const RATIOS: [(f64, f64); 4] = [(1.0, 1.0), (1.5, 0.6), (2.01, 0.45), (3.03, 0.25)];
     let end = duration_of("mirror_toggle");
@@ -56,7 +56,7 @@ pub(crate) fn mirror_toggle() -> Vec<f64> {
             let body: f64 = RATIOS.iter().map(|(r, a)| a * (phase * r).sin()).sum();
             let envelope = (t / 0.004).min(1.0) * (-t / 0.11).exp();
             let tremolo = 0.75 + 0.25 * (TAU * 32.0 * t).sin();
-            (body * envelope * tremolo + 0.5 * bell(t, 0.03, 2637.0)) * edges(t, end, 0.01)
+            (body * envelope * tremolo + 0.5 * bell(t, 0.03, midi_hz(88))) * edges(t, end, 0.01)
         })
         .collect()
 }
@@ -79,16 +79,17 @@ pub(crate) fn laser_hum() -> Vec<f64> {
         .collect()
 }
 
-/// A receiver lit: a rising C6–E6–G6–C7 bell arpeggio.
+/// A receiver lit: a rising G5–C6–E6–G6 bell arpeggio (the bell's top partial, 5.4 × G6 =
+/// 8.5 kHz, stays under the 11 kHz Nyquist limit).
 pub(crate) fn receiver_chime() -> Vec<f64> {
     let end = duration_of("receiver_chime");
     (0..frames(end))
         .map(|i| {
             let t = time(i);
-            let notes = bell(t, 0.0, midi_hz(84))
-                + bell(t, 0.07, midi_hz(88))
-                + bell(t, 0.14, midi_hz(91))
-                + 0.7 * bell(t, 0.21, midi_hz(96));
+            let notes = 0.8 * bell(t, 0.0, midi_hz(79))
+                + bell(t, 0.07, midi_hz(84))
+                + bell(t, 0.14, midi_hz(88))
+                + bell(t, 0.21, midi_hz(91));
             notes * edges(t, end, 0.02)
         })
         .collect()

@@ -94,7 +94,7 @@ pub const SOUNDS: [SoundSpec; 11] = [
         name: "receiver_chime",
         duration_seconds: 1.0,
         looped: false,
-        purpose: "Reflect, one-shot: a receiver lit (C6-E6-G6-C7 bell arpeggio)",
+        purpose: "Reflect, one-shot: a receiver lit (G5-C6-E6-G6 bell arpeggio)",
     },
 ];
 
