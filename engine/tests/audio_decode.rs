@@ -8,12 +8,18 @@ use candela::audio::{AudioError, DecodeProblem, Sound, decode_sound, decode_soun
 
 /// Every sound in `assets/common/sounds/` with its length in seconds (all mono 22.05 kHz, made
 /// by `cargo run --release -p assetgen -- sounds`).
-const COMMITTED: [(&str, f64); 5] = [
+const COMMITTED: [(&str, f64); 11] = [
+    ("ambient_pad", 8.0),
     ("chime", 0.8),
     ("door_slide", 1.2),
+    ("elevator_loop", 4.0),
     ("fail_buzz", 0.5),
+    ("footstep", 0.3),
     ("hum_loop", 2.0),
+    ("laser_hum", 2.0),
+    ("mirror_toggle", 0.4),
     ("music_loop", 4.0),
+    ("receiver_chime", 1.0),
 ];
 const COMMITTED_RATE_HZ: u32 = 22_050;
 

@@ -2,6 +2,8 @@
 //! `assets/test_scenes/demo/demo.ron`, relative to the current folder). See `assetgen::demo_level`.
 //! `assetgen sounds [--out DIR]`: writes the games' sounds as WAV files (default
 //! `assets/common/sounds`). See `assetgen::sounds`.
+//! `assetgen reflect-kit [--out DIR]`: writes the Reflect art kit (default
+//! `assets/reflect/kit`), glTF + PNG. See `assetgen::reflect_kit`.
 
 use std::path::PathBuf;
 
@@ -27,6 +29,11 @@ enum Command {
         #[arg(long, default_value = "assets/common/sounds")]
         out: PathBuf,
     },
+    /// The Reflect art kit (glTF pieces and their PNG textures).
+    ReflectKit {
+        #[arg(long, default_value = "assets/reflect/kit")]
+        out: PathBuf,
+    },
 }
 
 fn main() -> anyhow::Result<()> {
@@ -50,6 +57,33 @@ fn main() -> anyhow::Result<()> {
                 std::fs::write(&path, &bytes)
                     .with_context(|| format!("cannot write {}", path.display()))?;
                 println!("wrote {} ({} bytes)", path.display(), bytes.len());
+            }
+            Ok(())
+        }
+        Command::ReflectKit { out } => {
+            let files = assetgen::reflect_kit::kit_files()?;
+            for (file, bytes) in &files {
+                let path = out.join(file);
+                if let Some(dir) = path.parent() {
+                    std::fs::create_dir_all(dir)
+                        .with_context(|| format!("cannot create {}", dir.display()))?;
+                }
+                std::fs::write(&path, bytes)
+                    .with_context(|| format!("cannot write {}", path.display()))?;
+            }
+            let total: usize = files.iter().map(|(_, b)| b.len()).sum();
+            println!(
+                "wrote {} files ({total} bytes) to {}",
+                files.len(),
+                out.display()
+            );
+            for piece in assetgen::reflect_kit::pieces() {
+                println!(
+                    "  {:<16} {:>5} triangles, {:>4} emissive",
+                    piece.name,
+                    piece.triangle_count(),
+                    piece.emissive_triangle_count()
+                );
             }
             Ok(())
         }

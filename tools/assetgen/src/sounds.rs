@@ -27,8 +27,15 @@ pub struct SoundSpec {
     pub purpose: &'static str,
 }
 
-/// Every sound `assetgen sounds` writes, in file-name order.
-pub const SOUNDS: [SoundSpec; 5] = [
+/// Every sound `assetgen sounds` writes, in file-name order. The Reflect sounds are
+/// synthesised in `reflect_sounds`.
+pub const SOUNDS: [SoundSpec; 11] = [
+    SoundSpec {
+        name: "ambient_pad",
+        duration_seconds: 8.0,
+        looped: true,
+        purpose: "Reflect, seamless loop: a slow A-minor pad of detuned pairs with a faint air",
+    },
     SoundSpec {
         name: "chime",
         duration_seconds: 0.8,
@@ -42,10 +49,22 @@ pub const SOUNDS: [SoundSpec; 5] = [
         purpose: "one-shot: a stone door sliding (low-passed noise, a 55 Hz rumble, a thud)",
     },
     SoundSpec {
+        name: "elevator_loop",
+        duration_seconds: 4.0,
+        looped: true,
+        purpose: "Reflect, seamless loop: an elevator motor (50 Hz drive, 400 Hz whine, rumble)",
+    },
+    SoundSpec {
         name: "fail_buzz",
         duration_seconds: 0.5,
         looped: false,
         purpose: "one-shot: a wrong move (two falling square-wave tones)",
+    },
+    SoundSpec {
+        name: "footstep",
+        duration_seconds: 0.3,
+        looped: false,
+        purpose: "Reflect, one-shot: a soft step (low-passed noise, heel and toe, a low thump)",
     },
     SoundSpec {
         name: "hum_loop",
@@ -54,10 +73,28 @@ pub const SOUNDS: [SoundSpec; 5] = [
         purpose: "seamless loop for spatial emitters: a 60 Hz machine hum with a slow swell",
     },
     SoundSpec {
+        name: "laser_hum",
+        duration_seconds: 2.0,
+        looped: true,
+        purpose: "Reflect, seamless loop for per-beam spatial emitters: a 100 Hz electric buzz",
+    },
+    SoundSpec {
+        name: "mirror_toggle",
+        duration_seconds: 0.4,
+        looped: false,
+        purpose: "Reflect, one-shot: a panel turns mirror or back (a bright rising shimmer)",
+    },
+    SoundSpec {
         name: "music_loop",
         duration_seconds: 4.0,
         looped: true,
         purpose: "seamless music loop: two bars at 120 bpm, Am-F-C-G bass and a melody",
+    },
+    SoundSpec {
+        name: "receiver_chime",
+        duration_seconds: 1.0,
+        looped: false,
+        purpose: "Reflect, one-shot: a receiver lit (G5-C6-E6-G6 bell arpeggio)",
     },
 ];
 
@@ -78,6 +115,12 @@ pub fn samples(name: &str) -> Vec<f32> {
         "fail_buzz" => fail_buzz(),
         "hum_loop" => hum_loop(),
         "music_loop" => music_loop(),
+        "ambient_pad" => crate::reflect_sounds::ambient_pad(),
+        "elevator_loop" => crate::reflect_sounds::elevator_loop(),
+        "footstep" => crate::reflect_sounds::footstep(),
+        "laser_hum" => crate::reflect_sounds::laser_hum(),
+        "mirror_toggle" => crate::reflect_sounds::mirror_toggle(),
+        "receiver_chime" => crate::reflect_sounds::receiver_chime(),
         _ => Vec::new(),
     };
     normalized(&raw)
@@ -121,15 +164,15 @@ fn normalized(raw: &[f64]) -> Vec<f32> {
     raw.iter().map(|s| (s * gain) as f32).collect()
 }
 
-fn frames(duration_seconds: f64) -> usize {
+pub(crate) fn frames(duration_seconds: f64) -> usize {
     (duration_seconds * f64::from(SAMPLE_RATE_HZ)).round() as usize
 }
 
-fn time(i: usize) -> f64 {
+pub(crate) fn time(i: usize) -> f64 {
     i as f64 / f64::from(SAMPLE_RATE_HZ)
 }
 
-fn duration_of(name: &str) -> f64 {
+pub(crate) fn duration_of(name: &str) -> f64 {
     SOUNDS
         .iter()
         .find(|s| s.name == name)
@@ -138,21 +181,21 @@ fn duration_of(name: &str) -> f64 {
 
 /// A linear ramp from 0 to 1 over `seconds` after `t = 0`, and down to 0 over `seconds` before
 /// `end`: removes clicks at the ends.
-fn edges(t: f64, end: f64, seconds: f64) -> f64 {
+pub(crate) fn edges(t: f64, end: f64, seconds: f64) -> f64 {
     (t / seconds).min((end - t) / seconds).clamp(0.0, 1.0)
 }
 
 /// Frequency of MIDI note `note`, Hz (A4 = 69 = 440 Hz).
-fn midi_hz(note: i32) -> f64 {
+pub(crate) fn midi_hz(note: i32) -> f64 {
     440.0 * 2f64.powf(f64::from(note - 69) / 12.0)
 }
 
 /// xorshift64*: a tiny fixed-seed noise source, the same on every machine.
-struct Noise(u64);
+pub(crate) struct Noise(pub(crate) u64);
 
 impl Noise {
     /// Uniform in `-1..1`.
-    fn next(&mut self) -> f64 {
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 ^= self.0 >> 12;
         self.0 ^= self.0 << 25;
         self.0 ^= self.0 >> 27;
@@ -163,7 +206,7 @@ impl Noise {
 
 /// A struck bell at `hz` starting at `start` seconds: inharmonic partials, each decaying
 /// exponentially.
-fn bell(t: f64, start: f64, hz: f64) -> f64 {
+pub(crate) fn bell(t: f64, start: f64, hz: f64) -> f64 {
     const PARTIALS: [(f64, f64, f64); 3] =
         [(1.0, 1.0, 0.30), (2.76, 0.35, 0.12), (5.40, 0.12, 0.05)];
     let t = t - start;
