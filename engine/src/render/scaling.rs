@@ -5,7 +5,8 @@
 //! more than 10 %: first fewer samples per pixel, then a lower roulette scale (shorter paths; no
 //! bias, more noise), then a lower resolution (presented upscaled). Fast by more than 25 %: the
 //! reverse order. One step per three frames, so that each step's effect is measured before the
-//! next. Render thread. Must not: change anything but the workload numbers.
+//! next; more than twice too slow, samples and roulette drop at once and then the resolution in
+//! proportion, so a first frame of seconds is followed by a playable one within a few frames. Render thread. Must not: change anything but the workload numbers.
 
 /// What to hold and within which bounds.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,7 +145,18 @@ impl Scaling {
         }
         let before = self.work;
         let w = &mut self.work;
-        if s > 1.1 * t.frame_seconds {
+        if s > 2.0 * t.frame_seconds {
+            // Far too slow (the first frames, a heavy view): samples and path length go at
+            // once, then the resolution in proportion (the cost follows the pixel count),
+            // instead of one small step per three frames (seconds each at full resolution).
+            if w.spp > t.min_spp || w.roulette_scale > t.min_roulette + 1e-6 {
+                w.spp = t.min_spp;
+                w.roulette_scale = t.min_roulette;
+            } else if w.resolution > t.min_resolution + 1e-6 {
+                let ratio = (t.frame_seconds / s).sqrt();
+                w.resolution = (w.resolution * ratio).max(t.min_resolution);
+            }
+        } else if s > 1.1 * t.frame_seconds {
             if w.spp > t.min_spp {
                 w.spp = (w.spp * 3 / 4).max(t.min_spp).min(w.spp - 1);
             } else if w.roulette_scale > t.min_roulette + 1e-6 {
@@ -164,6 +176,11 @@ impl Scaling {
         if self.work != before {
             self.cooldown = 3;
             self.resized |= self.work.resolution != before.resolution;
+            if s > 2.0 * t.frame_seconds {
+                // Measure the new workload afresh, after the frame already under way.
+                self.smoothed = None;
+                self.cooldown = 1;
+            }
         }
     }
 }
@@ -195,6 +212,22 @@ mod tests {
                 s.current()
             );
         }
+    }
+
+    #[test]
+    fn far_too_slow_reaches_the_target_within_a_few_frames() {
+        // Full resolution costs 40× the target: steps of 1/8 would take some 30 frames.
+        let target = 0.001;
+        let mut s = Scaling::new(1, Some(ScalingTarget::new(target as f32)));
+        let full = |w: &Workload| 0.04 * (w.resolution * w.resolution) as f64 * (0.5 + 0.5 * w.roulette_scale as f64);
+        let mut frames = 0;
+        while full(&s.current()) > 2.0 * target {
+            let w = s.current();
+            s.observe(full(&w));
+            frames += 1;
+            assert!(frames < 12, "still {:?} after {frames} frames", s.current());
+        }
+        assert!(s.current().resolution >= 0.25);
     }
 
     #[test]

@@ -44,6 +44,20 @@ pub struct Args {
     /// Windowed: show the stats overlay from the start (F3 toggles it).
     #[arg(long)]
     pub stats: bool,
+    /// Headless: play every chamber's replay in real time on the CPU tracer with workload
+    /// scaling at 30 fps and print the frame figures as a Markdown table.
+    #[arg(long)]
+    pub bench: bool,
+    /// Headless: write a converged picture of every chamber into this folder (see
+    /// `reflect::capture`).
+    #[arg(long)]
+    pub capture: Option<PathBuf>,
+    /// With --capture: frames to converge (one sample per pixel each).
+    #[arg(long, default_value_t = 256)]
+    pub capture_frames: u32,
+    /// With --bench: most seconds per chamber.
+    #[arg(long, default_value_t = 20.0)]
+    pub bench_seconds: f64,
 }
 
 /// The game file and the asset root it lives in (`…/assets`, two folders above it).
@@ -75,6 +89,14 @@ pub fn locate(game: Option<&Path>) -> anyhow::Result<(PathBuf, AssetRoot)> {
 pub fn run(args: &Args) -> anyhow::Result<String> {
     let (path, root) = locate(args.game.as_deref())?;
     let world = ReflectWorld::load(&path, &root)?;
+    if let Some(dir) = &args.capture {
+        let files = crate::capture::capture_chambers(&world, dir, 640, 360, args.capture_frames)?;
+        return Ok(format!("wrote {}", files.join(", ")));
+    }
+    if args.bench {
+        let replays = root.path().join("reflect/replays");
+        return crate::bench::bench(&world, &root, &replays, args.bench_seconds);
+    }
     if args.headless {
         let Some(replay) = &args.replay else {
             bail!("--headless plays a recording: give --replay FILE");

@@ -19,7 +19,10 @@ use crate::world::ReflectWorld;
 
 /// Events the level's rules hear from the game (declared in the base level's `events`), for
 /// sounds: a mirror made, a mirror reverted, a refused shot, the player sent back.
-pub const EVENTS: [&str; 4] = ["mirror_on", "mirror_off", "mirror_refused", "zapped"];
+pub const EVENTS: [&str; 5] = ["mirror_on", "mirror_off", "mirror_refused", "zapped", "footstep"];
+
+/// Metres walked between two footsteps.
+const STRIDE: f32 = 0.75;
 
 /// Something that happened, for tools, tests and the bot.
 #[derive(Clone, Debug, PartialEq)]
@@ -53,6 +56,10 @@ pub struct ReflectGame {
     sent_back: u32,
     aimed: Option<Entity>,
     log: Vec<(u64, ReflectEvent)>,
+    /// Feet at the last step and metres walked since the last footstep.
+    stride: (Option<glam::Vec3>, f32),
+    /// A view to put the player's eye at once started (screenshots): eye, yaw, pitch.
+    pending_view: Option<(glam::Vec3, f32, f32)>,
 }
 
 impl ReflectGame {
@@ -71,7 +78,19 @@ impl ReflectGame {
             sent_back: 0,
             aimed: None,
             log: Vec::new(),
+            stride: (None, 0.0),
+            pending_view: None,
         }
+    }
+
+    /// Puts the player's eye at `camera` (its position and the direction to its `look_at`)
+    /// at the first step, after the chamber's start: a chamber's preview view.
+    pub fn start_at_view(&mut self, camera: &candela::assets::CameraDesc) {
+        let eye = glam::Vec3::from(camera.position);
+        let d = glam::Vec3::from(camera.look_at) - eye;
+        let yaw = (-d.x).atan2(-d.z);
+        let pitch = d.y.atan2(d.with_y(0.0).length());
+        self.pending_view = Some((eye, yaw, pitch));
     }
 
     /// The first-person game underneath (the player, the spawned level, its log).
@@ -153,6 +172,27 @@ impl ReflectGame {
         self.current = Some(k);
         step.commands.checkpoint(self.world.chambers[k].id.clone());
         self.note(step.index, ReflectEvent::Entered(k));
+    }
+
+    /// A footstep sound every [`STRIDE`] metres walked (a jump of more than a metre in a step is
+    /// a teleport, not a walk).
+    fn footsteps(&mut self, step: &mut Step<'_>) {
+        let Some(player) = self.inner.player() else {
+            return;
+        };
+        let feet = player.feet(step.world);
+        let (last, walked) = &mut self.stride;
+        if let Some(last) = *last {
+            let d = (feet - last).with_y(0.0).length();
+            if d < 1.0 {
+                *walked += d;
+            }
+        }
+        *last = Some(feet);
+        if *walked >= STRIDE {
+            *walked = 0.0;
+            step.commands.send_event("footstep");
+        }
     }
 
     fn mirror_gun(&mut self, step: &mut Step<'_>, held_before: bool) {
@@ -246,6 +286,13 @@ impl Game for ReflectGame {
             step.commands.cut();
             self.current = None;
         }
+        if let Some((eye, yaw, pitch)) = self.pending_view.take()
+            && let Some(player) = self.inner.player_mut()
+        {
+            let feet = eye - glam::Vec3::Y * player.config.eye_height;
+            send_back(step.world, step.physics, player, feet, yaw);
+            player.pitch = pitch;
+        }
         let held_before = self
             .inner
             .player()
@@ -253,6 +300,7 @@ impl Game for ReflectGame {
         self.inner.fixed_step(step);
         turn_held_cube(step, &self.inner);
         self.mirror_gun(step, held_before);
+        self.footsteps(step);
         self.track_chamber(step);
         if let (Some(k), Some(player)) = (self.current, self.inner.player())
             && beam_crosses(step.world, step.physics, player)

@@ -8,8 +8,10 @@
 //! `bot` (the scripted player that records the committed replays).
 //! Main thread throughout. Must not: reach into the renderer.
 
+pub mod bench;
 pub mod bot;
 pub mod bot_tasks;
+pub mod capture;
 pub mod chambers;
 pub mod cli;
 pub mod game;

@@ -10,7 +10,8 @@ use std::path::{Path, PathBuf};
 
 use candela::app::fnv1a64;
 use candela::assets::{AssetError, AssetRoot, Level};
-use candela::level::{PlayableLevel, load_composed};
+use candela::assets::ActionEntry;
+use candela::level::{PlayableLevel, load_composed, playable_from_level};
 
 use crate::chambers::{Chamber, GameFile, GameFileError};
 
@@ -93,6 +94,23 @@ impl ReflectWorld {
             playable,
             mirror_material,
             mirrorable,
+        })
+    }
+
+    /// The same world with every light group on for good: no chamber switches lights (the
+    /// bench's comparison of how many emitters the light sampling sees).
+    pub fn without_room_switching(&self, root: &AssetRoot) -> Result<Self, WorldError> {
+        let mut level = self.level.clone();
+        level.gameplay.lights_off.clear();
+        for rule in &mut level.gameplay.rules {
+            rule.then.retain(|a| !matches!(a, ActionEntry::Lights { .. }));
+            rule.otherwise.retain(|a| !matches!(a, ActionEntry::Lights { .. }));
+        }
+        let playable = playable_from_level(&self.files[0], &level, root)?;
+        Ok(Self {
+            level,
+            playable,
+            ..self.clone()
         })
     }
 

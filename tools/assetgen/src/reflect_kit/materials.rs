@@ -9,7 +9,7 @@ use crate::gltf_writer::MaterialSpec;
 /// Radiance of the ceiling light strips and the wall light bars, W·sr⁻¹·m⁻² per unit of
 /// `LIGHT_STRIP_COLOR`. Chosen so a 16 × 16 × 8 m chamber with four ceilings (8 strips of
 /// 8 × 0.2 m each) is lit comfortably; the lead tunes it in the levels if needed.
-pub const LIGHT_STRIP_STRENGTH: f32 = 8.0;
+pub const LIGHT_STRIP_STRENGTH: f32 = 12.0;
 
 /// Warm white of the light strips (linear).
 pub const LIGHT_STRIP_COLOR: [f32; 3] = [1.0, 0.9, 0.76];
