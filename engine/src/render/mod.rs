@@ -7,6 +7,7 @@ pub mod balance;
 pub mod camera;
 pub mod cpu;
 pub mod denoise;
+pub mod denoise_stage;
 pub mod film;
 pub mod gpu;
 pub mod present;

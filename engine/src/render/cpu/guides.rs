@@ -5,7 +5,8 @@
 //! the camera, the depth its distance along the ray (metres), the instance the one hit; the
 //! albedo follows perfect mirrors (up to [`MAX_SPECULAR`] reflections, multiplying their tints)
 //! to the first non-specular surface and takes its base colour; smooth glass and the sky give 1
-//! (not demodulated). It runs only when the denoiser is on, so the tracer pays nothing for it
+//! (not demodulated). A pixel whose primary hit emits is flagged (the filter leaves it alone).
+//! It runs only when the denoiser is on, so the tracer pays nothing for it
 //! otherwise; render thread, rows on rayon's pool.
 //! Must not: shade or accumulate radiance (the integrator does), or change the scene.
 
@@ -18,6 +19,9 @@ use crate::layout::{GpuFrameUniforms, MATERIAL_CONDUCTOR};
 use crate::render::denoise::{Guides, NO_INSTANCE};
 use crate::scene::RenderScene;
 use crate::trace::Ray;
+
+/// One pixel's guide: normal, depth, albedo, instance, emissive.
+type Guide = (Vec3, f32, Vec3, u32, bool);
 
 /// Mirror reflections the albedo follows before giving up (and taking 1).
 pub const MAX_SPECULAR: u32 = 3;
@@ -45,9 +49,9 @@ fn guide_pixel(
     u: &GpuFrameUniforms,
     px: u32,
     py: u32,
-) -> (Vec3, f32, Vec3, u32) {
+) -> Guide {
     let mut ray = centre_ray(u, px, py);
-    let mut first: Option<(Vec3, f32, u32)> = None;
+    let mut first: Option<(Vec3, f32, u32, bool)> = None;
     let mut tint = Vec3::ONE;
     for _ in 0..=MAX_SPECULAR {
         let Some(hit) = tracer.closest(&ray) else {
@@ -61,13 +65,15 @@ fn guide_pixel(
             n = -n;
         }
         if first.is_none() {
-            first = Some((n, hit.t, hit.instance));
+            let front = wo.dot(surface.geometric_normal) > 0.0;
+            let emits = shading.emission != Vec3::ZERO && (front || shading.two_sided_emission);
+            first = Some((n, hit.t, hit.instance, emits));
         }
         let bsdf = shading.bsdf;
         if !bsdf.is_delta() {
             tint *= bsdf.base_color;
-            let (normal, depth, instance) = first.unwrap_or((n, hit.t, hit.instance));
-            return (normal, depth, tint, instance);
+            let (normal, depth, instance, emits) = first.unwrap_or((n, hit.t, hit.instance, false));
+            return (normal, depth, tint, instance, emits);
         }
         if bsdf.kind != MATERIAL_CONDUCTOR {
             break;
@@ -87,8 +93,8 @@ fn guide_pixel(
         };
     }
     match first {
-        Some((normal, depth, instance)) => (normal, depth, Vec3::ONE, instance),
-        None => (Vec3::ZERO, 0.0, Vec3::ONE, NO_INSTANCE),
+        Some((normal, depth, instance, emits)) => (normal, depth, Vec3::ONE, instance, emits),
+        None => (Vec3::ZERO, 0.0, Vec3::ONE, NO_INSTANCE, false),
     }
 }
 
@@ -99,7 +105,7 @@ pub fn trace_guides(scene: &RenderScene, u: &GpuFrameUniforms) -> Guides {
         return guides;
     }
     let tracer = scene.trace_scene();
-    let rows: Vec<Vec<(Vec3, f32, Vec3, u32)>> = (0..u.height)
+    let rows: Vec<Vec<Guide>> = (0..u.height)
         .into_par_iter()
         .map(|y| {
             (0..u.width)
@@ -107,11 +113,12 @@ pub fn trace_guides(scene: &RenderScene, u: &GpuFrameUniforms) -> Guides {
                 .collect()
         })
         .collect();
-    for (i, (n, z, a, id)) in rows.into_iter().flatten().enumerate() {
+    for (i, (n, z, a, id, e)) in rows.into_iter().flatten().enumerate() {
         guides.normal[i] = n;
         guides.depth[i] = z;
         guides.albedo[i] = a;
         guides.instance[i] = id;
+        guides.emissive[i] = e;
     }
     guides
 }

@@ -28,6 +28,9 @@ pub struct Guides {
     /// Instance at the primary hit ([`NO_INSTANCE`] for the sky); for the reprojection's
     /// history rejection, unused by the filter itself.
     pub instance: Vec<u32>,
+    /// The primary hit emits light: such pixels (a lamp seen directly, its radiance known, not
+    /// noisy) pass the filter unchanged and never blur into their neighbours, as the sky does.
+    pub emissive: Vec<bool>,
 }
 
 impl Guides {
@@ -41,6 +44,7 @@ impl Guides {
             depth: vec![0.0; n],
             albedo: vec![Vec3::ONE; n],
             instance: vec![NO_INSTANCE; n],
+            emissive: vec![false; n],
         }
     }
 
@@ -61,15 +65,19 @@ impl Guides {
             && self.depth.len() == n
             && self.albedo.len() == n
             && self.instance.len() == n
+            && self.emissive.len() == n
     }
 
     /// (normal xyz, depth w) per pixel, as the passes and the GPU buffers hold them (raw: the
-    /// passes sanitize every read).
+    /// passes sanitize every read, and read a depth that is not positive as "no surface").
+    /// Emissive pixels are packed with a negated depth, so that the filter treats them as it
+    /// treats the sky.
     pub fn packed_normal_depth(&self) -> Vec<Vec4> {
         self.normal
             .iter()
             .zip(&self.depth)
-            .map(|(n, &z)| n.extend(z))
+            .zip(&self.emissive)
+            .map(|((n, &z), &e)| n.extend(if e { -z } else { z }))
             .collect()
     }
 
