@@ -67,6 +67,9 @@ fn contrast(img: &[Vec3], x0: u32) -> f32 {
         / H as f32
 }
 
+/// (name, guides, clean radiance, noise amplitude, frames, kept fraction asserted).
+type Case<'a> = (&'a str, &'a Guides, &'a [Vec3], f32, u32, f32);
+
 #[test]
 fn edges_keep_their_contrast() -> anyhow::Result<()> {
     let x0 = W / 2;
@@ -83,10 +86,10 @@ fn edges_keep_their_contrast() -> anyhow::Result<()> {
     // A depth step (2 m against 4 m) with more light on the near side.
     let mut d = flat_guides(W, H, 2.0, Vec3::ONE);
     let mut lit = vec![Vec3::splat(1.0); n];
-    for i in 0..n {
+    for (i, l) in lit.iter_mut().enumerate() {
         if !left(i) {
             d.depth[i] = 4.0;
-            lit[i] = Vec3::splat(0.3);
+            *l = Vec3::splat(0.3);
         }
     }
     // A shadow edge: the same surface, 1.0 against 0.2, seen only in the radiance.
@@ -97,11 +100,10 @@ fn edges_keep_their_contrast() -> anyhow::Result<()> {
             *s = Vec3::splat(0.2);
         }
     }
-    // (name, guides, clean radiance, noise amplitude, frames, kept fraction asserted). The
-    // shadow edge is seen only by the luminance weight, whose one-frame (spatial) variance
+    // The shadow edge is seen only by the luminance weight, whose one-frame (spatial) variance
     // includes the edge itself (measured: 62 % kept); with four frames or more the variance
     // comes from the temporal moments and the edge stays sharp.
-    let cases: [(&str, &Guides, &[Vec3], f32, u32, f32); 4] = [
+    let cases: [Case<'_>; 4] = [
         ("albedo", &g, &truth, 0.5, 1, 0.95),
         ("depth", &d, &lit, 0.5, 1, 0.95),
         ("shadow, one frame", &flat, &shadow, 0.1, 1, 0.5),

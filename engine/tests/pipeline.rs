@@ -82,6 +82,7 @@ fn config(spp: u32, size: u32) -> RenderConfig {
         seed: 1,
         converge: ConvergePolicy::default(),
         scaling: None,
+        denoise: false,
     }
 }
 

@@ -144,6 +144,7 @@ fn open(
     Ok((tracer, presenter))
 }
 
+#[allow(clippy::too_many_arguments)] // the render thread's state, one borrow each
 fn render_one(
     commit: Commit,
     output: (u32, u32),

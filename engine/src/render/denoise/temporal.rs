@@ -52,7 +52,7 @@ impl History {
 /// as 0. The length grows by one per frame and is capped at 1/blend (rounded), the frames an
 /// exact mean with that weight holds.
 pub fn temporal_pixel(history: Vec4, moments: Vec4, c: Vec3, demod: Vec3, blend: f32) -> [Vec4; 2] {
-    let restart = !(blend < 1.0);
+    let restart = blend.is_nan() || blend >= 1.0;
     if !finite3(c) {
         return if restart {
             [Vec4::ZERO, Vec4::ZERO]
