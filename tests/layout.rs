@@ -145,6 +145,16 @@ fn rust_layouts() -> Vec<RustLayout> {
             encode_srgb,
             _padding
         }),
+        rust_layout!(GpuDenoiseUniforms {
+            width,
+            height,
+            step,
+            remodulate,
+            blend,
+            sigma_z,
+            sigma_l,
+            _padding
+        }),
     ]
 }
 

@@ -174,3 +174,14 @@ struct GpuPresentUniforms {
     encode_srgb: u32,
     _padding: u32,
 }
+
+struct GpuDenoiseUniforms {
+    width: u32,
+    height: u32,
+    step: u32,
+    remodulate: u32,
+    blend: f32,
+    sigma_z: f32,
+    sigma_l: f32,
+    _padding: u32,
+}

@@ -179,6 +179,7 @@ fn run_policy(
         seed: setup.seed,
         converge: policy,
         scaling: None,
+        denoise: false,
     };
     let mut engine = Engine::new(config, setup.environment())?;
     let backdrop_material = Material {

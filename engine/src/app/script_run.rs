@@ -193,6 +193,7 @@ pub fn run_script(
         seed: script.render.seed,
         converge: ConvergePolicy::default(),
         scaling: None,
+        denoise: false,
     };
     let render_error = |source| ScriptError::Render {
         path: script.source.clone(),

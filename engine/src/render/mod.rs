@@ -6,6 +6,8 @@ pub mod auto;
 pub mod balance;
 pub mod camera;
 pub mod cpu;
+pub mod denoise;
+pub mod denoise_stage;
 pub mod film;
 pub mod gpu;
 pub mod present;

@@ -6,7 +6,8 @@
 //! presenter (the device is then opened for the window's surface and shared with the GPU
 //! tracer). It never reads game state: all it sees are sealed commits. Results (statistics,
 //! the film or a screenshot when a commit asks for it) go back on a channel. Dropping the
-//! sender side ends the thread cleanly. Headless, it opens no surface and presents nothing; a
+//! sender side ends the thread cleanly. With `RenderConfig::denoise` the frame is denoised
+//! after tracing (`denoise_stage`) and the denoised film is what is captured and presented. Headless, it opens no surface and presents nothing; a
 //! present request's surface size still sets the render size, as a window's would.
 //! Must not: touch the ECS, the main thread's upkeep or the window's events.
 
@@ -14,6 +15,8 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 use std::thread::JoinHandle;
 use std::time::Instant;
 
+use super::denoise::SvgfParams;
+use super::denoise_stage::DenoiseStage;
 use super::film::{Converge, ConvergePolicy, Film};
 use super::present::{PresentTarget, Presenter, Screenshot};
 use super::scaling::{Scaling, ScalingGoal, ScalingTarget};
@@ -49,6 +52,10 @@ pub struct RenderConfig {
     pub converge: ConvergePolicy,
     /// Hold a frame time by adapting spp, roulette and resolution (`None`: fixed workload).
     pub scaling: Option<ScalingTarget>,
+    /// Denoise every frame (SVGF, `render::denoise`): the tracer renders each frame alone and
+    /// the denoiser's history accumulates them. Off for captures and references (biased), on
+    /// in games.
+    pub denoise: bool,
 }
 
 impl RenderConfig {
@@ -63,6 +70,7 @@ impl RenderConfig {
             seed: 1,
             converge: ConvergePolicy::default(),
             scaling: None,
+            denoise: false,
         }
     }
 }
@@ -78,6 +86,8 @@ pub struct Rendered {
     pub apply_seconds: f64,
     /// Seconds spent tracing.
     pub render_seconds: f64,
+    /// Seconds spent denoising (guides included); 0 with the denoiser off.
+    pub denoise_seconds: f64,
     /// The converging blend factor used.
     pub blend: f32,
     /// Samples per pixel, roulette scale and film size used.
@@ -134,6 +144,7 @@ fn open(
     Ok((tracer, presenter))
 }
 
+#[allow(clippy::too_many_arguments)] // the render thread's state, one borrow each
 fn render_one(
     commit: Commit,
     output: (u32, u32),
@@ -142,6 +153,7 @@ fn render_one(
     tracer: &mut dyn Tracer,
     converge: &mut Converge,
     scaling: &mut Scaling,
+    mut denoiser: Option<&mut DenoiseStage>,
 ) -> Result<Rendered, RenderError> {
     let started = Instant::now();
     scene.apply(&commit.writes, &commit.header);
@@ -155,7 +167,8 @@ fn render_one(
     let blend = converge.blend(&commit.motion);
     let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &commit.render);
     settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
-    settings.film_blend = blend;
+    // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.
+    settings.film_blend = if denoiser.is_some() { 1.0 } else { blend };
     settings.roulette_scale = work.roulette_scale;
     let uniforms = frame_uniforms(
         &commit.camera,
@@ -167,11 +180,15 @@ fn render_one(
     let started = Instant::now();
     let stats = tracer.render(scene, &uniforms)?;
     let render_seconds = started.elapsed().as_secs_f64();
-    scaling.observe(render_seconds + apply_seconds);
-    let film = if commit.capture {
-        Some(tracer.film()?)
-    } else {
-        None
+    let denoise_seconds = match denoiser.as_deref_mut() {
+        Some(d) => d.run(scene, &uniforms, tracer, blend)?,
+        None => 0.0,
+    };
+    scaling.observe(render_seconds + apply_seconds + denoise_seconds);
+    let film = match (commit.capture, denoiser) {
+        (false, _) => None,
+        (true, Some(d)) => Some(d.film().clone()),
+        (true, None) => Some(tracer.film()?),
     };
     Ok(Rendered {
         frame: commit.frame,
@@ -179,6 +196,7 @@ fn render_one(
         stats,
         apply_seconds,
         render_seconds,
+        denoise_seconds,
         blend,
         spp: work.spp,
         roulette_scale: work.roulette_scale,
@@ -209,6 +227,9 @@ fn run(
     let mut converge = Converge::new(config.converge);
     let mut scaling = Scaling::new(config.spp, config.scaling);
     let mut output = (config.width, config.height);
+    let mut denoiser = config
+        .denoise
+        .then(|| DenoiseStage::new(SvgfParams::default()));
     while let Ok(mut commit) = commits.recv() {
         let mut request = commit.present.take();
         if let Some(wanted) = request.as_ref().and_then(|r| r.scaling) {
@@ -234,11 +255,16 @@ fn run(
             tracer.as_mut(),
             &mut converge,
             &mut scaling,
+            denoiser.as_mut(),
         );
         if let (Ok(rendered), Some(presenter), Some(request)) =
             (&mut outcome, presenter.as_mut(), request.as_mut())
         {
-            match presenter.present(tracer.film_view(), request) {
+            let view = match &denoiser {
+                Some(d) => d.film_view(),
+                None => tracer.film_view(),
+            };
+            match presenter.present(view, request) {
                 Ok(presented) => {
                     rendered.present_seconds = presented.seconds;
                     rendered.present_skipped = presented.skipped;

@@ -20,6 +20,9 @@
 //!   (`tools/bench/data/balance/`, tables in `docs/PERFORMANCE.md`, charts in `docs/charts/`).
 //! * `bench ghosting` — error on a fast-moving object and its trail per converging policy
 //!   (`ghosting.csv` beside the table; figures in `docs/ACCURACY.md`).
+//! * `bench denoise` — the denoiser's time per frame at 320×180 and 1280×720 (CPU, GPU twin)
+//!   and its RMSE at 1, 2 and 4 spp with and without, and its bias
+//!   (`docs/charts/denoise_rmse.png`, `docs/ACCURACY.md`, `docs/PERFORMANCE.md`).
 
 mod balance;
 mod balance_plot;
@@ -32,6 +35,8 @@ mod chart_plan;
 mod chart_reference;
 mod chart_scenes;
 mod chart_self_ref;
+mod denoise;
+mod denoise_plot;
 mod error;
 mod ghosting;
 mod machine;
@@ -68,6 +73,8 @@ enum Command {
     Pipeline(pipeline::PipelineArgs),
     /// Error on a fast-moving object and its trail per converging policy.
     Ghosting(ghosting::GhostingArgs),
+    /// The denoiser: time per frame (CPU, GPU twin) and RMSE at 1, 2, 4 spp with and without.
+    Denoise(denoise::DenoiseArgs),
     /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
     Balance(balance::BalanceArgs),
 }
@@ -94,6 +101,7 @@ fn main() -> anyhow::Result<()> {
         }
         Command::Pipeline(a) => pipeline::run(&a),
         Command::Ghosting(a) => ghosting::run(&a),
+        Command::Denoise(a) => denoise::run(&a),
         Command::Balance(a) => balance::run(&a),
     }
 }

@@ -43,6 +43,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         seed: 1,
         converge: ConvergePolicy::default(),
         scaling: None,
+        denoise: false,
     };
     let mut engine = Engine::new(config, Environment::of(&desc.scene))?;
     engine.spawn_level(desc);

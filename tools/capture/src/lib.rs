@@ -1,8 +1,8 @@
 //! The capture tool as a library, so tests can run exactly what the command line runs.
 //!
 //! Owns: argument definitions, and the single-frame mode: loading the level, building the
-//! scene, choosing the tracer, rendering in batches with a progress bar, writing PNG/EXR and the
-//! final report. The script mode (`--script`) is in `script_mode.rs`.
+//! scene, choosing the tracer, rendering in batches with a progress bar (each batch a frame of
+//! the denoiser with `--denoise`), writing PNG/EXR and the final report. The script mode (`--script`) is in `script_mode.rs`.
 //! Must not: contain rendering logic (the engine does it).
 
 use std::path::{Path, PathBuf};
@@ -10,6 +10,8 @@ use std::time::Instant;
 
 use anyhow::Context;
 use candela::assets::{AssetRoot, load_scene};
+use candela::render::cpu::guides::trace_guides;
+use candela::render::denoise::Svgf;
 use candela::render::film::{TonemapSettings, write_exr, write_png};
 use candela::render::{FrameSettings, RenderError, Tracer, TracerChoice, frame_uniforms};
 use candela::scene::RenderScene;
@@ -78,6 +80,10 @@ pub struct CaptureArgs {
     /// Hide the progress bar.
     #[arg(long)]
     pub quiet: bool,
+    /// Denoise (SVGF, `candela::render::denoise`): each batch of `--batch` samples is one frame
+    /// of the denoiser's history, guides from the CPU guide pass. Biased: off by default.
+    #[arg(long)]
+    pub denoise: bool,
 }
 
 /// What a capture did.
@@ -183,10 +189,20 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let mut rays = 0u64;
     let mut render_seconds = 0.0;
     let mut done = 0;
+    let mut denoiser = args
+        .denoise
+        .then(|| Svgf::new(candela::render::denoise::SvgfParams::default()));
+    let mut guides = None;
+    let mut denoised = None;
     while done < spp {
         let batch = args.batch.max(1).min(spp - done);
-        let settings =
+        let mut settings =
             FrameSettings::new(width, height, batch, args.seed, &desc.render).continuing(done);
+        let blend = settings.film_blend;
+        if denoiser.is_some() {
+            // The tracer's film holds this batch alone; the denoiser's history blends.
+            settings.film_blend = 1.0;
+        }
         let uniforms = frame_uniforms(
             &desc.camera,
             desc.sun.as_ref(),
@@ -197,11 +213,18 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         let stats = tracer.render(&scene, &uniforms)?;
         rays += stats.rays();
         render_seconds += stats.seconds;
+        if let Some(svgf) = denoiser.as_mut() {
+            let g = guides.get_or_insert_with(|| trace_guides(&scene, &uniforms));
+            denoised = Some(svgf.denoise(&tracer.film()?.mean, g, blend)?);
+        }
         done += batch;
         progress.set_position(done as u64);
     }
     progress.finish_and_clear();
-    let film = tracer.film()?;
+    let film = match denoised {
+        Some(film) => film,
+        None => tracer.film()?,
+    };
     let pixels = &film.mean;
     let tonemap = TonemapSettings {
         exposure_ev: args.exposure,

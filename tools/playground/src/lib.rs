@@ -128,6 +128,8 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let render = RenderConfig {
         tracer: TracerChoice::Auto,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        // Games denoise (captures and references do not).
+        denoise: true,
         ..RenderConfig::cpu(640, 360)
     };
     let report = run_game(config, shell, render, environment, &mut game)?;

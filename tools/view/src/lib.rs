@@ -59,6 +59,9 @@ pub struct ViewArgs {
     /// Random seed: the same seed, settings and frame count give the same image.
     #[arg(long, default_value_t = 0)]
     pub seed: u32,
+    /// Denoise every frame (SVGF; biased: off by default in the viewer).
+    #[arg(long)]
+    pub denoise: bool,
     /// Exposure in stops.
     #[arg(long, default_value_t = 0.0)]
     pub exposure: f32,
@@ -205,6 +208,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             .target_fps
             .filter(|f| *f > 0.0)
             .map(|f| ScalingTarget::new(1.0 / f)),
+        denoise: args.denoise,
     };
     let speed = args
         .speed

@@ -2,6 +2,7 @@
 //! image tiles with rayon, reading the same flattened scene.
 
 pub mod bsdf;
+pub mod guides;
 pub mod integrator;
 pub mod microfacet;
 pub mod rng;

@@ -46,6 +46,20 @@ pub const PRESENT: ShaderSource = shader!("present.wgsl");
 /// The shared pieces the present pass needs (the tracing bindings would clash with its own).
 pub const PRESENT_SHARED: &[ShaderSource] = &[shader!("shared/types.wgsl")];
 
+/// The shared pieces of the denoiser's passes: the struct twins and the SVGF arithmetic (its
+/// bindings 0–2: uniforms, guides, albedo). Compose with [`compose_with`]`(DENOISE_SHARED, …)`.
+pub const DENOISE_SHARED: &[ShaderSource] =
+    &[shader!("shared/types.wgsl"), shader!("shared/denoise.wgsl")];
+
+/// SVGF's temporal stage (entry point `denoise_temporal`).
+pub const DENOISE_TEMPORAL: ShaderSource = shader!("denoise_temporal.wgsl");
+
+/// SVGF's variance estimate (entry point `denoise_variance`).
+pub const DENOISE_VARIANCE: ShaderSource = shader!("denoise_variance.wgsl");
+
+/// One variance-guided à-trous pass (entry point `denoise_atrous`).
+pub const DENOISE_ATROUS: ShaderSource = shader!("denoise_atrous.wgsl");
+
 /// The shared pieces followed by `pass`, as one WGSL module.
 pub fn compose(pass: ShaderSource) -> String {
     compose_with(SHARED, pass)
@@ -81,6 +95,13 @@ mod tests {
     #[test]
     fn present_pass_validates() {
         validates(compose_with(PRESENT_SHARED, PRESENT));
+    }
+
+    #[test]
+    fn denoise_passes_validate() {
+        for pass in [DENOISE_TEMPORAL, DENOISE_VARIANCE, DENOISE_ATROUS] {
+            validates(compose_with(DENOISE_SHARED, pass));
+        }
     }
 
     fn validates(source: String) {

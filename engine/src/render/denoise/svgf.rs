@@ -1,0 +1,148 @@
+//! The CPU denoiser (the reference of the GPU twin `render/gpu/denoise.rs`): spatiotemporal
+//! variance-guided filtering (Schied et al. 2017) of one frame at a time.
+//!
+//! Owns: [`Svgf`] — the history between frames and the order of the stages: demodulate by the
+//! albedo and blend over time (`temporal`), estimate the variance (`variance`), `iterations`
+//! à-trous passes with steps 1, 2, 4, … (`atrous`), the last one remodulating. Input: this
+//! frame's mean radiance per pixel (linear, rows top to bottom, not yet blended with earlier
+//! frames), its [`Guides`], and the blend factor `film::Converge` chose. Output: a [`Film`] of
+//! denoised linear radiance, every pixel finite. Unlike the paper, the history keeps the
+//! unfiltered illumination (no feedback of the first à-trous pass), so a still camera still
+//! converges to the unbiased mean and the filter relaxes with its variance. Runs on the
+//! render thread (its passes on rayon's pool).
+//! Must not: trace rays or touch the tracer's film.
+
+use glam::{Vec3, Vec4};
+
+use super::atrous::{Pass, filter};
+use super::guides::Guides;
+use super::temporal::{History, Reprojection, accumulate};
+use super::variance::estimate;
+use crate::render::film::Film;
+
+/// The filter's knobs (Schied et al.'s defaults; σ_n = 128 is fixed, see `weights`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SvgfParams {
+    /// À-trous passes (1–8); 5 reaches 2·(1+2+4+8+16) = 62 pixels.
+    pub iterations: u32,
+    /// Depth weight scale (times the depth gradient along the offset).
+    pub sigma_z: f32,
+    /// Luminance weight scale, in standard deviations of the luminance estimate.
+    pub sigma_l: f32,
+}
+
+impl Default for SvgfParams {
+    fn default() -> Self {
+        Self {
+            iterations: 5,
+            sigma_z: 1.0,
+            sigma_l: 4.0,
+        }
+    }
+}
+
+impl SvgfParams {
+    /// The passes in order (the iteration count clamped to 1–8).
+    pub fn passes(&self) -> Vec<Pass> {
+        let n = self.iterations.clamp(1, 8);
+        (0..n)
+            .map(|k| Pass {
+                step: 1 << k,
+                sigma_z: self.sigma_z,
+                sigma_l: self.sigma_l,
+                remodulate: k + 1 == n,
+            })
+            .collect()
+    }
+}
+
+/// Inputs that do not fit together.
+#[derive(Debug, thiserror::Error, PartialEq)]
+pub enum DenoiseError {
+    #[error("the frame has {frame} pixels but the guides are {width}×{height} ({guides} values)")]
+    SizeMismatch {
+        frame: usize,
+        width: u32,
+        height: u32,
+        guides: usize,
+    },
+}
+
+/// The CPU SVGF denoiser and its history.
+#[derive(Clone, Debug, Default)]
+pub struct Svgf {
+    pub params: SvgfParams,
+    history: History,
+    reprojection: Reprojection,
+}
+
+impl Svgf {
+    pub fn new(params: SvgfParams) -> Self {
+        Self {
+            params,
+            ..Default::default()
+        }
+    }
+
+    /// Forgets the history (the next frame starts afresh whatever its blend factor).
+    pub fn reset(&mut self) {
+        self.history = History::new(self.history.width, self.history.height);
+    }
+
+    /// The history so far (for tests and the GPU twin's comparison).
+    pub fn history(&self) -> &History {
+        &self.history
+    }
+
+    /// Denoises one frame: `frame` is this frame's mean radiance per pixel, `blend` its weight
+    /// against the history (1 restarts). The history is resized (and so restarted) when the
+    /// guides' size changes.
+    pub fn denoise(
+        &mut self,
+        frame: &[Vec3],
+        guides: &Guides,
+        blend: f32,
+    ) -> Result<Film, DenoiseError> {
+        let (width, height) = (guides.width, guides.height);
+        let n = width as usize * height as usize;
+        if frame.len() != n || !guides.is_consistent() {
+            return Err(DenoiseError::SizeMismatch {
+                frame: frame.len(),
+                width,
+                height,
+                guides: guides.len(),
+            });
+        }
+        if self.history.width != width || self.history.height != height {
+            self.history = History::new(width, height);
+        }
+        let nd = guides.packed_normal_depth();
+        let albedo = guides.packed_albedo();
+        accumulate(&mut self.history, frame, &albedo, blend, self.reprojection);
+        let mut a = vec![Vec4::ZERO; n];
+        let mut b = vec![Vec4::ZERO; n];
+        estimate(
+            &self.history.illumination,
+            &self.history.moments,
+            &nd,
+            width,
+            height,
+            self.params.sigma_z,
+            &mut a,
+        );
+        for pass in self.params.passes() {
+            filter(&a, &nd, &albedo, width, height, &pass, &mut b);
+            std::mem::swap(&mut a, &mut b);
+        }
+        let mut film = Film::new(width, height);
+        film.mean = a.iter().map(|v| v.truncate()).collect();
+        film.samples = self
+            .history
+            .illumination
+            .iter()
+            .map(|h| h.w as u32)
+            .max()
+            .unwrap_or(0);
+        Ok(film)
+    }
+}
