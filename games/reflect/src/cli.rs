@@ -116,11 +116,11 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         start_input = Some(StepInput::Replay(replay));
         start = at;
     }
-    let cues = args
-        .screenshots
-        .as_deref()
-        .map(|dir| screenshot_cues(dir, &world))
-        .unwrap_or_default();
+    let cues = match (&args.screenshots, &args.replay) {
+        (Some(dir), Some(_)) => replay_cues(dir, &world.chambers[start].id),
+        (Some(dir), None) => screenshot_cues(dir, &world),
+        _ => Vec::new(),
+    };
     let mut game = ReflectGame::new(world, start);
     if let Some(input) = start_input {
         game.inner_mut().start_with(input);
@@ -145,6 +145,22 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     };
     let report = run_game(config, shell, render, environment, &mut game)?;
     Ok(format!("{} frames", report.frames))
+}
+
+/// With a replay: the title, then the replay's chamber played for 400 frames, shot, quit.
+pub fn replay_cues(dir: &Path, chamber: &str) -> Vec<Cue> {
+    vec![
+        Cue::screenshot(20, dir.join("title.png")),
+        Cue::input(
+            2,
+            ShellInput::Start(LevelStart {
+                level: chamber.to_string(),
+                checkpoint: None,
+            }),
+        ),
+        Cue::screenshot(400, dir.join("play.png")),
+        Cue::input(2, ShellInput::Quit),
+    ]
 }
 
 /// The title, then each chamber from its start (two seconds in), as screenshots; then quit.
