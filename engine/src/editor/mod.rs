@@ -1,0 +1,45 @@
+//! The level editor's core (issue 12), the part that needs no window: a level document (the
+//! `Level` RON plus the comments of its file), edit commands with undo and redo on one history,
+//! the selection and picking it by a ray from the camera, snapping, saving atomically with a
+//! backup after checking every reference, and recovery files.
+//!
+//! Main thread. It edits the level description; the runner brings the world up to date
+//! (re-spawn, or [`Edit::touches`] for targeted transform updates). Must not: touch the
+//! renderer, the render thread or the GPU; it reads the scene only through `query`.
+//! Not built yet: the overlay UI (outliner, inspector, history panel), gizmos, the F1 hook.
+//! See `docs/EDITOR.md`.
+
+mod check;
+mod command;
+mod comment_scan;
+mod comments;
+mod document;
+mod fields;
+mod history;
+mod item;
+mod layout;
+mod pick;
+mod recovery;
+mod save;
+mod selection;
+mod snap;
+mod state;
+mod write;
+
+pub use check::{Problem, check_level, check_references};
+pub use command::{
+    Edit, EditError, InstanceField, LaserField, MaterialField, MergeKey, Shift, Touch, VolumeField,
+};
+pub use comments::{Anchored, Comments};
+pub use document::{Document, DocumentError};
+pub use history::{History, HistoryEntry};
+pub use item::ItemRef;
+pub use pick::{Picked, pick, pixel_ray};
+pub use recovery::{
+    RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
+};
+pub use save::{SaveError, SaveReport, backup_path, save_document};
+pub use selection::{SelectMode, Selection};
+pub use snap::{Snap, snap_angle_deg, snap_scale, snap_value};
+pub use state::EditorState;
+pub use write::render_document;
