@@ -10,6 +10,7 @@
 //! See `docs/EDITOR.md`.
 
 mod check;
+mod check_gameplay;
 mod command;
 mod comment_scan;
 mod comments;
