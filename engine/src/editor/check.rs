@@ -164,7 +164,9 @@ pub fn check_references(level: &Level) -> Vec<Problem> {
     if !(camera.vertical_fov_deg > 0.0 && camera.vertical_fov_deg < 180.0)
         || camera.look_at == camera.position
     {
-        c.report(ItemRef::Camera, "the camera needs a field of view in (0, 180) degrees and a look_at away from its position".into());
+        let message = "the camera needs a field of view in (0, 180) degrees and a look_at away \
+                       from its position";
+        c.report(ItemRef::Camera, message.into());
     }
     super::check_gameplay::gameplay(&mut c, &names, &materials);
     c.problems

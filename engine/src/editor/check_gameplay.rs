@@ -141,9 +141,14 @@ pub(super) fn gameplay(
         if !d.is_finite()
             || d.length_squared() == 0.0
             || !glam::Vec3::from(l.origin).is_finite()
-            || !(l.max_length > 0.0)
+            || l.max_length.is_nan()
+            || l.max_length <= 0.0
         {
-            c.report(ItemRef::Laser(i), format!("laser {i}: origin and direction must be finite, the direction non-zero and max_length positive"));
+            let message = format!(
+                "laser {i}: origin and direction must be finite, the direction non-zero and \
+                 max_length positive"
+            );
+            c.report(ItemRef::Laser(i), message);
         }
     }
     let volumes = c.unique(
@@ -183,7 +188,11 @@ pub(super) fn gameplay(
                     format!("{user} uses the volume {name:?}, which the level does not define"),
                 );
             } else if !is_volume && !events.contains(name) {
-                c.report(item, format!("{user} waits for the event {name:?}, which no clip fires and `events` does not declare"));
+                let message = format!(
+                    "{user} waits for the event {name:?}, which no clip fires and `events` \
+                     does not declare"
+                );
+                c.report(item, message);
             }
         }
         for action in rule.then.iter().chain(&rule.otherwise) {

@@ -68,9 +68,12 @@ impl History {
     }
 
     /// Applies `edit` to `doc` and records it (merging it into the last command when both
-    /// belong to the current drag and set the same fields). Clears the redo stack. On an error
-    /// nothing changes.
+    /// belong to the current drag and set the same fields). Clears the redo stack. An empty
+    /// batch records nothing. On an error nothing changes.
     pub fn apply(&mut self, doc: &mut Document, edit: Edit) -> Result<(), EditError> {
+        if matches!(&edit, Edit::Batch(edits) if edits.is_empty()) {
+            return Ok(()); // nothing selected: no command
+        }
         let description = edit.describe(&doc.level);
         let undo = edit.apply(doc)?;
         self.undone.clear();

@@ -25,6 +25,7 @@ mod save;
 mod selection;
 mod snap;
 mod state;
+pub mod ui;
 mod write;
 
 pub use check::{Problem, check_level, check_references};

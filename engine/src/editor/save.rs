@@ -22,7 +22,7 @@ use super::write::render_document;
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
     /// The level has problems (each names its item); nothing was written.
-    #[error("the level has {} problem(s), the first: {}", .0.len(), .0.first().map(ToString::to_string).unwrap_or_default())]
+    #[error("the level has {} problem(s), the first: {}", .0.len(), first(.0))]
     Problems(Vec<Problem>),
     /// The level could not be serialised.
     #[error("cannot write the level as RON: {0}")]
@@ -40,6 +40,14 @@ pub enum SaveError {
     /// A file could not be written (the error names it and the stage).
     #[error(transparent)]
     Write(#[from] AtomicFileError),
+}
+
+/// The first problem, for the error's message.
+fn first(problems: &[Problem]) -> String {
+    problems
+        .first()
+        .map(ToString::to_string)
+        .unwrap_or_default()
 }
 
 /// What a save did.
