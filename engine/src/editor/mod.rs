@@ -6,8 +6,8 @@
 //! Main thread. It edits the level description; the runner brings the world up to date
 //! (re-spawn, or [`Edit::touches`] for targeted transform updates). Must not: touch the
 //! renderer, the render thread or the GPU; it reads the scene only through `query`.
-//! Not built yet: the overlay UI (outliner, inspector, history panel), gizmos, the F1 hook.
-//! See `docs/EDITOR.md`.
+//! First egui panels in `ui` (outliner, inspector, history, problems, keys), not yet called
+//! by any runner. Not built yet: the F1 hook, the editor camera, gizmos. See `docs/EDITOR.md`.
 
 mod check;
 mod check_gameplay;
