@@ -15,6 +15,7 @@ use candela::editor::{
     Document, Edit, EditorState, InstanceField, ItemRef, SaveError, backup_path, check_level,
     check_references, render_document, save_document,
 };
+use candela::level::load_level;
 use editor_common::{Scratch, assets, committed_levels, platform};
 
 #[test]
