@@ -269,6 +269,10 @@ fn saving_keeps_the_previous_version_as_a_backup() -> anyhow::Result<()> {
         saved.level.instances[10].name.as_deref(),
         Some("second_cube")
     );
+    // The engine loads the saved level to play (bodies, gameplay and all).
+    let playable = load_level(&path, &AssetRoot::new(scratch.path())?)?;
+    assert_eq!(playable.scene.instances.len(), saved.level.instances.len());
+    assert_eq!(playable.gameplay.rules.len(), 2);
     let first_save = std::fs::read_to_string(&path)?;
     state.apply(Edit::DeleteInstance { index: 10 })?;
     state.save(None)?;
