@@ -55,5 +55,9 @@ pub mod level;
 /// crosshair, using and carrying; the third-person character and its follow camera.
 pub mod player;
 
+/// The level editor's core: level documents with their comments, edit commands with undo,
+/// selection and picking, snapping, checked atomic saves with backups, recovery files.
+pub mod editor;
+
 /// The runner: the frame's phases, the game-facing API, windows, scripts.
 pub mod app;

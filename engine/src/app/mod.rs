@@ -9,7 +9,6 @@
 
 mod action_frame;
 mod action_set;
-mod atomic_file;
 mod bindings;
 mod clock;
 mod engine;
@@ -50,6 +49,9 @@ mod window_app;
 mod window_events;
 mod window_running;
 mod work;
+
+// Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).
+use crate::assets::atomic_file;
 
 pub use action_frame::{AXIS_ONE, ActionFrame, MOTION_PER_COUNT, quantise_axis, quantise_motion};
 pub use action_set::{

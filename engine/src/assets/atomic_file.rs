@@ -1,15 +1,17 @@
 //! Atomic file replacement for what the player's machine keeps (settings, progress saves,
-//! input recordings): the new bytes go to a temporary file in the target's own folder, are
-//! flushed to disk (`fsync`), then renamed over the target, and the folder is synced so the
-//! rename itself survives a power cut. Until the rename, the previous file is untouched; a
-//! failure at any stage removes the temporary file and returns an error naming the target.
+//! input recordings) and for the levels the editor saves: the new bytes go to a temporary
+//! file in the target's own folder, are flushed to disk (`fsync`), then renamed over the
+//! target, and the folder is synced so the rename itself survives a power cut. Until the
+//! rename, the previous file is untouched; a failure at any stage removes the temporary file
+//! and returns an error naming the target.
 //!
 //! Also: [`keep_aside`], which renames a file that could not be read (corrupt settings, a
 //! broken save) out of the way so that the player's data is not lost when defaults replace it.
 //!
-//! The level save (`assets::Level::write_atomic`) and image writing (`render::film`) do the
-//! same without the `fsync`; they sit below `app` and cannot call this. Main thread (any
-//! thread: no shared state). Must not: know what the bytes mean.
+//! Lives in `assets` (re-exported by `app`) so that every layer from `assets` up — the level
+//! editor's save and recovery files among them — can use it. Image writing (`render::film`)
+//! does the same without the `fsync`. Main thread (any thread: no shared state). Must not:
+//! know what the bytes mean.
 
 use std::fs::{File, OpenOptions};
 use std::io::Write;

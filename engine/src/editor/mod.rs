@@ -1,0 +1,47 @@
+//! The level editor's core (issue 12), the part that needs no window: a level document (the
+//! `Level` RON plus the comments of its file), edit commands with undo and redo on one history,
+//! the selection and picking it by a ray from the camera, snapping, saving atomically with a
+//! backup after checking every reference, and recovery files.
+//!
+//! Main thread. It edits the level description; the runner brings the world up to date
+//! (re-spawn, or [`Edit::touches`] for targeted transform updates). Must not: touch the
+//! renderer, the render thread or the GPU; it reads the scene only through `query`.
+//! First egui panels in `ui` (outliner, inspector, history, problems, keys), not yet called
+//! by any runner. Not built yet: the F1 hook, the editor camera, gizmos. See `docs/EDITOR.md`.
+
+mod check;
+mod check_gameplay;
+mod command;
+mod comment_scan;
+mod comments;
+mod document;
+mod fields;
+mod history;
+mod item;
+mod layout;
+mod pick;
+mod recovery;
+mod save;
+mod selection;
+mod snap;
+mod state;
+pub mod ui;
+mod write;
+
+pub use check::{Problem, check_level, check_references};
+pub use command::{
+    Edit, EditError, InstanceField, LaserField, MaterialField, MergeKey, Shift, Touch, VolumeField,
+};
+pub use comments::{Anchored, Comments};
+pub use document::{Document, DocumentError};
+pub use history::{History, HistoryEntry};
+pub use item::ItemRef;
+pub use pick::{Picked, pick, pixel_ray};
+pub use recovery::{
+    RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
+};
+pub use save::{SaveError, SaveReport, backup_path, save_document};
+pub use selection::{SelectMode, Selection};
+pub use snap::{Snap, snap_angle_deg, snap_scale, snap_value};
+pub use state::EditorState;
+pub use write::render_document;

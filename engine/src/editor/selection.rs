@@ -1,0 +1,104 @@
+//! [`Selection`]: the instances the editor's tools act on, by index into the level's
+//! instance list, in the order they were selected (the last is the primary one, whose fields
+//! the inspector shows). Follows inserted and removed instances ([`Shift`]).
+//!
+//! Main thread. Must not: read the level (indices are checked by whoever uses them).
+
+use super::command::Shift;
+
+/// How a click changes the selection (plain click, Shift, Ctrl).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SelectMode {
+    /// The clicked instance alone (a click on nothing clears the selection).
+    Replace,
+    /// The clicked instance joins the selection.
+    Add,
+    /// The clicked instance joins or leaves the selection.
+    Toggle,
+}
+
+/// Selected instances, each once, in selection order.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Selection {
+    instances: Vec<usize>,
+}
+
+impl Selection {
+    /// Applies a click on `instance` (`None`: on nothing) with `mode`.
+    pub fn click(&mut self, instance: Option<usize>, mode: SelectMode) {
+        match (mode, instance) {
+            (SelectMode::Replace, None) => self.instances.clear(),
+            (SelectMode::Replace, Some(i)) => self.instances = vec![i],
+            (_, None) => {}
+            (SelectMode::Add, Some(i)) => {
+                self.instances.retain(|&k| k != i);
+                self.instances.push(i);
+            }
+            (SelectMode::Toggle, Some(i)) => {
+                if self.contains(i) {
+                    self.instances.retain(|&k| k != i);
+                } else {
+                    self.instances.push(i);
+                }
+            }
+        }
+    }
+
+    /// Selects exactly `instances` (duplicates dropped, order kept).
+    pub fn set(&mut self, instances: impl IntoIterator<Item = usize>) {
+        self.instances.clear();
+        for i in instances {
+            if !self.contains(i) {
+                self.instances.push(i);
+            }
+        }
+    }
+
+    pub fn clear(&mut self) {
+        self.instances.clear();
+    }
+
+    pub fn contains(&self, instance: usize) -> bool {
+        self.instances.contains(&instance)
+    }
+
+    /// The selected instances in selection order.
+    pub fn instances(&self) -> &[usize] {
+        &self.instances
+    }
+
+    /// The last selected instance.
+    pub fn primary(&self) -> Option<usize> {
+        self.instances.last().copied()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.instances.is_empty()
+    }
+
+    /// Follows an edit that inserted or removed an instance.
+    pub fn shift(&mut self, shift: Shift) {
+        match shift {
+            Shift::Inserted(at) => {
+                for i in &mut self.instances {
+                    if *i >= at {
+                        *i += 1;
+                    }
+                }
+            }
+            Shift::Removed(at) => {
+                self.instances.retain(|&i| i != at);
+                for i in &mut self.instances {
+                    if *i > at {
+                        *i -= 1;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Drops indices at or past `len` (after a level was replaced).
+    pub fn retain_below(&mut self, len: usize) {
+        self.instances.retain(|&i| i < len);
+    }
+}
