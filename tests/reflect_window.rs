@@ -33,7 +33,7 @@ fn open(path: &Path) -> RgbImage {
 /// Mean luma over the box (fractions of the width and height).
 fn mean_luma(img: &RgbImage, xs: (f32, f32), ys: (f32, f32)) -> f64 {
     let (w, h) = img.dimensions();
-    let (mut sum, mut n) = (0.0, 0.0);
+    let (mut sum, mut n) = (0.0f64, 0.0f64);
     for y in (ys.0 * h as f32) as u32..(ys.1 * h as f32) as u32 {
         for x in (xs.0 * w as f32) as u32..(xs.1 * w as f32) as u32 {
             let p = img.get_pixel(x, y).0;
@@ -47,7 +47,7 @@ fn mean_luma(img: &RgbImage, xs: (f32, f32), ys: (f32, f32)) -> f64 {
 /// Fraction of the box's pixels close to the accent colour (the shell theme's orange).
 fn accent_fraction(img: &RgbImage, xs: (f32, f32), ys: (f32, f32)) -> f64 {
     let (w, h) = img.dimensions();
-    let (mut hits, mut n) = (0.0, 0.0);
+    let (mut hits, mut n) = (0.0f64, 0.0f64);
     for y in (ys.0 * h as f32) as u32..(ys.1 * h as f32) as u32 {
         for x in (xs.0 * w as f32) as u32..(xs.1 * w as f32) as u32 {
             let [r, g, b] = img.get_pixel(x, y).0;
