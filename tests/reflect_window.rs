@@ -15,8 +15,8 @@ use std::sync::atomic::AtomicBool;
 
 use candela::app::shell::ShellConfig;
 use candela::app::{StepInput, UserDirs, WindowConfig, WindowEnd, run_game};
-use candela::render::scaling::ScalingTarget;
 use candela::render::RenderConfig;
+use candela::render::scaling::ScalingTarget;
 use candela_tests::repo;
 use candela_tests::xvfb::{set_environment, start_xvfb};
 use image::RgbImage;
@@ -67,9 +67,14 @@ fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
     std::fs::create_dir_all(&scratch).expect("scratch");
     let xvfb = start_xvfb();
     set_environment(&xvfb.display, &scratch);
-    let (path, root) = reflect::cli::locate(Some(&repo().join("assets/reflect/reflect.ron"))).expect("game file");
+    let (path, root) =
+        reflect::cli::locate(Some(&repo().join("assets/reflect/reflect.ron"))).expect("game file");
     let world = ReflectWorld::load(&path, &root).expect("the world loads");
-    let (replay, start) = open_replay(&world, &repo().join("assets/reflect/replays/chamber_1.replay")).expect("replay");
+    let (replay, start) = open_replay(
+        &world,
+        &repo().join("assets/reflect/replays/chamber_1.replay"),
+    )
+    .expect("replay");
     let cues = reflect::cli::replay_cues(&scratch, &world.chambers[start].id);
     let mut game = ReflectGame::new(world, start);
     game.inner_mut().start_with(StepInput::Replay(replay));
@@ -89,7 +94,8 @@ fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
         ..RenderConfig::cpu(960, 540)
     };
     let environment = game.inner().environment();
-    let report = run_game(config, shell, render, environment, &mut game).expect("Reflect runs in the Xvfb window");
+    let report = run_game(config, shell, render, environment, &mut game)
+        .expect("Reflect runs in the Xvfb window");
     eprintln!("{} frames in {:.1} s", report.frames, report.seconds);
     assert_eq!(report.ended_by, WindowEnd::Quit);
 
@@ -104,15 +110,24 @@ fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
     let heading = accent_fraction(&play, (0.0, 0.2), (0.0, 0.1));
     assert!(heading > 0.005, "the objective heading: {heading}");
 
-    assert!(game.log().iter().any(|(_, e)| *e == ReflectEvent::Entered(0)), "{:?}", game.log());
+    assert!(
+        game.log()
+            .iter()
+            .any(|(_, e)| *e == ReflectEvent::Entered(0)),
+        "{:?}",
+        game.log()
+    );
     let steps = (game.play_seconds() * 60.0).round() as u64;
     eprintln!("{steps} steps played in the window");
     assert!(steps >= 200, "the replay advanced: {steps} steps");
     if steps >= 460 {
-        let door = game
-            .log()
-            .iter()
-            .any(|(_, e)| matches!(e, ReflectEvent::Rule { name, rising: true } if name == "door_1"));
-        assert!(door, "the replay carried the cube onto the plate: {:?}", game.log());
+        let door = game.log().iter().any(
+            |(_, e)| matches!(e, ReflectEvent::Rule { name, rising: true } if name == "door_1"),
+        );
+        assert!(
+            door,
+            "the replay carried the cube onto the plate: {:?}",
+            game.log()
+        );
     }
 }

@@ -92,7 +92,12 @@ fn merge(out: &mut Level, part: &Level) -> Result<(), String> {
         ));
     }
     out.instances.extend(part.instances.iter().cloned());
-    unique_by(&mut out.characters, &part.characters, |c| &c.name, "character")?;
+    unique_by(
+        &mut out.characters,
+        &part.characters,
+        |c| &c.name,
+        "character",
+    )?;
 
     let (g, p) = (&mut out.gameplay, &part.gameplay);
     union_by(&mut g.sounds, &p.sounds, |s| &s.name, "sound")?;

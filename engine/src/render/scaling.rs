@@ -219,7 +219,9 @@ mod tests {
         // Full resolution costs 40× the target: steps of 1/8 would take some 30 frames.
         let target = 0.001;
         let mut s = Scaling::new(1, Some(ScalingTarget::new(target as f32)));
-        let full = |w: &Workload| 0.04 * (w.resolution * w.resolution) as f64 * (0.5 + 0.5 * w.roulette_scale as f64);
+        let full = |w: &Workload| {
+            0.04 * (w.resolution * w.resolution) as f64 * (0.5 + 0.5 * w.roulette_scale as f64)
+        };
         let mut frames = 0;
         while full(&s.current()) > 2.0 * target {
             let w = s.current();

@@ -23,7 +23,13 @@ use reflect::world::ReflectWorld;
 /// Give up after this many steps per chamber (two minutes of play).
 const MAX_STEPS: u64 = 120 * 60;
 
-fn record(world: &ReflectWorld, id: &str, start: usize, chambers: &[usize], out: &Path) -> anyhow::Result<()> {
+fn record(
+    world: &ReflectWorld,
+    id: &str,
+    start: usize,
+    chambers: &[usize],
+    out: &Path,
+) -> anyhow::Result<()> {
     let mut game = ReflectGame::new(world.clone(), start);
     let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
     game.setup(&mut engine)
@@ -67,7 +73,12 @@ fn record(world: &ReflectWorld, id: &str, start: usize, chambers: &[usize], out:
             println!("  step {step}: {e:?}");
         }
     }
-    println!("{id}: finished {:?}, ending {}, wrote {}", game.finished(), game.ended(), out.display());
+    println!(
+        "{id}: finished {:?}, ending {}, wrote {}",
+        game.finished(),
+        game.ended(),
+        out.display()
+    );
     let _ = engine.shutdown();
     Ok(())
 }
@@ -81,11 +92,23 @@ fn main() -> anyhow::Result<()> {
     let all: Vec<usize> = (0..world.chambers.len()).collect();
     for (i, chamber) in world.chambers.iter().enumerate() {
         if wanted.is_empty() || wanted.contains(&chamber.id) {
-            record(&world, &chamber.id, i, &[i], &dir.join(format!("{}.replay", chamber.id)))?;
+            record(
+                &world,
+                &chamber.id,
+                i,
+                &[i],
+                &dir.join(format!("{}.replay", chamber.id)),
+            )?;
         }
     }
     if wanted.is_empty() || wanted.iter().any(|w| w == FULL_GAME) {
-        record(&world, FULL_GAME, 0, &all, &dir.join(format!("{FULL_GAME}.replay")))?;
+        record(
+            &world,
+            FULL_GAME,
+            0,
+            &all,
+            &dir.join(format!("{FULL_GAME}.replay")),
+        )?;
     }
     Ok(())
 }

@@ -41,7 +41,12 @@ fn median(mut v: Vec<f64>) -> f64 {
 }
 
 /// Plays chamber `index`'s replay on `world` for at most `seconds` of wall time.
-fn run(world: &ReflectWorld, index: usize, replay: &Path, seconds: f64) -> anyhow::Result<ChamberFigures> {
+fn run(
+    world: &ReflectWorld,
+    index: usize,
+    replay: &Path,
+    seconds: f64,
+) -> anyhow::Result<ChamberFigures> {
     let (replay, start) = open_replay(world, replay)?;
     debug_assert_eq!(start, index);
     let mut game = ReflectGame::new(world.clone(), start);
@@ -90,11 +95,14 @@ fn run(world: &ReflectWorld, index: usize, replay: &Path, seconds: f64) -> anyho
 }
 
 /// Runs every chamber with and without room switching; returns the Markdown table.
-pub fn bench(world: &ReflectWorld, root: &AssetRoot, replays: &Path, seconds: f64) -> anyhow::Result<String> {
+pub fn bench(
+    world: &ReflectWorld,
+    root: &AssetRoot,
+    replays: &Path,
+    seconds: f64,
+) -> anyhow::Result<String> {
     let all_on = world.without_room_switching(root)?;
-    let mut out = String::from(
-        "| chamber | frames | frame ms (median) | fps |",
-    );
+    let mut out = String::from("| chamber | frames | frame ms (median) | fps |");
     for p in Phase::ALL {
         out += &format!(" {} ms |", p.name());
     }
@@ -105,7 +113,13 @@ pub fn bench(world: &ReflectWorld, root: &AssetRoot, replays: &Path, seconds: f6
         let replay = replays.join(format!("{}.replay", chamber.id));
         let f = run(world, i, &replay, seconds)?;
         let on = run(&all_on, i, &replay, seconds.min(8.0))?;
-        out += &format!("| {} | {} | {:.1} | {:.1} |", chamber.id, f.frames, f.frame_ms, 1e3 / f.frame_ms);
+        out += &format!(
+            "| {} | {} | {:.1} | {:.1} |",
+            chamber.id,
+            f.frames,
+            f.frame_ms,
+            1e3 / f.frame_ms
+        );
         for ms in &f.phase_ms {
             out += &format!(" {ms:.2} |");
         }

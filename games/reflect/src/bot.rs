@@ -26,10 +26,18 @@ pub enum Task {
     Pick { body: String },
     /// Carry what is held until it is over `over` (x, z within `within`), facing `yaw`
     /// (radians) when given, then drop it and wait for it to settle.
-    Carry { over: Vec3, within: f32, yaw: Option<f32> },
+    Carry {
+        over: Vec3,
+        within: f32,
+        yaw: Option<f32>,
+    },
     /// From where it stands, aim at `at` and shoot the panel named `panel` (left button to
     /// make a mirror, right to revert) until it is what was asked.
-    Shoot { at: Vec3, panel: String, mirror: bool },
+    Shoot {
+        at: Vec3,
+        panel: String,
+        mirror: bool,
+    },
     /// Aim at `at` and press E until the player used something.
     Use { at: Vec3 },
     /// Wait until the rule `name` has risen.
@@ -89,7 +97,14 @@ fn aim(player: &FirstPersonPlayer, yaw: f32, pitch: f32, act: &mut Act) -> (f32,
 }
 
 /// Walks towards `target` looking at `pitch`; true once within `within`.
-fn walk_to(player: &FirstPersonPlayer, feet: Vec3, target: Vec2, pitch: f32, within: f32, act: &mut Act) -> bool {
+fn walk_to(
+    player: &FirstPersonPlayer,
+    feet: Vec3,
+    target: Vec2,
+    pitch: f32,
+    within: f32,
+    act: &mut Act,
+) -> bool {
     let to = Vec3::new(target.x, feet.y, target.y);
     if (to - feet).with_y(0.0).length() <= within {
         aim(player, player.yaw, pitch, act);
@@ -147,7 +162,11 @@ impl Bot {
         let eye = player.eye(world);
         let held = player.held(world);
         let named = |name: &str| game.inner().spawned().by_name.get(name).copied();
-        let position = |e: hecs::Entity| world.get::<&Transform>(e).map_or(Vec3::ZERO, |t| t.translation);
+        let position = |e: hecs::Entity| {
+            world
+                .get::<&Transform>(e)
+                .map_or(Vec3::ZERO, |t| t.translation)
+        };
         match task {
             Task::Walk { to, within } => {
                 if walk_to(player, feet, to, 0.0, within, &mut act) {

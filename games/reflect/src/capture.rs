@@ -1,7 +1,7 @@
 //! `reflect --capture DIR`: a converged picture of every chamber as the player sees it, for
 //! the README and `docs/`: the chamber started as from the menu, the player's eye put at the
-//! chamber file's own `camera`, nothing pressed, frames rendered on the CPU tracer until the
-//! still image has converged, the last one written as `DIR/<chamber>.png`.
+//! chamber file's own `camera`, nothing pressed, the game paused once settled, frames rendered
+//! on the CPU tracer until the still image has converged, the last one written as `DIR/<chamber>.png`.
 //!
 //! Owns: [`capture_chambers`]. Main thread (the render thread renders). Must not: change the
 //! game.
@@ -18,7 +18,13 @@ use crate::world::ReflectWorld;
 
 /// Renders every chamber for `frames` frames at `width` × `height` (one sample per pixel per
 /// frame, blended while nothing moves); returns the files written.
-pub fn capture_chambers(world: &ReflectWorld, dir: &Path, width: u32, height: u32, frames: u32) -> anyhow::Result<Vec<String>> {
+pub fn capture_chambers(
+    world: &ReflectWorld,
+    dir: &Path,
+    width: u32,
+    height: u32,
+    frames: u32,
+) -> anyhow::Result<Vec<String>> {
     std::fs::create_dir_all(dir)?;
     let mut written = Vec::new();
     for (i, chamber) in world.chambers.iter().enumerate() {
@@ -33,6 +39,9 @@ pub fn capture_chambers(world: &ReflectWorld, dir: &Path, width: u32, height: u3
             engine.frame(1.0 / 60.0, &mut game)?;
             let _ = engine.rendered();
         }
+        // Paused, nothing steps: the still image converges (the player's capsule would
+        // otherwise settle by fractions of a millimetre, enough to restart it).
+        engine.set_paused(true);
         let mut last = None;
         for f in 0..frames {
             if f + 1 == frames {
@@ -58,7 +67,13 @@ pub fn capture_chambers(world: &ReflectWorld, dir: &Path, width: u32, height: u3
             anyhow::bail!("{}: no film", chamber.id);
         };
         let path = dir.join(format!("{}.png", chamber.id));
-        write_png(&path, film.width, film.height, &film.mean, &TonemapSettings::default())?;
+        write_png(
+            &path,
+            film.width,
+            film.height,
+            &film.mean,
+            &TonemapSettings::default(),
+        )?;
         eprintln!("{}: {} samples per pixel", path.display(), film.samples);
         written.push(path.display().to_string());
     }

@@ -138,8 +138,7 @@ impl GameFile {
             })?;
             let (min, max) = (Vec3::from(c.bounds.0), Vec3::from(c.bounds.1));
             let start = Vec3::from(c.start);
-            if !(min.is_finite() && max.is_finite() && start.is_finite() && c.yaw_deg.is_finite())
-            {
+            if !(min.is_finite() && max.is_finite() && start.is_finite() && c.yaw_deg.is_finite()) {
                 return Err(item("a number is not finite"));
             }
             if !min.cmplt(max).all() {

@@ -105,7 +105,10 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         let summary = play_replay(&world, replay)?;
         let line = summary.line(&world);
         if !summary.solved(whole) {
-            bail!("{line}: the recording {} did not solve what it was recorded for", replay.display());
+            bail!(
+                "{line}: the recording {} did not solve what it was recorded for",
+                replay.display()
+            );
         }
         return Ok(line);
     }

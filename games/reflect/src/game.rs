@@ -19,7 +19,13 @@ use crate::world::ReflectWorld;
 
 /// Events the level's rules hear from the game (declared in the base level's `events`), for
 /// sounds: a mirror made, a mirror reverted, a refused shot, the player sent back.
-pub const EVENTS: [&str; 5] = ["mirror_on", "mirror_off", "mirror_refused", "zapped", "footstep"];
+pub const EVENTS: [&str; 5] = [
+    "mirror_on",
+    "mirror_off",
+    "mirror_refused",
+    "zapped",
+    "footstep",
+];
 
 /// Metres walked between two footsteps.
 const STRIDE: f32 = 0.75;
@@ -166,7 +172,8 @@ impl ReflectGame {
         if let Some(c) = self.current
             && k == c + 1
         {
-            step.commands.finish_level(self.world.chambers[c].id.clone());
+            step.commands
+                .finish_level(self.world.chambers[c].id.clone());
             self.note(step.index, ReflectEvent::Finished(c));
         }
         self.current = Some(k);
@@ -204,7 +211,12 @@ impl ReflectGame {
         if held_before {
             return;
         }
-        let input = player_input(step.actions, step.action_set, step.settings, step.step_seconds);
+        let input = player_input(
+            step.actions,
+            step.action_set,
+            step.settings,
+            step.step_seconds,
+        );
         let mirror = match (input.primary_pressed, input.secondary_pressed) {
             (true, _) => true,
             (false, true) => false,
@@ -235,7 +247,8 @@ fn turn_held_cube(step: &mut Step<'_>, inner: &FirstPersonGame) {
         && let Some((at, _)) = step.physics.pose(held)
     {
         let yaw = player.yaw + std::f32::consts::FRAC_PI_4;
-        step.physics.set_pose(held, at, glam::Quat::from_rotation_y(yaw));
+        step.physics
+            .set_pose(held, at, glam::Quat::from_rotation_y(yaw));
     }
 }
 
@@ -251,7 +264,9 @@ impl Game for ReflectGame {
             .iter()
             .filter_map(|&i| spawned.entities.get(i).copied())
             .map(|e| {
-                let at = world.get::<&Transform>(e).map_or(glam::Vec3::NAN, |t| t.translation);
+                let at = world
+                    .get::<&Transform>(e)
+                    .map_or(glam::Vec3::NAN, |t| t.translation);
                 let chamber = self.world.chambers.iter().position(|c| c.contains(at));
                 let original = world
                     .get::<&Renderable>(e)
@@ -333,7 +348,8 @@ impl Game for ReflectGame {
             LevelEvent::Ended(Outcome::Won(_)) if self.ended_at.is_none() => {
                 self.ended_at = Some(self.steps);
                 if let Some(c) = self.current {
-                    step.commands.finish_level(self.world.chambers[c].id.clone());
+                    step.commands
+                        .finish_level(self.world.chambers[c].id.clone());
                     self.note(step.index, ReflectEvent::Finished(c));
                 }
                 self.note(step.index, ReflectEvent::Ending);

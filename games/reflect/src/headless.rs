@@ -106,7 +106,11 @@ impl RunSummary {
             (self.seconds % 60.0) as u64,
             self.mirrors,
             self.sent_back,
-            if self.ending { "reached" } else { "not reached" },
+            if self.ending {
+                "reached"
+            } else {
+                "not reached"
+            },
             self.steps,
             self.state_hash
         )

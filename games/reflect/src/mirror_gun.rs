@@ -98,7 +98,13 @@ impl MirrorGun {
 
     /// The mirrorable panel the ray from `eye` along `view` hits first within [`RANGE`]
     /// (visible laser beams are looked through), if the first thing it hits is one.
-    pub fn aimed(&self, world: &World, queries: &Queries<'_>, eye: Vec3, view: Vec3) -> Option<Entity> {
+    pub fn aimed(
+        &self,
+        world: &World,
+        queries: &Queries<'_>,
+        eye: Vec3,
+        view: Vec3,
+    ) -> Option<Entity> {
         let mut ray = Ray::new(eye, view);
         ray.t_max = RANGE;
         let hit = queries.closest_where(&ray, |e| !e.is_some_and(|e| is_beam(world, e)))?;
@@ -107,7 +113,13 @@ impl MirrorGun {
 
     /// Pulls the trigger: `mirror` (left button) or revert (right button) on `target`, with
     /// at most `cap` mirrors in the panel's chamber.
-    pub fn shoot(&mut self, world: &mut World, target: Option<Entity>, mirror: bool, cap: impl Fn(usize) -> u32) -> GunShot {
+    pub fn shoot(
+        &mut self,
+        world: &mut World,
+        target: Option<Entity>,
+        mirror: bool,
+        cap: impl Fn(usize) -> u32,
+    ) -> GunShot {
         let Some(target) = target else {
             return GunShot::Nothing;
         };

@@ -31,7 +31,10 @@ pub fn open_replay(world: &ReflectWorld, path: &Path) -> anyhow::Result<(Replay,
         0
     } else {
         world.chamber_index(&id).with_context(|| {
-            format!("{}: recorded for chamber {id:?}, which the game does not have", path.display())
+            format!(
+                "{}: recorded for chamber {id:?}, which the game does not have",
+                path.display()
+            )
         })?
     };
     let set = ActionSet::standard();

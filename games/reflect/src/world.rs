@@ -9,8 +9,8 @@
 use std::path::{Path, PathBuf};
 
 use candela::app::fnv1a64;
-use candela::assets::{AssetError, AssetRoot, Level};
 use candela::assets::ActionEntry;
+use candela::assets::{AssetError, AssetRoot, Level};
 use candela::level::{PlayableLevel, load_composed, playable_from_level};
 
 use crate::chambers::{Chamber, GameFile, GameFileError};
@@ -103,8 +103,10 @@ impl ReflectWorld {
         let mut level = self.level.clone();
         level.gameplay.lights_off.clear();
         for rule in &mut level.gameplay.rules {
-            rule.then.retain(|a| !matches!(a, ActionEntry::Lights { .. }));
-            rule.otherwise.retain(|a| !matches!(a, ActionEntry::Lights { .. }));
+            rule.then
+                .retain(|a| !matches!(a, ActionEntry::Lights { .. }));
+            rule.otherwise
+                .retain(|a| !matches!(a, ActionEntry::Lights { .. }));
         }
         let playable = playable_from_level(&self.files[0], &level, root)?;
         Ok(Self {

@@ -32,7 +32,11 @@ fn fresh_root(name: &str) -> PathBuf {
     for dir in ["reflect/levels", "reflect/kit", "common/sounds"] {
         copy_dir(&assets().join(dir), &root.join(dir));
     }
-    std::fs::copy(assets().join("reflect/reflect.ron"), root.join("reflect/reflect.ron")).expect("copy");
+    std::fs::copy(
+        assets().join("reflect/reflect.ron"),
+        root.join("reflect/reflect.ron"),
+    )
+    .expect("copy");
     root
 }
 
@@ -62,7 +66,11 @@ fn the_unbroken_copy_loads() {
 #[test]
 fn a_receiver_wired_to_an_unknown_door_names_the_chamber_file_and_the_rule() {
     let root = fresh_root("door");
-    edit(&root.join("reflect/levels/chamber_2.ron"), r#"Play(clip: "door_2_open")"#, r#"Play(clip: "door_9_open")"#);
+    edit(
+        &root.join("reflect/levels/chamber_2.ron"),
+        r#"Play(clip: "door_2_open")"#,
+        r#"Play(clip: "door_9_open")"#,
+    );
     let e = load_error(&root);
     assert!(e.contains("chamber_2.ron"), "{e}");
     assert!(e.contains("door_9_open"), "{e}");
@@ -73,7 +81,11 @@ fn a_receiver_wired_to_an_unknown_door_names_the_chamber_file_and_the_rule() {
 #[test]
 fn a_mirror_cap_below_zero_names_the_game_file_and_the_chamber() {
     let root = fresh_root("cap");
-    edit(&root.join("reflect/reflect.ron"), "mirrors: 2", "mirrors: -1");
+    edit(
+        &root.join("reflect/reflect.ron"),
+        "mirrors: 2",
+        "mirrors: -1",
+    );
     let e = load_error(&root);
     assert!(e.contains("reflect.ron"), "{e}");
     assert!(e.contains("chamber_4") && e.contains("-1"), "{e}");
@@ -93,7 +105,11 @@ fn a_missing_art_file_names_the_file_that_asks_for_it() {
 #[test]
 fn a_name_used_by_two_chambers_names_the_later_file() {
     let root = fresh_root("clash");
-    edit(&root.join("reflect/levels/chamber_3.ron"), r#"name: "cube_3""#, r#"name: "cube_1""#);
+    edit(
+        &root.join("reflect/levels/chamber_3.ron"),
+        r#"name: "cube_3""#,
+        r#"name: "cube_1""#,
+    );
     let e = load_error(&root);
     assert!(e.contains("chamber_3.ron") && e.contains("cube_1"), "{e}");
     let _ = std::fs::remove_dir_all(root);
@@ -102,7 +118,11 @@ fn a_name_used_by_two_chambers_names_the_later_file() {
 #[test]
 fn a_chamber_file_that_does_not_parse_names_its_line() {
     let root = fresh_root("syntax");
-    edit(&root.join("reflect/levels/chamber_1.ron"), "instances: [", "instances: [[");
+    edit(
+        &root.join("reflect/levels/chamber_1.ron"),
+        "instances: [",
+        "instances: [[",
+    );
     let e = load_error(&root);
     assert!(e.contains("chamber_1.ron"), "{e}");
     let _ = std::fs::remove_dir_all(root);
@@ -111,11 +131,18 @@ fn a_chamber_file_that_does_not_parse_names_its_line() {
 #[test]
 fn a_replay_of_another_version_of_the_world_is_refused() {
     let root = fresh_root("replay");
-    edit(&root.join("reflect/levels/chamber_1.ron"), "(3, 0, -11)", "(3.5, 0, -11)");
+    edit(
+        &root.join("reflect/levels/chamber_1.ron"),
+        "(3, 0, -11)",
+        "(3.5, 0, -11)",
+    );
     let asset_root = AssetRoot::new(&root).expect("root");
     let world = ReflectWorld::load(&root.join("reflect/reflect.ron"), &asset_root).expect("loads");
     let replay = assets().join("reflect/replays/chamber_1.replay");
-    let e = reflect::replays::open_replay(&world, &replay).err().expect("refused").to_string();
+    let e = reflect::replays::open_replay(&world, &replay)
+        .err()
+        .expect("refused")
+        .to_string();
     assert!(e.contains("chamber_1.replay"), "{e}");
     let _ = std::fs::remove_dir_all(root);
 }

@@ -20,7 +20,8 @@ fn world() -> ReflectWorld {
 /// and whether every task finished.
 fn drive(start: usize, tasks: Vec<Task>, steps: u32) -> (ReflectGame, Engine, bool) {
     let mut game = ReflectGame::new(world(), start);
-    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment()).expect("engine");
+    let mut engine =
+        Engine::new(RenderConfig::cpu(16, 9), game.inner().environment()).expect("engine");
     game.setup(&mut engine).expect("setup");
     let mut bot = Bot::new(tasks);
     for _ in 0..steps {
@@ -54,7 +55,10 @@ const DECOY: Vec3 = Vec3::new(-7.9, 3.5, -20.0);
 
 #[test]
 fn the_cap_refuses_a_second_mirror_in_the_first_mirror_chamber() {
-    let tasks = vec![shoot("panel_2", PANEL, true), shoot("panel_2_decoy", DECOY, true)];
+    let tasks = vec![
+        shoot("panel_2", PANEL, true),
+        shoot("panel_2_decoy", DECOY, true),
+    ];
     let (game, engine, done) = drive(1, tasks, 600);
     assert!(!done, "the second mirror was made past the cap of 1");
     let refused = game
@@ -64,10 +68,17 @@ fn the_cap_refuses_a_second_mirror_in_the_first_mirror_chamber() {
     assert!(refused, "no refusal: {:?}", game.log());
     assert_eq!(game.gun().active_in(1), 1);
     let hud = game.hud();
-    assert!(hud.counters.contains(&("Mirrors".into(), "1 / 1".into())), "{:?}", hud.counters);
+    assert!(
+        hud.counters.contains(&("Mirrors".into(), "1 / 1".into())),
+        "{:?}",
+        hud.counters
+    );
     // The mirror is the panel with the mirror material: same model, an override.
     let panel = game.inner().spawned().by_name["panel_2"];
-    let r = engine.world().get::<&Renderable>(panel).expect("renderable");
+    let r = engine
+        .world()
+        .get::<&Renderable>(panel)
+        .expect("renderable");
     assert_eq!(r.material_override, Some(game.world().mirror_material));
 }
 
@@ -81,7 +92,13 @@ fn reverting_a_mirror_frees_the_cap() {
     let (game, engine, done) = drive(1, tasks, 900);
     assert!(done, "stuck: {:?}", game.log());
     let panel = game.inner().spawned().by_name["panel_2"];
-    let r = engine.world().get::<&Renderable>(panel).expect("renderable");
-    assert_eq!(r.material_override, None, "the reverted panel has its own material back");
+    let r = engine
+        .world()
+        .get::<&Renderable>(panel)
+        .expect("renderable");
+    assert_eq!(
+        r.material_override, None,
+        "the reverted panel has its own material back"
+    );
     assert_eq!(game.gun().made, 2);
 }

@@ -16,13 +16,17 @@ fn world() -> ReflectWorld {
 }
 
 fn replay(id: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(format!("../../assets/reflect/replays/{id}.replay"))
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join(format!("../../assets/reflect/replays/{id}.replay"))
 }
 
 /// Step at which rule `name` first rose.
 fn rose(run: &RunSummary, name: &str) -> Option<u64> {
     run.log.iter().find_map(|(step, e)| match e {
-        ReflectEvent::Rule { name: n, rising: true } if n == name => Some(*step),
+        ReflectEvent::Rule {
+            name: n,
+            rising: true,
+        } if n == name => Some(*step),
         _ => None,
     })
 }
@@ -34,7 +38,10 @@ fn in_order(run: &RunSummary, rules: &[&str]) {
         assert!(step.is_some(), "rule {rule} never rose; log: {:?}", run.log);
     }
     let steps: Vec<u64> = steps.into_iter().flatten().collect();
-    assert!(steps.windows(2).all(|w| w[0] <= w[1]), "rules {rules:?} rose at {steps:?}, out of order");
+    assert!(
+        steps.windows(2).all(|w| w[0] <= w[1]),
+        "rules {rules:?} rose at {steps:?}, out of order"
+    );
 }
 
 fn play(world: &ReflectWorld, id: &str) -> RunSummary {
@@ -47,7 +54,11 @@ fn play(world: &ReflectWorld, id: &str) -> RunSummary {
 fn chamber_1_the_cube_on_the_plate_opens_the_door() {
     let world = world();
     let run = play(&world, "chamber_1");
-    assert!(run.solved(false), "chamber 1 not finished: {}", run.line(&world));
+    assert!(
+        run.solved(false),
+        "chamber 1 not finished: {}",
+        run.line(&world)
+    );
     in_order(&run, &["lights_1", "door_1"]);
     assert_eq!(run.finished, vec![0]);
 }
@@ -56,11 +67,19 @@ fn chamber_1_the_cube_on_the_plate_opens_the_door() {
 fn chamber_2_a_mirror_sends_the_fence_into_the_receiver() {
     let world = world();
     let run = play(&world, "chamber_2");
-    assert!(run.solved(false), "chamber 2 not finished: {}", run.line(&world));
+    assert!(
+        run.solved(false),
+        "chamber 2 not finished: {}",
+        run.line(&world)
+    );
     in_order(&run, &["lights_2", "mirror_on", "solve_2"]);
     assert_eq!(run.mirrors, 1);
     // The shutter closed over the emitter: the fence is a stub now.
-    let beam = run.beams.iter().find(|b| b.laser == "emitter_2").expect("the fence");
+    let beam = run
+        .beams
+        .iter()
+        .find(|b| b.laser == "emitter_2")
+        .expect("the fence");
     assert_eq!(beam.stopped_at.as_deref(), Some("shutter_2"), "{beam:?}");
 }
 
@@ -68,26 +87,52 @@ fn chamber_2_a_mirror_sends_the_fence_into_the_receiver() {
 fn chamber_3_the_glass_cube_turns_the_beam_into_the_receiver() {
     let world = world();
     let run = play(&world, "chamber_3");
-    assert!(run.solved(false), "chamber 3 not finished: {}", run.line(&world));
+    assert!(
+        run.solved(false),
+        "chamber 3 not finished: {}",
+        run.line(&world)
+    );
     in_order(&run, &["turn_3", "solve_3"]);
-    let beam = run.beams.iter().find(|b| b.laser == "emitter_3").expect("the beam");
+    let beam = run
+        .beams
+        .iter()
+        .find(|b| b.laser == "emitter_3")
+        .expect("the beam");
     // Emitter → into the cube → total internal reflection → out of the cube → the receiver.
-    assert!(beam.points.len() >= 5, "the beam did not pass the cube: {beam:?}");
+    assert!(
+        beam.points.len() >= 5,
+        "the beam did not pass the cube: {beam:?}"
+    );
     assert_eq!(beam.stopped_at.as_deref(), Some("receiver_3"), "{beam:?}");
     let end = beam.points.last().expect("points");
-    assert!(end.x < -7.0, "the beam does not end on the left wall: {beam:?}");
+    assert!(
+        end.x < -7.0,
+        "the beam does not end on the left wall: {beam:?}"
+    );
 }
 
 #[test]
 fn chamber_4_two_mirrors_light_two_receivers_and_the_cube_holds_the_plate() {
     let world = world();
     let run = play(&world, "chamber_4");
-    assert!(run.solved(false), "chamber 4 not finished: {}", run.line(&world));
+    assert!(
+        run.solved(false),
+        "chamber 4 not finished: {}",
+        run.line(&world)
+    );
     in_order(&run, &["lights_4", "door_4"]);
     assert_eq!(run.mirrors, 2);
-    let beam = run.beams.iter().find(|b| b.laser == "emitter_4").expect("the beam");
+    let beam = run
+        .beams
+        .iter()
+        .find(|b| b.laser == "emitter_4")
+        .expect("the beam");
     assert_eq!(beam.stopped_at.as_deref(), Some("receiver_4b"), "{beam:?}");
-    assert_eq!(beam.points.len(), 4, "emitter, two mirrors, receiver: {beam:?}");
+    assert_eq!(
+        beam.points.len(),
+        4,
+        "emitter, two mirrors, receiver: {beam:?}"
+    );
 }
 
 #[test]
@@ -106,12 +151,31 @@ fn the_whole_game_replay_reaches_the_ending_through_every_chamber_in_order() {
     assert_eq!(run.finished, vec![0, 1, 2, 3, 4], "{}", run.line(&world));
     in_order(
         &run,
-        &["door_1", "close_behind_2", "solve_2", "close_behind_3", "turn_3", "solve_3",
-          "close_behind_4", "door_4", "close_behind_5", "ride_5", "surface"],
+        &[
+            "door_1",
+            "close_behind_2",
+            "solve_2",
+            "close_behind_3",
+            "turn_3",
+            "solve_3",
+            "close_behind_4",
+            "door_4",
+            "close_behind_5",
+            "ride_5",
+            "surface",
+        ],
     );
     assert_eq!(run.mirrors, 3);
-    assert_eq!(run.sent_back, 0, "the bot walks where no beam is: {:?}", run.log);
-    assert!(run.seconds > 30.0 && run.seconds < 180.0, "{}", run.line(&world));
+    assert_eq!(
+        run.sent_back, 0,
+        "the bot walks where no beam is: {:?}",
+        run.log
+    );
+    assert!(
+        run.seconds > 30.0 && run.seconds < 180.0,
+        "{}",
+        run.line(&world)
+    );
 }
 
 #[test]

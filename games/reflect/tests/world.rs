@@ -18,7 +18,9 @@ fn triangles(scene: &SceneDesc) -> (usize, std::collections::BTreeMap<Option<u32
     let mut emissive = std::collections::BTreeMap::new();
     for instance in &scene.instances {
         let model = &scene.models[instance.model];
-        let overridden = instance.material_override.map(|m| &scene.level_materials[m]);
+        let overridden = instance
+            .material_override
+            .map(|m| &scene.level_materials[m]);
         for placement in &model.placements {
             let mesh = &model.meshes[placement.mesh];
             total += mesh.triangles.len();
@@ -42,12 +44,22 @@ fn the_world_has_thousands_of_emissive_triangles_in_a_light_group_per_chamber() 
     let (total, emissive) = triangles(&world.playable.scene);
     let lit: usize = emissive.values().sum();
     println!("{total} triangles, {lit} emissive: {emissive:?}");
-    assert!(lit >= 5000, "{lit} emissive triangles, the design asks for thousands");
+    assert!(
+        lit >= 5000,
+        "{lit} emissive triangles, the design asks for thousands"
+    );
     for group in 1..=5u32 {
         let n = emissive.get(&Some(group)).copied().unwrap_or(0);
-        assert!(n >= 500, "chamber {group}'s light group has {n} emissive triangles");
+        assert!(
+            n >= 500,
+            "chamber {group}'s light group has {n} emissive triangles"
+        );
     }
-    assert_eq!(emissive.get(&None).copied().unwrap_or(0), 0, "every emitter belongs to a chamber's group");
+    assert_eq!(
+        emissive.get(&None).copied().unwrap_or(0),
+        0,
+        "every emitter belongs to a chamber's group"
+    );
     assert!(total >= 50_000, "{total} triangles");
 }
 
@@ -75,7 +87,11 @@ fn every_chamber_file_loads_alone_over_the_base() {
 #[test]
 fn every_mirrorable_panel_belongs_to_a_chamber_with_mirrors() {
     let world = world();
-    assert!(world.mirrorable.len() >= 5, "{} panels", world.mirrorable.len());
+    assert!(
+        world.mirrorable.len() >= 5,
+        "{} panels",
+        world.mirrorable.len()
+    );
     for &i in &world.mirrorable {
         let instance = &world.level.instances[i];
         let at = glam::Vec3::from(instance.transform.translation);
@@ -84,6 +100,11 @@ fn every_mirrorable_panel_belongs_to_a_chamber_with_mirrors() {
             .iter()
             .find(|c| c.contains(at))
             .unwrap_or_else(|| panic!("panel {:?} at {at} is in no chamber", instance.name));
-        assert!(chamber.mirror_cap > 0, "panel {:?} is in {}, which allows no mirror", instance.name, chamber.id);
+        assert!(
+            chamber.mirror_cap > 0,
+            "panel {:?} is in {}, which allows no mirror",
+            instance.name,
+            chamber.id
+        );
     }
 }

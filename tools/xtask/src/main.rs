@@ -96,7 +96,15 @@ fn cargo() -> Command {
 fn play(extra: &[String]) -> Result<(), String> {
     packages::ensure(packages::RENDER)?;
     let mut command = cargo();
-    command.args(["run", "--release", "--package", "reflect", "--bin", "reflect", "--"]);
+    command.args([
+        "run",
+        "--release",
+        "--package",
+        "reflect",
+        "--bin",
+        "reflect",
+        "--",
+    ]);
     command.args(extra);
     run(command)
 }
