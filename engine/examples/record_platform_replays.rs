@@ -14,8 +14,9 @@ use std::path::PathBuf;
 
 use anyhow::{Context, bail};
 use candela::app::{
-    ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Happened, KeyCode,
-    MOUSE_RADIANS_PER_COUNT, Recorder, StepInput,
+    ActionSet, Engine, FIRST_PERSON_GAME, FirstPersonGame, Game, Happened, KeyCode, Recorder,
+    StepInput,
+    steer::{self, Steer, yaw_to},
 };
 use candela::assets::AssetRoot;
 use candela::ecs::Transform;
@@ -29,8 +30,6 @@ const LIFT: Vec3 = Vec3::new(0.0, 0.2, -2.0);
 const SWITCH: Vec3 = Vec3::new(0.0, 4.6, -7.845);
 /// Where the bot stands to use the lever (on the upper floor).
 const SWITCH_STAND: Vec2 = Vec2::new(0.0, -6.7);
-/// Most mouse counts per step (turning at most ~6° a step).
-const MAX_COUNTS: f32 = 60.0;
 /// Give up after this many steps (a minute of play).
 const MAX_STEPS: u64 = 60 * 60;
 
@@ -57,30 +56,15 @@ struct Act {
     mouse: Vec2,
 }
 
-fn wrap(a: f32) -> f32 {
-    let t = std::f32::consts::TAU;
-    (a + std::f32::consts::PI).rem_euclid(t) - std::f32::consts::PI
-}
-
-/// Yaw that looks from `from` towards `to` horizontally.
-fn yaw_to(from: Vec3, to: Vec3) -> f32 {
-    let d = to - from;
-    (-d.x).atan2(-d.z)
-}
-
-/// Turns towards `yaw` and `pitch` (mouse counts, capped); returns the remaining errors.
+/// [`steer::aim`] into an [`Act`].
 fn aim(player: &FirstPersonPlayer, yaw: f32, pitch: f32, act: &mut Act) -> (f32, f32) {
-    let dy = wrap(yaw - player.yaw);
-    let dp = pitch - player.pitch;
-    // Yaw grows with −mouse x, pitch with −mouse y (look_y positive down).
-    act.mouse = Vec2::new(-dy, -dp) / MOUSE_RADIANS_PER_COUNT;
-    act.mouse = act
-        .mouse
-        .clamp(Vec2::splat(-MAX_COUNTS), Vec2::splat(MAX_COUNTS));
-    (dy.abs(), dp.abs())
+    let mut s = Steer::default();
+    let errors = steer::aim(player, yaw, pitch, &mut s);
+    act.mouse = s.mouse;
+    errors
 }
 
-/// Walks towards `target` (horizontal) looking at `pitch`; true once within `within` metres.
+/// [`steer::walk_to`] into an [`Act`].
 fn walk_to(
     player: &FirstPersonPlayer,
     feet: Vec3,
@@ -89,15 +73,11 @@ fn walk_to(
     within: f32,
     act: &mut Act,
 ) -> bool {
-    let to = Vec3::new(target.x, feet.y, target.y);
-    let distance = (to - feet).with_y(0.0).length();
-    if distance <= within {
-        aim(player, player.yaw, pitch, act);
-        return true;
-    }
-    let (dy, _) = aim(player, yaw_to(feet, to), pitch, act);
-    act.forward = dy < 0.15;
-    false
+    let mut s = Steer::default();
+    let there = steer::walk_to(player, feet, target, pitch, within, &mut s);
+    act.mouse = s.mouse;
+    act.forward = s.forward;
+    there
 }
 
 struct Bot {

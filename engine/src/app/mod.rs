@@ -40,6 +40,7 @@ pub mod shell;
 mod state_hash;
 mod stats;
 mod stats_overlay;
+pub mod steer;
 mod step_input;
 mod stored;
 mod user_dirs;

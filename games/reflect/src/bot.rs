@@ -4,18 +4,17 @@
 //! state after each step. The engine records the resulting actions (`StepInput::record`), so a
 //! replay is exactly what a person pressing those keys would have recorded.
 //!
-//! Owns: [`Task`], [`Bot`] and [`Act`]. Main thread, between frames. Must not: move anything
+//! Owns: [`Task`], [`Bot`] and [`Act`] (the steering itself is `candela::app::steer`, shared
+//! with the platform level's bot). Main thread, between frames. Must not: move anything
 //! itself (only input reaches the game). Units: metres, radians, mouse counts.
 
-use candela::app::{Engine, MOUSE_RADIANS_PER_COUNT};
+use candela::app::Engine;
+use candela::app::steer::{Steer, aim as steer_aim, pitch_to, walk_to as steer_walk, yaw_to};
 use candela::ecs::Transform;
 use candela::player::{FirstPersonPlayer, FocusKind};
 use glam::{Vec2, Vec3, Vec3Swizzles};
 
 use crate::game::{ReflectEvent, ReflectGame};
-
-/// Most mouse counts per step (about 6° a step).
-const MAX_COUNTS: f32 = 60.0;
 
 /// One thing the bot does, in order.
 #[derive(Clone, Debug, PartialEq)]
@@ -72,31 +71,15 @@ pub struct Bot {
     mark: Option<usize>,
 }
 
-fn wrap(a: f32) -> f32 {
-    (a + std::f32::consts::PI).rem_euclid(std::f32::consts::TAU) - std::f32::consts::PI
-}
-
-/// Yaw that looks from `from` towards `to` horizontally.
-pub fn yaw_to(from: Vec3, to: Vec3) -> f32 {
-    let d = to - from;
-    (-d.x).atan2(-d.z)
-}
-
-/// Pitch that looks from `eye` at `to`.
-fn pitch_to(eye: Vec3, to: Vec3) -> f32 {
-    (to.y - eye.y).atan2((to - eye).with_y(0.0).length())
-}
-
-/// Turns towards `yaw`, `pitch` (capped mouse counts); returns the remaining errors.
+/// [`steer_aim`] into an [`Act`].
 fn aim(player: &FirstPersonPlayer, yaw: f32, pitch: f32, act: &mut Act) -> (f32, f32) {
-    let dy = wrap(yaw - player.yaw);
-    let dp = pitch - player.pitch;
-    act.mouse = (Vec2::new(-dy, -dp) / MOUSE_RADIANS_PER_COUNT)
-        .clamp(Vec2::splat(-MAX_COUNTS), Vec2::splat(MAX_COUNTS));
-    (dy.abs(), dp.abs())
+    let mut steer = Steer::default();
+    let errors = steer_aim(player, yaw, pitch, &mut steer);
+    act.mouse = steer.mouse;
+    errors
 }
 
-/// Walks towards `target` looking at `pitch`; true once within `within`.
+/// [`steer_walk`] into an [`Act`].
 fn walk_to(
     player: &FirstPersonPlayer,
     feet: Vec3,
@@ -105,14 +88,11 @@ fn walk_to(
     within: f32,
     act: &mut Act,
 ) -> bool {
-    let to = Vec3::new(target.x, feet.y, target.y);
-    if (to - feet).with_y(0.0).length() <= within {
-        aim(player, player.yaw, pitch, act);
-        return true;
-    }
-    let (dy, _) = aim(player, yaw_to(feet, to), pitch, act);
-    act.forward = dy < 0.15;
-    false
+    let mut steer = Steer::default();
+    let there = steer_walk(player, feet, target, pitch, within, &mut steer);
+    act.mouse = steer.mouse;
+    act.forward = steer.forward;
+    there
 }
 
 impl Bot {
