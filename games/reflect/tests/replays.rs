@@ -74,7 +74,7 @@ fn chamber_2_a_mirror_sends_the_fence_into_the_receiver() {
     );
     in_order(&run, &["lights_2", "mirror_on", "solve_2"]);
     assert_eq!(run.mirrors, 1);
-    // The shutter closed over the emitter: the fence is a stub now.
+    // The shutter closed over the emitter: the fence now ends a few centimetres from it.
     let beam = run
         .beams
         .iter()
