@@ -13,118 +13,14 @@
 
 use std::time::{Duration, Instant};
 
-use candela::app::{Engine, Environment, Step};
-use candela::assets::{
-    CameraDesc, Material, MaterialKind, Mesh, Model, Placement, RenderSettings, SkyDesc,
-};
-use candela::ecs::{GlobalTransform, Renderable, Static, Transform};
-use candela::render::film::ConvergePolicy;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::app::Step;
+use candela::ecs::{GlobalTransform, Transform};
 use candela::trace::Ray;
 use glam::{Mat4, Vec3};
 
-fn quad_model(size: f32, emission: f32) -> Model {
-    let h = size / 2.0;
-    Model {
-        name: "quad".into(),
-        meshes: vec![Mesh {
-            name: "quad".into(),
-            positions: vec![
-                Vec3::new(-h, 0.0, -h),
-                Vec3::new(-h, 0.0, h),
-                Vec3::new(h, 0.0, h),
-                Vec3::new(h, 0.0, -h),
-            ],
-            triangles: vec![[0, 1, 2], [0, 2, 3]],
-            triangle_materials: vec![0, 0],
-            ..Default::default()
-        }],
-        materials: vec![Material {
-            kind: MaterialKind::Diffuse,
-            base_color: Vec3::splat(0.7),
-            emission: Vec3::splat(emission),
-            two_sided_emission: true,
-            ..Default::default()
-        }],
-        placements: vec![Placement {
-            mesh: 0,
-            model_from_mesh: Mat4::IDENTITY,
-        }],
-        ..Default::default()
-    }
-}
+mod pipeline_common;
 
-fn environment() -> Environment {
-    Environment {
-        sun: None,
-        sky: SkyDesc::Constant([0.2, 0.2, 0.25]),
-        render: RenderSettings {
-            max_bounces: 3,
-            roulette_start: 2,
-        },
-        default_camera: CameraDesc {
-            position: [0.0, 3.0, 6.0],
-            look_at: [0.0, 0.0, 0.0],
-            up: [0.0, 1.0, 0.0],
-            vertical_fov_deg: 45.0,
-            aperture_radius: 0.0,
-            focus_distance: None,
-        },
-    }
-}
-
-fn config(spp: u32, size: u32) -> RenderConfig {
-    RenderConfig {
-        tracer: TracerChoice::Cpu,
-        width: size,
-        height: size,
-        spp,
-        seed: 1,
-        converge: ConvergePolicy::default(),
-        scaling: None,
-        denoise: false,
-    }
-}
-
-/// A floor, a lamp above it and `movers` platforms; returns the engine and the platforms.
-fn scene(spp: u32, size: u32, movers: usize) -> (Engine, Vec<hecs::Entity>) {
-    scene_with(config(spp, size), movers)
-}
-
-/// [`scene`] with any render configuration.
-fn scene_with(config: RenderConfig, movers: usize) -> (Engine, Vec<hecs::Entity>) {
-    let mut engine = Engine::new(config, environment()).expect("engine starts");
-    let floor = engine.add_model(&quad_model(20.0, 0.0));
-    let lamp = engine.add_model(&quad_model(2.0, 5.0));
-    let platform = engine.add_model(&quad_model(0.5, 0.0));
-    engine.world_mut().spawn((
-        Transform::IDENTITY,
-        Renderable {
-            model: floor,
-            material_override: None,
-        },
-        Static,
-    ));
-    engine.world_mut().spawn((
-        Transform::from_translation(Vec3::Y * 4.0),
-        Renderable {
-            model: lamp,
-            material_override: None,
-        },
-    ));
-    let platforms = (0..movers)
-        .map(|i| {
-            engine.world_mut().spawn((
-                Transform::from_translation(Vec3::new(i as f32 - movers as f32 / 2.0, 1.0, 0.0)),
-                Renderable {
-                    model: platform,
-                    material_override: None,
-                },
-            ))
-        })
-        .collect();
-    (engine, platforms)
-}
+use pipeline_common::{direct_batches, environment, quad_model, scene};
 
 #[test]
 fn every_frame_renders_and_shutdown_is_clean() {
@@ -374,86 +270,6 @@ fn still_scene_converges_to_a_direct_render() {
 /// `RenderConfig::denoise` on the render thread: the captured film is the denoiser's, finite,
 /// closer to a direct many-sample render than the undenoised film of the same frames, and the
 /// denoiser's time is reported (0 when it is off).
-#[test]
-fn the_denoiser_runs_on_the_render_thread() {
-    use candela::assets::{SceneDesc, SceneInstance};
-    const SIZE: u32 = 24;
-    let run = |denoise: bool| {
-        let mut c = config(1, SIZE);
-        c.denoise = denoise;
-        let (mut engine, _) = scene_with(c, 0);
-        for frame in 0..8 {
-            if frame == 7 {
-                engine.capture_next();
-            }
-            engine
-                .frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})
-                .expect("frame");
-        }
-        let rendered: Vec<_> = engine
-            .shutdown()
-            .into_iter()
-            .map(|r| r.expect("ok"))
-            .collect();
-        let seconds: f64 = rendered.iter().map(|r| r.denoise_seconds).sum();
-        let film = rendered
-            .into_iter()
-            .filter_map(|r| r.film)
-            .next_back()
-            .expect("captured film");
-        (film, seconds)
-    };
-    let (plain, plain_seconds) = run(false);
-    let (denoised, denoised_seconds) = run(true);
-    assert_eq!(plain_seconds, 0.0);
-    assert!(denoised_seconds > 0.0);
-    assert!(denoised.mean.iter().all(|p| p.is_finite()));
-    let mut desc = SceneDesc::single(quad_model(20.0, 0.0), environment().default_camera);
-    desc.models = vec![quad_model(20.0, 0.0), quad_model(2.0, 5.0)];
-    desc.sky = environment().sky;
-    desc.render = environment().render;
-    desc.instances = vec![
-        SceneInstance::placed(0, Mat4::IDENTITY),
-        SceneInstance::placed(1, Mat4::from_translation(Vec3::Y * 4.0)),
-    ];
-    let batches = direct_batches(&desc, SIZE, 512);
-    let reference: Vec<Vec3> = (0..batches[0].len())
-        .map(|i| batches.iter().map(|b| b[i]).sum::<Vec3>() / batches.len() as f32)
-        .collect();
-    let rmse = |img: &[Vec3]| {
-        (img.iter()
-            .zip(&reference)
-            .map(|(a, b)| (*a - *b).length_squared() as f64)
-            .sum::<f64>()
-            / img.len() as f64)
-            .sqrt()
-    };
-    let (e_plain, e_denoised) = (rmse(&plain.mean), rmse(&denoised.mean));
-    eprintln!("8 frames of 1 spp: RMSE {e_plain:.5} without, {e_denoised:.5} with the denoiser");
-    // Measured 0.0128 against 0.0240 (deterministic seeds); a denoiser that stopped filtering
-    // would score about 1×.
-    assert!(
-        e_denoised < 0.75 * e_plain,
-        "{e_denoised} against {e_plain}"
-    );
-}
-
-fn direct_batches(desc: &candela::assets::SceneDesc, size: u32, spp: u32) -> Vec<Vec<Vec3>> {
-    use candela::render::cpu::CpuTracer;
-    use candela::render::{FrameSettings, Tracer, frame_uniforms};
-    use candela::scene::RenderScene;
-    let scene = RenderScene::build(desc);
-    let mut tracer = CpuTracer::new();
-    (0..8)
-        .map(|b| {
-            let mut s = FrameSettings::new(size, size, spp / 8, 1000 + b, &desc.render);
-            s.film_blend = 1.0;
-            let u = frame_uniforms(&desc.camera, None, &desc.sky, &s, &scene.header());
-            tracer.render(&scene, &u).expect("render");
-            tracer.film().expect("film").mean
-        })
-        .collect()
-}
 
 /// Mean of a region of the batches' overall image (per channel) and its standard error: each
 /// pixel's variance of its overall mean from its batch spread (unbiased), summed over the
