@@ -20,6 +20,10 @@ fn unpack(t: [u32; 2]) -> Vec4 {
 }
 
 fn wrap(i: i32, size: i32, mode: u32) -> i32 {
+    // Inside the image every mode is the identity (the common case: no integer division).
+    if (0..size).contains(&i) {
+        return i;
+    }
     match mode {
         WRAP_CLAMP => i.clamp(0, size - 1),
         WRAP_MIRROR => {
@@ -41,24 +45,29 @@ pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2
     let uv = if uv.is_finite() { uv } else { Vec2::ZERO };
     let (w, h) = (t.width as i32, t.height as i32);
     let (wrap_u, wrap_v) = (t.flags & 3, (t.flags >> 2) & 3);
+    let base = t.texel_offset as usize;
+    // Fetches the texel at wrapped column `x` and wrapped row `y`.
     let fetch = |x: i32, y: i32| {
-        let x = wrap(x, w, wrap_u);
-        let y = wrap(y, h, wrap_v);
-        let i = t.texel_offset as usize + (y * w + x) as usize;
+        let i = base + (y * w + x) as usize;
         texels.get(i).map(|&p| unpack(p)).unwrap_or(Vec4::ONE)
     };
     // Coordinates far outside [0, 1] would overflow i32; wrap them into a safe range first.
     let x = (uv.x * w as f32).clamp(-1.0e6, 1.0e6);
     let y = (uv.y * h as f32).clamp(-1.0e6, 1.0e6);
     if t.flags & TEXTURE_FLAG_NEAREST != 0 {
-        return fetch(x.floor() as i32, y.floor() as i32);
+        return fetch(
+            wrap(x.floor() as i32, w, wrap_u),
+            wrap(y.floor() as i32, h, wrap_v),
+        );
     }
     let (x, y) = (x - 0.5, y - 0.5);
     let (x0, y0) = (x.floor(), y.floor());
     let (fx, fy) = (x - x0, y - y0);
     let (x0, y0) = (x0 as i32, y0 as i32);
-    let top = fetch(x0, y0) * (1.0 - fx) + fetch(x0 + 1, y0) * fx;
-    let bottom = fetch(x0, y0 + 1) * (1.0 - fx) + fetch(x0 + 1, y0 + 1) * fx;
+    let (xa, xb) = (wrap(x0, w, wrap_u), wrap(x0 + 1, w, wrap_u));
+    let (ya, yb) = (wrap(y0, h, wrap_v), wrap(y0 + 1, h, wrap_v));
+    let top = fetch(xa, ya) * (1.0 - fx) + fetch(xb, ya) * fx;
+    let bottom = fetch(xa, yb) * (1.0 - fx) + fetch(xb, yb) * fx;
     top * (1.0 - fy) + bottom * fy
 }
 
