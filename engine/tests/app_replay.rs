@@ -329,13 +329,13 @@ fn a_wrong_version_or_a_corrupt_byte_is_refused() -> Result<()> {
     let bytes = std::fs::read(&path)?;
     let bad = dir.join("bad.replay");
 
-    let mut v2 = bytes.clone();
-    v2[8..12].copy_from_slice(&2u32.to_le_bytes());
-    std::fs::write(&bad, &v2)?;
+    let mut v3 = bytes.clone();
+    v3[8..12].copy_from_slice(&3u32.to_le_bytes());
+    std::fs::write(&bad, &v3)?;
     match Replay::open(&bad, &target(&set, hash)) {
-        Err(e @ ReplayError::Version { found: 2, .. }) => {
+        Err(e @ ReplayError::Version { found: 3, .. }) => {
             assert!(e.to_string().contains("bad.replay"), "{e}");
-            assert!(e.to_string().contains("version 2"), "{e}");
+            assert!(e.to_string().contains("version 3"), "{e}");
         }
         other => panic!("expected a version error, got {other:?}"),
     }

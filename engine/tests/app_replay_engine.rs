@@ -2,13 +2,15 @@
 //! whose input comes from the devices (keys and mouse motion fed between frames of uneven
 //! length) is recorded per fixed step; replaying the recording in a fresh engine at another
 //! frame rate, with the devices sending other input, gives the same state at every step, and
-//! the engine says when the replay has ended.
+//! the engine says when the replay has ended. The look settings the run was recorded with
+//! (here mouse sensitivity 2) travel in the recording: a player whose settings differ
+//! (sensitivity 0.5) replays it turning exactly as recorded.
 
 use std::path::PathBuf;
 
 use candela::app::{
-    ActionSet, Engine, Environment, Game, KeyCode, Recorder, Replay, ReplayTarget, Step, StepInput,
-    game_actions,
+    ActionSet, Engine, Environment, Game, KeyCode, Recorder, Replay, ReplayTarget, Settings, Step,
+    StepInput, game_actions,
 };
 use candela::assets::{CameraDesc, SkyDesc};
 use candela::ecs::Transform;
@@ -32,7 +34,9 @@ impl Game for Walker {
         let forward = step
             .actions
             .button_axis(id(game_actions::MOVE_FORWARD), id(game_actions::MOVE_BACK));
-        let yaw = -step.actions.motion(id(game_actions::LOOK_X)) * 0.003;
+        let yaw = -step.actions.motion(id(game_actions::LOOK_X))
+            * 0.003
+            * step.settings.mouse_sensitivity;
         t.rotation = (Quat::from_rotation_y(yaw) * t.rotation).normalize();
         let ahead = t.rotation * Vec3::NEG_Z;
         t.translation += ahead * forward * 4.0 * step.step_seconds as f32;
@@ -99,6 +103,10 @@ fn a_replay_repeats_every_step_at_another_frame_rate() {
     // Record: 90 frames of uneven length, keys and mouse motion between frames.
     let (mut live, mut walker) = engine();
     let set = ActionSet::standard();
+    live.set_settings(Settings {
+        mouse_sensitivity: 2.0,
+        ..Settings::default()
+    });
     live.set_step_input(StepInput::record(
         Recorder::new("test", "empty", 7, 60.0, &set),
         &path,
@@ -123,6 +131,10 @@ fn a_replay_repeats_every_step_at_another_frame_rate() {
 
     // Replay at 20 fps (3 steps a frame), the devices holding S the whole time.
     let (mut replayed, mut walker) = engine();
+    replayed.set_settings(Settings {
+        mouse_sensitivity: 0.5,
+        ..Settings::default()
+    });
     let replay = Replay::open(&path, &target(&set)).expect("the recording opens");
     replayed.set_step_input(StepInput::Replay(replay));
     while !replayed.replay_finished() {

@@ -4,8 +4,8 @@
 
 use anyhow::Result;
 use candela::app::{
-    ActionDef, ActionFrame, ActionKind, ActionSet, Binding, FORMAT_VERSION, KeyCode, Recorder,
-    fnv1a64, quantise_axis, quantise_motion,
+    ActionDef, ActionFrame, ActionKind, ActionSet, Binding, FORMAT_VERSION, KeyCode, RecordedLook,
+    Recorder, Recording, fnv1a64, quantise_axis, quantise_motion,
 };
 
 #[test]
@@ -23,6 +23,10 @@ fn the_file_layout_is_the_documented_one() -> Result<()> {
         },
     ])?;
     let mut rec = Recorder::new("g", "l", 0x1122_3344_5566_7788, 50.0, &set);
+    rec.set_look(RecordedLook {
+        mouse_sensitivity: 1.5,
+        invert_y: true,
+    });
     let frame = ActionFrame {
         held: 1,
         pressed: 1,
@@ -40,6 +44,8 @@ fn the_file_layout_is_the_documented_one() -> Result<()> {
     expected.extend(b"l");
     expected.extend(0x1122_3344_5566_7788u64.to_le_bytes());
     expected.extend(50.0f64.to_le_bytes());
+    expected.extend(1.5f32.to_le_bytes()); // look sensitivity
+    expected.push(1); // invert Y
     expected.extend(2u64.to_le_bytes()); // steps
     expected.extend(2u16.to_le_bytes()); // actions
     expected.push(0);
@@ -55,6 +61,23 @@ fn the_file_layout_is_the_documented_one() -> Result<()> {
     let sum = fnv1a64(&expected);
     expected.extend(sum.to_le_bytes());
     assert_eq!(bytes, expected);
+    assert_eq!(FORMAT_VERSION, 2);
+
+    // The same file in version 1 (no look fields) reads with the default look, same steps.
+    let mut v1: Vec<u8> = Vec::new();
+    v1.extend(&expected[..8]);
+    v1.extend(1u32.to_le_bytes());
+    let step_rate_end = 12 + 5 + 5 + 8 + 8;
+    v1.extend(&expected[12..step_rate_end]);
+    v1.extend(&expected[step_rate_end + 5..expected.len() - 8]);
+    let sum = fnv1a64(&v1);
+    v1.extend(sum.to_le_bytes());
+    let old = Recording::decode(std::path::Path::new("v1.replay"), &v1)?;
+    assert_eq!(old.header.look, RecordedLook::default());
+    assert_eq!(old.runs, rec.recording().runs);
+    let new = Recording::decode(std::path::Path::new("v2.replay"), &bytes)?;
+    assert_eq!(new.header.look.mouse_sensitivity, 1.5);
+    assert!(new.header.look.invert_y);
     // FNV-1a 64 of "a" (the published test vector).
     assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
     Ok(())

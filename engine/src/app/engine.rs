@@ -88,6 +88,9 @@ pub struct Engine {
     pub(super) paused: bool,
     /// The player's settings as last applied (player code reads sensitivity and invert-Y).
     pub(super) settings: Settings,
+    /// The settings the fixed steps read: the player's, with the look fixed by a recording
+    /// or a replay (`StepInput::fixed_look`) while there is one.
+    pub(super) step_settings: Settings,
     /// Checkpoints and level ends for the shell to save.
     pub(super) progress_events: Vec<ProgressEvent>,
 }
@@ -140,6 +143,7 @@ impl Engine {
             present_next: None,
             paused: false,
             settings: Settings::default(),
+            step_settings: Settings::default(),
             progress_events: Vec::new(),
         }
     }
@@ -265,9 +269,26 @@ impl Engine {
     /// Where the fixed steps' actions come from from now on: the devices ([`StepInput::Live`]),
     /// the devices recorded, or a replay (which then alone drives the game's steps, so a run
     /// repeats exactly, whatever the frame rate or the tracer).
-    pub fn set_step_input(&mut self, source: StepInput) {
+    /// A recording is stamped with the player's look settings as they are now, and the steps
+    /// keep them (and a replay's recorded ones) until the source changes: a run turns the same
+    /// whatever settings the player has when it is replayed.
+    pub fn set_step_input(&mut self, mut source: StepInput) {
+        source.stamp_look(super::replay_format::RecordedLook {
+            mouse_sensitivity: self.settings.mouse_sensitivity,
+            invert_y: self.settings.invert_y,
+        });
         self.replay_done = false;
         self.step_input = source;
+        self.refresh_step_settings();
+    }
+
+    fn refresh_step_settings(&mut self) {
+        let mut step = self.settings.clone();
+        if let Some(look) = self.step_input.fixed_look() {
+            step.mouse_sensitivity = look.mouse_sensitivity;
+            step.invert_y = look.invert_y;
+        }
+        self.step_settings = step;
     }
 
     /// Whether a replay has played its last step.
@@ -307,6 +328,7 @@ impl Engine {
         self.audio.set_volume(Bus::Effects, settings.effects_volume);
         self.audio.set_volume(Bus::Music, settings.music_volume);
         self.settings = settings;
+        self.refresh_step_settings();
     }
 
     /// Binds the devices by `map` from now on (held keys are let go).

@@ -15,7 +15,7 @@ use super::engine::{Engine, Environment};
 use super::game::{Game, LevelEvent, SetupError, Step};
 use super::level::SpawnedLevel;
 use super::player_input::player_input;
-use super::replay::{Replay, ReplayTarget};
+use super::replay::{Recorder, Replay, ReplayTarget};
 use super::replay_error::ReplayError;
 use super::replay_format::level_hash;
 use super::shell::{HudInfo, LevelEntry, ShellInfo};
@@ -110,6 +110,18 @@ impl FirstPersonGame {
             actions: &set,
         };
         Replay::open(path, &target)
+    }
+
+    /// A recorder of this level's steps (the target [`FirstPersonGame::open_replay`] checks
+    /// against): for `--record FILE` in a window, written when the window closes.
+    pub fn recorder(&self) -> Result<Recorder, ReplayError> {
+        Ok(Recorder::new(
+            FIRST_PERSON_GAME,
+            &self.level_id(),
+            self.level_hash()?,
+            60.0,
+            &ActionSet::standard(),
+        ))
     }
 
     /// Where the steps' input comes from once set up (a replay in a window; the devices by

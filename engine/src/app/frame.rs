@@ -169,7 +169,7 @@ impl Engine {
             index,
             step_seconds: self.clock.step_seconds,
             commands: &mut self.commands,
-            settings: &self.settings,
+            settings: &self.step_settings,
         }
     }
 

@@ -117,8 +117,8 @@ pub struct Step<'a> {
     pub step_seconds: f64,
     /// Work for the engine after the step.
     pub commands: &'a mut Commands,
-    /// The player's settings as they are now (mouse sensitivity, invert Y for looking;
-    /// replays play with the engine's settings, the defaults headless).
+    /// The player's settings as they are now, except while recording or replaying: then the
+    /// look (mouse sensitivity, invert Y) is the recording's, so a replay turns as it did.
     pub settings: &'a Settings,
 }
 

@@ -77,7 +77,8 @@ pub use player_input::{MOUSE_RADIANS_PER_COUNT, PAD_RADIANS_PER_SECOND, player_i
 pub use replay::{Recorder, Replay, ReplayTarget};
 pub use replay_error::ReplayError;
 pub use replay_format::{
-    FORMAT_VERSION, RecordedAction, Recording, RecordingHeader, Run, fnv1a64, level_hash,
+    FORMAT_VERSION, OLDEST_VERSION, RecordedAction, RecordedLook, Recording, RecordingHeader, Run,
+    fnv1a64, level_hash,
 };
 pub use saves::Progress;
 pub use script::{

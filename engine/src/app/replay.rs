@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use super::action_frame::ActionFrame;
 use super::action_set::{ActionKind, ActionSet};
 use super::replay_error::ReplayError;
-use super::replay_format::{RecordedAction, Recording, RecordingHeader, Run};
+use super::replay_format::{RecordedAction, RecordedLook, Recording, RecordingHeader, Run};
 
 /// Collects the frames of a run being recorded.
 #[derive(Clone, Debug)]
@@ -42,12 +42,19 @@ impl Recorder {
                     level_id: level_id.to_string(),
                     level_hash,
                     step_hz,
+                    look: RecordedLook::default(),
                     actions,
                 },
                 runs: Vec::new(),
             },
             steps: 0,
         }
+    }
+
+    /// Records that the steps are played with `look` (the runner stamps the player's settings
+    /// when recording starts).
+    pub fn set_look(&mut self, look: RecordedLook) {
+        self.recording.header.look = look;
     }
 
     /// Appends the next step's frame (buttons' values are stored as 0, whatever they hold).

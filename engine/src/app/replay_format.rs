@@ -1,7 +1,7 @@
 //! The input recording file (`--record FILE`, `--replay FILE`): a small binary format, one
 //! [`ActionFrame`] per fixed step, run-length coded (a player standing still costs one run).
 //!
-//! Layout, version 1; all integers little-endian; `str` = `u32` byte length + UTF-8 bytes:
+//! Layout, version 2; all integers little-endian; `str` = `u32` byte length + UTF-8 bytes:
 //!
 //! | field | type | meaning |
 //! | --- | --- | --- |
@@ -11,12 +11,15 @@
 //! | level id | str | the level the recording starts on |
 //! | level hash | u64 | [`fnv1a64`] of the level file's bytes |
 //! | step rate | f64 | fixed steps per second (compared bit for bit) |
+//! | look sensitivity | f32 | the mouse sensitivity the steps were played with ([`RecordedLook`]) |
+//! | invert Y | u8 | 1 when vertical look was inverted, else 0 |
 //! | steps | u64 | number of fixed steps recorded |
 //! | actions | u16 | number of actions `A`; then `A` × (kind `u8`: 0 button, 1 axis, 2 motion; name `str`), ids in that order |
 //! | runs | … | until `steps` are covered: run length `u32` (≥ 1), `held` u64, `pressed` u64 (bit `i` = action `i`), then an `i32` per axis or motion action in id order (buttons have none) |
 //! | checksum | u64 | [`fnv1a64`] of every byte before it |
 //!
-//! Fixed point as in `action_frame.rs`. Owns: encoding and decoding, with errors that name
+//! Version 1 files (no look fields) are read as recorded with sensitivity 1 and Y not inverted,
+//! the defaults their recorders ran with. Fixed point as in `action_frame.rs`. Owns: encoding and decoding, with errors that name
 //! the file. Any thread. Must not: check a recording against a game (`replay.rs` does).
 
 use std::path::Path;
@@ -29,7 +32,9 @@ use super::replay_error::ReplayError;
 /// The file's first eight bytes.
 pub const MAGIC: [u8; 8] = *b"CDLAREC\0";
 /// The format version this build writes and reads.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
+/// The oldest version this build still reads.
+pub const OLDEST_VERSION: u32 = 1;
 
 /// FNV-1a, 64 bits: the level content hash and the file checksum (stable across builds and
 /// platforms; not a defence against tampering).
@@ -56,6 +61,25 @@ pub struct RecordedAction {
     pub kind: ActionKind,
 }
 
+/// The player's look settings a recording was played with: motion actions are recorded as the
+/// devices gave them, so a replay turns the same only with the same sensitivity and sign.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RecordedLook {
+    /// `Settings::mouse_sensitivity` (a factor on mouse and stick look).
+    pub mouse_sensitivity: f32,
+    /// `Settings::invert_y`.
+    pub invert_y: bool,
+}
+
+impl Default for RecordedLook {
+    fn default() -> Self {
+        Self {
+            mouse_sensitivity: 1.0,
+            invert_y: false,
+        }
+    }
+}
+
 /// What a recording was made on.
 #[derive(Clone, Debug, PartialEq)]
 pub struct RecordingHeader {
@@ -64,6 +88,8 @@ pub struct RecordingHeader {
     pub level_hash: u64,
     /// Fixed steps per second.
     pub step_hz: f64,
+    /// The look settings the steps were played with.
+    pub look: RecordedLook,
     /// The recorder's action set, in id order (frames are laid out by it).
     pub actions: Vec<RecordedAction>,
 }
@@ -166,6 +192,8 @@ impl Recording {
         put_str(&mut out, &h.level_id);
         out.extend_from_slice(&h.level_hash.to_le_bytes());
         out.extend_from_slice(&h.step_hz.to_le_bytes());
+        out.extend_from_slice(&h.look.mouse_sensitivity.to_le_bytes());
+        out.push(u8::from(h.look.invert_y));
         out.extend_from_slice(&self.steps().to_le_bytes());
         out.extend_from_slice(&(h.actions.len() as u16).to_le_bytes());
         for a in &h.actions {
@@ -206,7 +234,7 @@ impl Recording {
         }
         let in_header = || truncated("inside the header".into());
         let version = c.u32().ok_or_else(in_header)?;
-        if version != FORMAT_VERSION {
+        if !(OLDEST_VERSION..=FORMAT_VERSION).contains(&version) {
             return Err(ReplayError::Version {
                 path: path_buf(),
                 found: version,
@@ -217,6 +245,21 @@ impl Recording {
         let level_id = c.str().map_err(corrupt)?.ok_or_else(in_header)?;
         let level_hash = c.u64().ok_or_else(in_header)?;
         let step_hz = c.f64().ok_or_else(in_header)?;
+        let mut look = RecordedLook::default();
+        if version >= 2 {
+            look.mouse_sensitivity = f32::from_le_bytes(c.array::<4>().ok_or_else(in_header)?);
+            if !look.mouse_sensitivity.is_finite() {
+                return Err(corrupt(format!(
+                    "look sensitivity {} (a finite number expected)",
+                    look.mouse_sensitivity
+                )));
+            }
+            look.invert_y = match c.u8().ok_or_else(in_header)? {
+                0 => false,
+                1 => true,
+                b => return Err(corrupt(format!("invert Y {b} (0 or 1 expected)"))),
+            };
+        }
         let steps = c.u64().ok_or_else(in_header)?;
         let count = c.u16().ok_or_else(in_header)?;
         if count as usize > MAX_ACTIONS {
@@ -241,6 +284,7 @@ impl Recording {
             level_id,
             level_hash,
             step_hz,
+            look,
             actions,
         };
         let mut runs = Vec::new();

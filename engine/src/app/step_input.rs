@@ -14,6 +14,7 @@ use super::input::InputState;
 use super::monkey::Monkey;
 use super::replay::{Recorder, Replay};
 use super::replay_error::ReplayError;
+use super::replay_format::RecordedLook;
 
 /// The source of the fixed steps' input.
 #[derive(Debug)]
@@ -56,6 +57,23 @@ impl StepInput {
         };
         input.end_step();
         Ok(frame)
+    }
+
+    /// The look settings the steps are played with when they are not the player's: a
+    /// replay's recorded ones, or those a recording was stamped with when it started.
+    pub fn fixed_look(&self) -> Option<RecordedLook> {
+        match self {
+            StepInput::Record { recorder, .. } => Some(recorder.recording().header.look),
+            StepInput::Replay(replay) => Some(replay.header().look),
+            StepInput::Live | StepInput::Monkey(_) => None,
+        }
+    }
+
+    /// Stamps a recording with the look settings its steps are played with.
+    pub fn stamp_look(&mut self, look: RecordedLook) {
+        if let StepInput::Record { recorder, .. } = self {
+            recorder.set_look(look);
+        }
     }
 
     /// Writes the recording, if recording (atomically; the steps so far).

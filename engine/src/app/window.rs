@@ -115,6 +115,8 @@ pub enum WindowError {
     Game(super::game::SetupError),
     #[error("screenshot: {0}")]
     Screenshot(#[from] ImageIoError),
+    #[error("input recording: {0}")]
+    Recording(#[from] super::replay_error::ReplayError),
 }
 
 /// Why no window can open with this `DISPLAY` value, if so (this build talks X11; Wayland

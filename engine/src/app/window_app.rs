@@ -185,6 +185,10 @@ impl<'g> WindowApp<'g> {
             let size = running.window.inner_size();
             let frames = running.frames;
             let mut stats = std::mem::take(&mut running.stats);
+            // A recording (`--record`) holds every fixed step so far: write it before leaving.
+            if let Err(e) = running.engine.finish_recording() {
+                self.fail(WindowError::Recording(e));
+            }
             let results = running.engine.shutdown();
             for result in results {
                 if let Ok(rendered) = &result {

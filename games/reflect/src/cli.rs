@@ -55,6 +55,14 @@ pub struct Args {
     /// With --capture: frames to converge (one sample per pixel each).
     #[arg(long, default_value_t = 256)]
     pub capture_frames: u32,
+    /// Windowed: record every fixed step played into this file (written atomically when the
+    /// window closes); play starts at once in `--record-chamber`, skipping the title.
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// With --record: the chamber id to record (`chamber_1` …), or `full_game` (from the first
+    /// chamber to the ending).
+    #[arg(long, default_value = FULL_GAME)]
+    pub record_chamber: String,
     /// With --bench: most seconds per chamber.
     #[arg(long, default_value_t = 20.0)]
     pub bench_seconds: f64,
@@ -115,14 +123,29 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let mut start_input = None;
     let mut start = 0;
     if let Some(path) = &args.replay {
+        if args.record.is_some() {
+            bail!("--record records the devices: it cannot be given with --replay");
+        }
         let (replay, at) = open_replay(&world, path)?;
         start_input = Some(StepInput::Replay(replay));
         start = at;
     }
-    let cues = match (&args.screenshots, &args.replay) {
-        (Some(dir), Some(_)) => replay_cues(dir, &world.chambers[start].id),
-        (Some(dir), None) => screenshot_cues(dir, &world),
-        _ => Vec::new(),
+    if let Some(path) = &args.record {
+        start = record_start(&world, &args.record_chamber)?;
+        let recorder = crate::replays::recorder(&world, &args.record_chamber)?;
+        start_input = Some(StepInput::record(recorder, path));
+    }
+    let playing_at_once = args.replay.is_some() || args.record.is_some();
+    let cues = match (&args.screenshots, playing_at_once) {
+        // A recording's shot comes sooner: it only shows that play began.
+        (Some(dir), true) => {
+            let frames = if args.record.is_some() { 120 } else { 400 };
+            shot_cues(dir, &world.chambers[start].id, frames)
+        }
+        (Some(dir), false) => screenshot_cues(dir, &world),
+        // A recording starts with its chamber, not with the title menu's steps.
+        (None, true) if args.record.is_some() => vec![start_cue(&world.chambers[start].id)],
+        (None, _) => Vec::new(),
     };
     let mut game = ReflectGame::new(world, start);
     if let Some(input) = start_input {
@@ -150,18 +173,39 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     Ok(format!("{} frames", report.frames))
 }
 
+/// The chamber a recording of `id` starts in (`full_game`: the first).
+fn record_start(world: &ReflectWorld, id: &str) -> anyhow::Result<usize> {
+    if id == FULL_GAME {
+        return Ok(0);
+    }
+    world.chamber_index(id).with_context(|| {
+        let ids: Vec<&str> = world.chambers.iter().map(|c| c.id.as_str()).collect();
+        format!("--record-chamber {id:?}: the game has {FULL_GAME} and {ids:?}")
+    })
+}
+
+/// Starts `chamber` two frames in (the shell's Start, as the menu would).
+fn start_cue(chamber: &str) -> Cue {
+    Cue::input(
+        2,
+        ShellInput::Start(LevelStart {
+            level: chamber.to_string(),
+            checkpoint: None,
+        }),
+    )
+}
+
 /// With a replay: the title, then the replay's chamber played for 400 frames, shot, quit.
 pub fn replay_cues(dir: &Path, chamber: &str) -> Vec<Cue> {
+    shot_cues(dir, chamber, 400)
+}
+
+/// The title, then `chamber` played for `frames` frames, shot, quit.
+fn shot_cues(dir: &Path, chamber: &str, frames: u32) -> Vec<Cue> {
     vec![
         Cue::screenshot(20, dir.join("title.png")),
-        Cue::input(
-            2,
-            ShellInput::Start(LevelStart {
-                level: chamber.to_string(),
-                checkpoint: None,
-            }),
-        ),
-        Cue::screenshot(400, dir.join("play.png")),
+        start_cue(chamber),
+        Cue::screenshot(frames, dir.join("play.png")),
         Cue::input(2, ShellInput::Quit),
     ]
 }

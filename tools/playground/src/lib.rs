@@ -5,9 +5,9 @@
 //! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
 //!
 //! Owns: the arguments, loading (a bad level or replay fails before anything runs) and the
-//! summary. Must not: contain game logic (the engine's `FirstPersonGame` has it). Recording
-//! (`--record`) in a window is not wired yet: the window runner has no end-of-run hook to
-//! write the file (record with the bot, `engine/examples/record_platform_replays.rs`).
+//! summary. Must not: contain game logic (the engine's `FirstPersonGame` has it). `--record`
+//! records a windowed run (the window runner writes the file when the window closes); the
+//! committed replays are recorded by a bot, `engine/examples/record_platform_replays.rs`.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -37,7 +37,9 @@ pub struct Args {
     /// Play this recording instead of the devices.
     #[arg(long)]
     pub replay: Option<PathBuf>,
-    /// Record the run to this file (not available yet; see the module doc).
+    /// Windowed: record every fixed step played into this file (written atomically when the
+    /// window closes). Play one run from the level's start: a restart is recorded as more
+    /// steps of the same run.
     #[arg(long)]
     pub record: Option<PathBuf>,
     /// No window: run fixed steps on the CPU tracer at 16×9 and print a summary.
@@ -78,8 +80,8 @@ fn asset_root(level: &Path, root: Option<&Path>) -> anyhow::Result<AssetRoot> {
 
 /// Runs what `args` asks; returns the summary line.
 pub fn run(args: &Args) -> anyhow::Result<String> {
-    if args.record.is_some() {
-        bail!("--record is not available yet; record with the bot (docs/LEVELS.md)");
+    if args.record.is_some() && (args.replay.is_some() || args.headless || args.bench) {
+        bail!("--record records the devices in a window: not with --replay, --headless or --bench");
     }
     let root = asset_root(&args.level, args.asset_root.as_deref())?;
     let mut game = FirstPersonGame::load(&args.level, &root)?;
@@ -106,6 +108,9 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     if let Some(replay) = replay {
         game.start_with(StepInput::Replay(replay));
+    }
+    if let Some(path) = &args.record {
+        game.start_with(StepInput::record(game.recorder()?, path));
     }
     // The shell around the game: title menu, HUD, pause (Escape), settings saved in the
     // player's config folder; `run_game` sets the input map from the actions and settings.
