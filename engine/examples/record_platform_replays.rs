@@ -6,7 +6,7 @@
 //! pressure plate, drop it (E), walk onto the lift, ride up, walk to the lever and use it (E).
 //!
 //! Run: `cargo run --release -p candela --example record_platform_replays` (re-record after the
-//! level or the player's controller changed; `engine/tests/player_first_person.rs` fails
+//! level or the player's controller changed; `engine/tests/engine/player_first_person.rs` fails
 //! loudly when the committed replay no longer solves the level). Deterministic: the same
 //! build records the same file. Units: metres, radians, mouse counts.
 

@@ -2,7 +2,7 @@
 //! third-person courtyard (`third_person.ron`), one `ActionFrame` per 60 Hz step, recorded
 //! through `Recorder` — stand still while looking left and back, walk forward through the
 //! doorway, run, stop and stand. Open loop and deterministic: the same program writes the same
-//! bytes. `engine/tests/player_third_person.rs` plays the file and checks where it ends.
+//! bytes. `engine/tests/engine/player_third_person.rs` plays the file and checks where it ends.
 //!
 //! Run it again after changing the level (the recording carries the level file's hash):
 //! `cargo run --release -p candela --example record_third_person_replay`.

@@ -4,7 +4,7 @@
 //! (BVH nodes, triangle blocks, instances, triangles, vertices, materials, textures, lights,
 //! the per-frame uniforms). Each struct here is `#[repr(C)]` + `bytemuck::Pod` with explicit
 //! padding and a compile-time size assertion, and has a twin of the same name, field order
-//! and size in `shaders/shared/types.wgsl`; `tests/layout.rs` parses the WGSL with naga and
+//! and size in `shaders/shared/types.wgsl`; `tests/cross/layout.rs` parses the WGSL with naga and
 //! compares sizes and offsets of every field.
 //!
 //! Must not: hold logic beyond constructors and bit-packing helpers. This file is top-level

@@ -7,7 +7,7 @@
 //! linear Rec.709 radiance until tonemapping. glTF axis conversion lives only in the glTF loader.
 //!
 //! Modules are listed in layers, lowest first: a module uses only modules above it in this
-//! list (`engine/tests/structure_layers.rs` checks every `crate::` path, so a cycle cannot
+//! list (`engine/tests/engine/structure_layers.rs` checks every `crate::` path, so a cycle cannot
 //! quietly come back). Keep the blank line between declarations: rustfmt sorts adjacent ones. The flow of a frame runs the same way: files become descriptions,
 //! the flattened scene is kept up to date and sealed into a commit, the render thread renders
 //! it, game code queries it and simulates, and the runner drives it all.

@@ -1,5 +1,5 @@
 // Twins of the `Gpu…` structs in engine/src/layout.rs: same names, field order, sizes.
-// tests/layout.rs parses this file with naga and compares every size and offset.
+// tests/cross/layout.rs parses this file with naga and compares every size and offset.
 // Conventions: right-handed, +Y up, metres; colours are linear Rec.709 radiance.
 
 const INVALID: u32 = 0xffffffffu;

@@ -1,4 +1,4 @@
-//! The lower bound of the stability furnace (`tests/stability.rs`): a smooth-shaded unit
+//! The lower bound of the stability furnace (`tests/cross/stability.rs`): a smooth-shaded unit
 //! icosphere of one rough material under a constant white sky of radiance 1, seen by the
 //! furnace camera. Light that scatters once off a convex surface escapes to the sky, so a
 //! pixel is at least the single-scatter albedo of the lobe it sees (rough conductor,

@@ -162,7 +162,7 @@ pub fn sah_cost(nodes: &[GpuBvh8Node], blocks: &[GpuTri4]) -> f32 {
 
 /// Σ over triangles of the surface area of each triangle's box, divided by the root box's
 /// (dimensionless). Cheap (one pass over the blocks) and a predictor of what a *fresh* build
-/// of the current shape would cost: over the swirling grid of `engine/tests/refit_degradation.rs`
+/// of the current shape would cost: over the swirling grid of `engine/tests/engine/refit_degradation.rs`
 /// a fresh build's [`sah_cost`] varies by 1.6× between shapes while fresh cost / √(this)
 /// stays within ±6 %.
 pub fn triangle_area_ratio(blas: &Blas) -> f32 {

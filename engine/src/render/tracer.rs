@@ -2,7 +2,7 @@
 //!
 //! Owns: the trait, render statistics and render errors. Both implementations run the same
 //! algorithm over the same `RenderScene` buffers with the same RNG, so their films agree
-//! within Monte-Carlo noise (`tests/gpu_matches_cpu.rs`).
+//! within Monte-Carlo noise (`tests/cross/gpu_matches_cpu.rs`).
 //! Must not: hold scene data itself.
 
 pub use super::cpu::integrator::RayCounts;

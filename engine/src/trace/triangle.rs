@@ -13,7 +13,7 @@
 //! rounded edges) cannot make two triangles that share an edge evaluate it identically, and
 //! `a = v0 - o` loses about `u·|v0 - o|` (u = 2⁻²⁴), so with a fixed slack a ray through a shared
 //! edge from far away could slip between both triangles (35 of 5,451 such rays 20 m from a
-//! 0.1 m-edged icosphere, `tests/watertight.rs`). With `m = |a'.x| + |a'.y| + |a_z|` and
+//! 0.1 m-edged icosphere, `tests/cross/watertight.rs`). With `m = |a'.x| + |a'.y| + |a_z|` and
 //! `E_i = |e_i'.x| + |e_i'.y| + |e_i.z|`, the edge function of the edge along `e_i` errs by
 //! about `7u·m·E_i` (sheared offset `2u·m` per component, sheared edge `2u·E_i`, the products),
 //! that is by about `7u·m` in distance across the edge; so `u >= -slack_u` with `slack_u =

@@ -2,7 +2,7 @@
 //! and Mitsuba 3's time to the same error on the same kind of machine.
 //!
 //! Error: relative MSE per pixel and channel, (ours − ref)² / (ref² + 0.01), averaged, minus the
-//! reference's own variance on the same scale (see `tests/accuracy.rs`). A render of n spp is
+//! reference's own variance on the same scale (see `tests/cross/accuracy.rs`). A render of n spp is
 //! made, its error e(n) measured; the accuracy tests show the error falls as 1/n (no bias), so
 //! the samples needed for a target error T are n · e(n) / T and the time is that many samples at
 //! the measured seconds per sample. Mitsuba: the reference's standard error σ_ref at 32,768 spp

@@ -4,7 +4,7 @@
 //! and refraction; no call into `microfacet.rs` or `bsdf.rs`).
 //!
 //! Used as a lower bound on the albedo of the path tracer's rough models by
-//! `bsdf_tests.rs` (per direction) and by `tests/stability.rs` (the furnace sphere, through
+//! `bsdf_tests.rs` (per direction) and by `tests/cross/stability.rs` (the furnace sphere, through
 //! `candela_tests::reference_albedo`). Local shading frame, normal +z, isotropic, so an albedo
 //! depends only on `cos_o` = cos θ of the viewing direction; α is GGX α (roughness²).
 //!

@@ -3,7 +3,7 @@
 //! the edge-stopping weight of Schied et al. 2017 (eq. 3–5).
 //!
 //! Owns: the constants and formulas; both denoisers evaluate them in the same order so that
-//! their outputs differ only by f32 rounding (`engine/tests/denoise_gpu_matches_cpu.rs`).
+//! their outputs differ only by f32 rounding (`engine/tests/engine/denoise_gpu_matches_cpu.rs`).
 //! Units: depth is the primary hit's distance along the camera ray in metres (0 = sky or no
 //! guide); normals are unit world-space vectors facing the camera; colours are linear radiance.
 //! Runs on whichever thread calls the CPU denoiser (the render thread).

@@ -21,7 +21,7 @@ use crate::sim::physics::CharacterState;
 
 /// Time constant of the low-pass on the ground speed the states read, seconds: the rapier
 /// controller reports no motion for an odd step now and then (seen walking the courtyard of
-/// `engine/tests/player_third_person.rs` at 2 m/s: 5 single-step stops in 5 s), which must
+/// `engine/tests/engine/player_third_person.rs` at 2 m/s: 5 single-step stops in 5 s), which must
 /// not flick the state to idle and back; 0.1 s keeps a stop-and-go of a step inside walk and
 /// still reaches idle 0.4 s after stopping from a run.
 pub const SPEED_SMOOTHING_SECONDS: f32 = 0.1;

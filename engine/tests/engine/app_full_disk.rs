@@ -6,7 +6,7 @@
 //! `chmod` would not. The limit is per process, so this binary holds this one test only.
 //! Also: the longest file name the file system takes still leaves room for the temporary one.
 
-mod app_common;
+use crate::app_common;
 
 use anyhow::Result;
 use app_common::Scratch;

@@ -4,8 +4,7 @@
 //! character at every step, the cube once it has settled after each start. A carried cube
 //! pushed against a wall stays on the near side; a thrown cube leaves along the view.
 
-#[path = "physics_common/mod.rs"]
-mod physics_common;
+use crate::physics_common;
 
 use candela::ecs::Transform;
 use candela::sim::physics::{

@@ -3,7 +3,7 @@
 //! edited one, failed edits change nothing, a drag is one command, rewiring a rule, comments
 //! following deleted instances, the selection following inserts and deletes, snapping.
 
-mod editor_common;
+use crate::editor_common;
 
 use candela::assets::{ConditionEntry, TransformDesc};
 use candela::editor::{

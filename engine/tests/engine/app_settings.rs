@@ -7,7 +7,7 @@
 //! inside `/proc` (which no one can create files in); `app_full_disk.rs` covers a write that
 //! fails half-way.
 
-mod app_common;
+use crate::app_common;
 
 use anyhow::Result;
 use app_common::Scratch;

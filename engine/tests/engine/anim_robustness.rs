@@ -9,7 +9,7 @@
 //! (the loader refuses non-finite inputs, so a non-finite output would be a bug in the
 //! arithmetic). Counts by outcome are printed (`--nocapture`).
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 use std::panic::{AssertUnwindSafe, catch_unwind};

@@ -2,7 +2,7 @@
 //! state is hashed bit for bit (every `Transform`, every character's state); a run with one
 //! input changed must hash differently, so the hash does see the recording.
 
-mod physics_common;
+use crate::physics_common;
 
 use std::hash::{Hash, Hasher};
 

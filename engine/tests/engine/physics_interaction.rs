@@ -1,6 +1,6 @@
 //! Carrying bodies and sensors.
 
-mod physics_common;
+use crate::physics_common;
 
 use candela::ecs::Transform;
 use candela::sim::physics::{

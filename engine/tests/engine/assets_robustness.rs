@@ -23,7 +23,7 @@
 //!
 //! The counts (loaded / refused by variant) are printed; run with `--nocapture` to see them.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeMap;
 use std::panic::{AssertUnwindSafe, catch_unwind};

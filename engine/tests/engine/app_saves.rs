@@ -5,7 +5,7 @@
 //! Read-only places: the tests run as root, where `chmod` does not stop a write, so the
 //! read-only place is a path whose parent is a regular file (see also `app_full_disk.rs`).
 
-mod app_common;
+use crate::app_common;
 
 use anyhow::Result;
 use app_common::Scratch;

@@ -2,7 +2,7 @@
 //! inside their parents' slots, `perm` a front-to-back permutation per octant, depth bounded,
 //! padding lanes empty.
 
-mod common;
+use crate::common;
 
 use std::ops::Range;
 

@@ -1,7 +1,7 @@
 //! The kinematic character controller: stairs of 30 cm, a 45° ramp, a ramp too steep to walk,
 //! jumping, pushing a box.
 
-mod physics_common;
+use crate::physics_common;
 
 use candela::sim::physics::{
     CharacterController, CharacterInput, CharacterState, ColliderShape, character_bundle,

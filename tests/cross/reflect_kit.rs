@@ -95,7 +95,7 @@ fn committed_kit_is_what_assetgen_makes() -> anyhow::Result<()> {
 
 fn load(piece: &str) -> anyhow::Result<Model> {
     let root = AssetRoot::new(assets())?;
-    let referrer = Path::new("tests/reflect_kit.rs");
+    let referrer = Path::new("tests/cross/reflect_kit.rs");
     Ok(load_model(
         &root,
         referrer,

@@ -3,7 +3,7 @@
 //! step rate, an unknown action, a wrong version, a corrupt byte) is a clear error naming the
 //! file. The byte layout and the fixed point are checked in `app_replay_format.rs`.
 
-mod app_common;
+use crate::app_common;
 
 use std::path::Path;
 

@@ -2,7 +2,7 @@
 //! problems; reported on open only while newer than the level; restoring gives back the
 //! edited document; a successful save removes it.
 
-mod editor_common;
+use crate::editor_common;
 
 use std::time::{Duration, SystemTime};
 

@@ -3,7 +3,7 @@
 //! optimal, dealt units interleave and balance within a unit, the speed estimate recovers
 //! relative speeds from unit times alone, and the idle share is the paper's measure.
 
-mod balance_common;
+use crate::balance_common;
 
 use balance_common::{Noise, city_field, run};
 use candela::render::balance::{

@@ -3,7 +3,7 @@
 //! per case: procedural meshes, instanced scenes with rotation / non-uniform scale /
 //! translation, and degenerate input.
 
-mod common;
+use crate::common;
 
 use candela::accel::{BlasParams, build_blas, build_blas_with_params};
 use candela::layout::{INVALID, LEAF_BIT, LEAF_COUNT_SHIFT};
@@ -293,7 +293,7 @@ fn instance_transform_keeps_world_t() {
 
 /// Rays exactly through the shared diagonal of a quad must hit one of its two triangles (the
 /// cracks that the slack of `triangle.rs` closes). Tilted quads at a distance, so the rounding
-/// is not trivial. `tests/watertight.rs` does the same on a closed mesh with both tracers.
+/// is not trivial. `tests/cross/watertight.rs` does the same on a closed mesh with both tracers.
 #[test]
 fn shared_edges_have_no_cracks() {
     let mut rng = Rng::new(77);

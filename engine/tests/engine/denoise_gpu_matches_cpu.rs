@@ -15,7 +15,7 @@
 //! relative, doubled for margin; the absolute term covers black pixels next to bright ones. The
 //! temporal history is plain arithmetic: it must agree to 10⁻⁵ relative.
 
-mod denoise_common;
+use crate::denoise_common;
 
 use candela::render::denoise::{Svgf, SvgfParams};
 use candela::render::gpu::{GpuContext, GpuDenoiser};

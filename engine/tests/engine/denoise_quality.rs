@@ -4,7 +4,7 @@
 //! Errors are measured away from the lamp (see `denoise_common::away_from_lamps`); the whole
 //! image must not get worse either.
 
-mod denoise_common;
+use crate::denoise_common;
 
 use candela::render::denoise::{Svgf, SvgfParams};
 use denoise_common::{Cornell, away_from_lamps, mean_std, rmse, rmse_where};

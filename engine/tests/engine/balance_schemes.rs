@@ -4,7 +4,7 @@
 //! even cost field; Perfect Smooth converges to it; our schemes reach the best split a unit
 //! size allows on a static uneven field where Perfect overcompensates.
 
-mod balance_common;
+use crate::balance_common;
 
 use balance_common::{Noise, band_time, city_field, measure, run};
 use candela::render::balance::Balancer;

@@ -5,7 +5,7 @@
 //! not the grown level; it works as root. The limit is per process: this binary holds this
 //! one test only.
 
-mod editor_common;
+use crate::editor_common;
 
 use candela::editor::{Edit, EditorState, SaveError, backup_path, render_document};
 use editor_common::{Scratch, assets};

@@ -1,8 +1,8 @@
 //! Physics in level files: bodies load, fall and land; bad body data is refused with a message
 //! naming the level file and the instance; levels without bodies load as before.
 
-mod common;
-mod physics_common;
+use crate::common;
+use crate::physics_common;
 
 use std::path::{Path, PathBuf};
 

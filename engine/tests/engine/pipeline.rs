@@ -18,7 +18,7 @@ use candela::ecs::{GlobalTransform, Transform};
 use candela::trace::Ray;
 use glam::{Mat4, Vec3};
 
-mod pipeline_common;
+use crate::pipeline_common;
 
 use pipeline_common::{direct_batches, environment, quad_model, scene};
 

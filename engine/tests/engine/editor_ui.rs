@@ -3,7 +3,7 @@
 //! keys (Ctrl+Z, Ctrl+Shift+Z, Ctrl+D, Delete, Ctrl+S) act on the state; while a text field
 //! has the keyboard, they do not.
 
-mod editor_common;
+use crate::editor_common;
 
 use candela::assets::TransformDesc;
 use candela::editor::ui::{PanelOutput, outliner::SEARCH_ID, panels};

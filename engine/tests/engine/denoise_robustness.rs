@@ -2,7 +2,7 @@
 //! structure added), edges in albedo, geometry and lighting keep their contrast, and NaN/inf
 //! in the frame or the guides never leave it nor spread.
 
-mod denoise_common;
+use crate::denoise_common;
 
 use candela::render::denoise::{Guides, Svgf, SvgfParams};
 use denoise_common::{Cornell, Noise, flat_guides};

@@ -9,7 +9,7 @@
 //! * corrupt settings and progress files are reported (notices naming the file, the problem
 //!   and the kept `.corrupt` backup), replaced by defaults, and the game runs on.
 
-mod app_common;
+use crate::app_common;
 
 use anyhow::Result;
 use app_common::Scratch;

@@ -1,7 +1,7 @@
 //! Physics under stress: a stack of boxes that must stay put, a fast sphere that must not
 //! tunnel through a thin wall, and sleeping bodies that must cost no transform writes.
 
-mod physics_common;
+use crate::physics_common;
 
 use candela::sim::physics::{ColliderShape, RigidBody};
 use glam::Vec3;

@@ -4,7 +4,7 @@
 //! references do not resolve is refused with a problem naming each item; the previous
 //! version is kept as `.bak`; a failed write leaves the old file intact.
 
-mod editor_common;
+use crate::editor_common;
 
 use std::path::Path;
 

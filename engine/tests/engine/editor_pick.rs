@@ -4,7 +4,7 @@
 //! (at its front face), a pixel of the sky picks nothing, and an entity left out of the
 //! instance list is seen through.
 
-mod editor_common;
+use crate::editor_common;
 
 use candela::app::{Engine, Environment, Step};
 use candela::assets::{AssetRoot, CameraDesc};

@@ -2,7 +2,7 @@
 //! pipeline: on a still scene the denoised film is closer to a direct converged render than
 //! the plain one (split from `pipeline.rs`, whose scene it shares).
 
-mod pipeline_common;
+use crate::pipeline_common;
 
 use candela::app::Step;
 use glam::{Mat4, Vec3};

@@ -1,0 +1,27 @@
+//! Cross-crate tests (layout twins, accuracy against references, GPU against CPU,
+//! windows under Xvfb, the committed assets), linked into one test binary (`cross`):
+//! each file is a module (nextest: `-E 'test(/^accuracy::/)'`), the shared helpers are
+//! the `candela_tests` library in `../support`. nextest runs every test in its own
+//! process, so tests that start Xvfb or set environment variables still start clean.
+//!
+//! A new cross-crate test goes in a new file here, declared below in alphabetical order.
+
+mod accuracy;
+mod analytic;
+mod bvh;
+mod demo;
+mod far_from_origin;
+mod furnace;
+mod gpu_matches_cpu;
+mod headless;
+mod layout;
+mod present;
+mod reflect_kit;
+mod reflect_record;
+mod reflect_window;
+mod shell_screens;
+mod sounds;
+mod stability;
+mod watertight;
+mod window;
+mod window_close;
