@@ -37,6 +37,7 @@ mod script_motion;
 mod script_run;
 mod settings;
 pub mod shell;
+pub mod soak;
 mod state_hash;
 mod stats;
 mod stats_overlay;

@@ -66,6 +66,16 @@ pub struct Args {
     /// With --bench: most seconds per chamber.
     #[arg(long, default_value_t = 20.0)]
     pub bench_seconds: f64,
+    /// Headless: play each chamber this many frames with random input and check every frame
+    /// (see `reflect::soak`); prints a Markdown table.
+    #[arg(long)]
+    pub soak: Option<u64>,
+    /// With --soak: the monkey's seed.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// With --soak: only this chamber (`chamber_1` …); every chamber when absent.
+    #[arg(long)]
+    pub soak_chamber: Option<String>,
 }
 
 /// The game file and the asset root it lives in (`…/assets`, two folders above it).
@@ -100,6 +110,17 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     if let Some(dir) = &args.capture {
         let files = crate::capture::capture_chambers(&world, dir, 640, 360, args.capture_frames)?;
         return Ok(format!("wrote {}", files.join(", ")));
+    }
+    if let Some(frames) = args.soak {
+        let chambers = match &args.soak_chamber {
+            Some(id) => vec![world.chamber_index(id).with_context(|| {
+                let ids: Vec<&str> = world.chambers.iter().map(|c| c.id.as_str()).collect();
+                format!("--soak-chamber {id:?}: the game has {ids:?}")
+            })?],
+            None => (0..world.chambers.len()).collect(),
+        };
+        let results = crate::soak::soak_chambers(&world, &chambers, frames, args.seed)?;
+        return Ok(crate::soak::table(&results, args.seed));
     }
     if args.bench {
         let replays = root.path().join("reflect/replays");

@@ -4,7 +4,7 @@
 //! its art and sounds are made by `tools/assetgen`.
 //!
 //! Modules: `chambers` (the game file), `world` (loading the world), `game` (the rules),
-//! `mirror_gun`, `hazard` (lasers that send the player back), `replays`, `headless`, `cli`,
+//! `mirror_gun`, `hazard` (lasers that send the player back), `replays`, `headless`, `soak`, `cli`,
 //! `bot` (the scripted player that records the committed replays).
 //! Main thread throughout. Must not: reach into the renderer.
 
@@ -19,4 +19,5 @@ pub mod hazard;
 pub mod headless;
 pub mod mirror_gun;
 pub mod replays;
+pub mod soak;
 pub mod world;

@@ -1,6 +1,6 @@
 //! The `playground` tool as a library: play a platform test level in first person
 //! (`candela::app::FirstPersonGame`) in a window inside the shell (title menu, HUD, pause,
-//! settings: `candela::app::run_game`), soak it with random input (`soak`), or headless — replaying a recording step by
+//! settings: `candela::app::run_game`), soak it with random input (`candela::app::soak`), or headless — replaying a recording step by
 //! step and summing it up in one line, or timing the replay (`--bench`: fixed steps per second
 //! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
 //!
@@ -21,8 +21,6 @@ use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
 use candela::render::{RenderConfig, TracerChoice};
 use clap::Parser;
-
-pub mod soak;
 
 /// Play a level in first person: WASD to walk, mouse to look (click to capture it), E to use
 /// or to pick up and drop, left button to throw, Space to jump, Shift to run.
@@ -51,7 +49,7 @@ pub struct Args {
     /// Headless: time the run (eight steps per rendered frame) and print steps per second.
     #[arg(long)]
     pub bench: bool,
-    /// Headless: soak the level for this many frames with random input (see `soak`).
+    /// Headless: soak the level for this many frames with random input (see `candela::app::soak`).
     #[arg(long)]
     pub soak: Option<u64>,
     /// Windowed: take screenshots of the title menu and of play (title.png, play.png in this
@@ -86,7 +84,8 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let root = asset_root(&args.level, args.asset_root.as_deref())?;
     let mut game = FirstPersonGame::load(&args.level, &root)?;
     if let Some(frames) = args.soak {
-        let r = soak::soak(game, frames, args.seed)?;
+        let environment = game.environment();
+        let r = candela::app::soak::soak(&mut game, environment, frames, args.seed)?;
         let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
         return Ok(format!(
             "{}: soak of {} frames (seed {}): no NaN, nothing fell out, {} film checks finite; \

@@ -13,8 +13,9 @@ use candela::assets::AssetRoot;
 fn three_thousand_random_frames_leave_everything_finite_and_in_the_world() -> anyhow::Result<()> {
     let folder = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/test_scenes/platform");
     let level = folder.join("first_person.ron");
-    let game = FirstPersonGame::load(&level, &AssetRoot::new(&folder)?)?;
-    let report = playground::soak::soak(game, 3000, 7)?;
+    let mut game = FirstPersonGame::load(&level, &AssetRoot::new(&folder)?)?;
+    let environment = game.environment();
+    let report = candela::app::soak::soak(&mut game, environment, 3000, 7)?;
     assert_eq!(report.frames, 3000);
     assert_eq!(report.film_checks, 6, "a film check every 500 frames");
     assert!(report.rss_warm > 0, "resident memory was not read");
