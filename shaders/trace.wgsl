@@ -344,7 +344,13 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
 
 @compute @workgroup_size(8, 8, 1)
 fn trace_main(@builtin(global_invocation_id) id: vec3<u32>) {
-    if (id.x >= frame.width || id.y >= frame.height) {
+    // id.y counts rows of the listed work units; y is the film row it stands for.
+    let slot = id.y / UNIT_ROWS;
+    if (slot >= work_units[0]) {
+        return;
+    }
+    let y = work_units[1u + slot] * UNIT_ROWS + id.y % UNIT_ROWS;
+    if (id.x >= frame.width || y >= frame.height) {
         return;
     }
     count_camera = 0u;
@@ -352,9 +358,9 @@ fn trace_main(@builtin(global_invocation_id) id: vec3<u32>) {
     count_shadow = 0u;
     var sum = vec3<f32>(0.0);
     for (var s = 0u; s < frame.spp; s++) {
-        sum += radiance(id.x, id.y, frame.sample_base + s);
+        sum += radiance(id.x, y, frame.sample_base + s);
     }
-    let index = id.y * frame.width + id.x;
+    let index = y * frame.width + id.x;
     let new_mean = vec4<f32>(sum / f32(max(frame.spp, 1u)), 0.0);
     film[index] = mix(film[index], new_mean, frame.film_blend);
     atomicAdd(&counters[0], count_camera);

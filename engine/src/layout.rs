@@ -38,6 +38,10 @@ pub const LEAF_INDEX_MASK: u32 = (1 << LEAF_COUNT_SHIFT) - 1;
 /// Most consecutive blocks one BLAS leaf may reference (two bits of the payload).
 pub const MAX_LEAF_BLOCKS: u32 = 4;
 
+/// Pixel rows per work unit of a frame split over several tracers (Brigade §4.3.2: "one work
+/// unit equals four scanlines"); the GPU tracer renders the units its unit list names.
+pub const UNIT_ROWS: u32 = 4;
+
 /// One node of an 8-wide BVH, shared by every BLAS (one per mesh) and the TLAS.
 ///
 /// Child bounds are stored structure-of-arrays so that a CPU can test all eight children with

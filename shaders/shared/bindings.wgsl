@@ -16,3 +16,5 @@
 @group(0) @binding(10) var<storage, read_write> film: array<vec4<f32>>;
 // Rays traced: camera, bounce, shadow; and dropped (non-finite) samples.
 @group(0) @binding(11) var<storage, read_write> counters: array<atomic<u32>, 4>;
+// The work units this pass renders: their count, then each unit's index (UNIT_ROWS rows each).
+@group(0) @binding(12) var<storage, read> work_units: array<u32>;

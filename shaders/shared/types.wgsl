@@ -8,6 +8,8 @@ const LEAF_BIT: u32 = 0x80000000u;
 const LEAF_COUNT_SHIFT: u32 = 29u;
 const LEAF_INDEX_MASK: u32 = 0x1fffffffu;
 const MAX_LEAF_BLOCKS: u32 = 4u;
+// Pixel rows per work unit (engine/src/layout.rs UNIT_ROWS); trace_main renders listed units.
+const UNIT_ROWS: u32 = 4u;
 
 const INSTANCE_FLAG_IDENTITY: u32 = 1u;
 const INSTANCE_FLAG_EMISSION_OFF: u32 = 2u;

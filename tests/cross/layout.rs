@@ -220,6 +220,7 @@ fn rust_and_wgsl_constants_agree() {
         ("LEAF_INDEX_MASK", LEAF_INDEX_MASK),
         ("MAX_LEAF_BLOCKS", MAX_LEAF_BLOCKS),
         ("INSTANCE_FLAG_IDENTITY", INSTANCE_FLAG_IDENTITY),
+        ("UNIT_ROWS", UNIT_ROWS),
     ] {
         assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
     }

@@ -122,6 +122,13 @@ impl<'g> WindowApp<'g> {
                 TracerChoice::Auto => "auto".into(),
                 TracerChoice::Gpu => "gpu (wgpu)".into(),
                 TracerChoice::Cpu => format!("cpu ({} threads)", rayon::current_num_threads()),
+                TracerChoice::Pool(spec) => format!(
+                    "pool ({}{} cpu × {} threads, {:?})",
+                    if spec.gpu { "gpu + " } else { "" },
+                    spec.cpu_tracers,
+                    spec.cpu_threads,
+                    spec.scheme
+                ),
             },
             ..Default::default()
         };

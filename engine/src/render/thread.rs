@@ -36,6 +36,8 @@ pub enum TracerChoice {
     Gpu,
     /// The Rust tracer on all CPU cores.
     Cpu,
+    /// Several tracers on one frame, balanced (`render::balance::PoolTracer`).
+    Pool(super::balance::PoolSpec),
 }
 
 /// How the render thread renders.
@@ -140,6 +142,7 @@ fn open(
             };
             Box::new(super::gpu::GpuTracer::new(context, scene)?)
         }
+        TracerChoice::Pool(spec) => Box::new(super::balance::PoolTracer::new(spec, context, scene)?),
     };
     Ok((tracer, presenter))
 }

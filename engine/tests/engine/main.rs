@@ -45,6 +45,7 @@ mod audio_mix;
 mod audio_spatial;
 mod balance_parts;
 mod balance_pool;
+mod balance_pool_tracer;
 mod balance_schemes;
 mod balance_simulate;
 mod blas_params_scene;

@@ -61,6 +61,12 @@ pub struct BalanceArgs {
     pub pool_frames: u32,
     #[arg(long, value_delimiter = ',', default_value = "1,1")]
     pub pool_threads: Vec<usize>,
+    /// Also run every scheme on a real pool of the GPU tracer and `--pool-gpu-cpus` one-thread
+    /// CPU tracers (`PoolTracer`, as `TracerChoice::Pool` runs it) for `--pool-frames` frames.
+    #[arg(long)]
+    pub pool_gpu: bool,
+    #[arg(long, default_value_t = 1)]
+    pub pool_gpu_cpus: u8,
     /// Replay ray counts instead of measured times as the cost of a unit.
     #[arg(long)]
     pub rays: bool,
@@ -215,6 +221,13 @@ pub fn run(args: &BalanceArgs) -> anyhow::Result<()> {
         println!(
             "{}",
             super::balance_pool::run(&repo, args.pool_frames, size, &args.pool_threads)?
+        );
+    }
+    if args.pool_gpu {
+        let size = (first.width, first.height, args.spp);
+        println!(
+            "{}",
+            super::balance_pool::run_gpu(&repo, args.pool_frames, size, args.pool_gpu_cpus)?
         );
     }
     std::fs::create_dir_all(&args.chart_dir)?;

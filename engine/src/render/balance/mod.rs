@@ -10,7 +10,10 @@
 //! the same scheme code is measured here and would drive a real pool.
 //!
 //! [`CpuPool`] is the real thing for CPU tracers: several tracers of chosen thread counts render
-//! the disjoint units of one frame at once into one film. Nothing here is wired into the render thread or the frame loop.
+//! the disjoint units of one frame at once into one film. [`PoolTracer`] wraps it, with the GPU
+//! tracer as one more member when asked, as a `Tracer` the render thread runs
+//! (`TracerChoice::Pool`): the balanced frame is then converged, scaled and presented like any
+//! other.
 
 mod apportion;
 mod cost_model;
@@ -20,6 +23,7 @@ mod error;
 mod measure;
 mod paper;
 mod pool;
+mod pool_tracer;
 mod record;
 mod scheme;
 mod simulate;
@@ -33,7 +37,8 @@ pub use deal::{deal_interleaved, fill_contiguous};
 pub use error::BalanceError;
 pub use measure::FrameTimes;
 pub use paper::{Equal, Perfect, PerfectSmooth, RobinHood};
-pub use pool::CpuPool;
+pub use pool::{CpuPool, PartTimes};
+pub use pool_tracer::{PoolSpec, PoolTracer};
 pub use record::{UnitCost, record_unit_costs};
 pub use scheme::{Balancer, SchemeKind};
 pub use simulate::{FrameOutcome, SimReport, idle_share, simulate};

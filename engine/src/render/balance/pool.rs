@@ -20,6 +20,7 @@ use super::record::trace_unit;
 use super::split::{Split, unit_rows};
 use crate::layout::GpuFrameUniforms;
 use crate::render::film::Film;
+use crate::render::tracer::RayCounts;
 use crate::scene::RenderScene;
 
 /// Several CPU tracers of chosen thread counts.
@@ -27,8 +28,8 @@ pub struct CpuPool {
     pools: Vec<rayon::ThreadPool>,
 }
 
-/// One unit's result: its index, its pixel sums (row by row) and its thread CPU time.
-type UnitResult = (usize, Vec<Vec3>, f64);
+/// One unit's result: its index, its pixel sums (row by row), its rays and its thread CPU time.
+type UnitResult = (usize, Vec<Vec3>, RayCounts, f64);
 
 impl CpuPool {
     /// One tracer per entry of `threads`, each with that many threads (at least one).
@@ -72,6 +73,35 @@ impl CpuPool {
             *film = Film::new(u.width, u.height);
         }
         let start = Instant::now();
+        let mut unit_seconds = vec![0.0; split.units()];
+        let part = self.render_part(scene, u, split, 0, film, start, &mut unit_seconds);
+        film.samples = if u.film_blend >= 1.0 {
+            u.spp
+        } else {
+            film.samples + u.spp
+        };
+        Ok(FrameTimes {
+            split: split.clone(),
+            tracer_seconds: part.tracer_seconds,
+            unit_seconds,
+        })
+    }
+
+    /// This pool's share of a split that other tracers share too: pool tracer `w` renders the
+    /// units of split tracer `first + w`, blending them into `film` (already of the frame's
+    /// size) and writing each unit's CPU time into `unit_seconds`. `film.samples` is left to
+    /// the caller. Tracer times run from `start`.
+    #[allow(clippy::too_many_arguments)] // one frame's inputs and outputs, one each
+    pub fn render_part(
+        &self,
+        scene: &RenderScene,
+        u: &GpuFrameUniforms,
+        split: &Split,
+        first: usize,
+        film: &mut Film,
+        start: Instant,
+        unit_seconds: &mut [f64],
+    ) -> PartTimes {
         let results: Vec<(Vec<UnitResult>, f64)> = std::thread::scope(|s| {
             let handles: Vec<_> = self
                 .pools
@@ -79,7 +109,7 @@ impl CpuPool {
                 .enumerate()
                 .map(|(w, pool)| {
                     s.spawn(move || {
-                        let units: Vec<usize> = split.units_of(w).collect();
+                        let units: Vec<usize> = split.units_of(first + w).collect();
                         let done = pool.install(|| {
                             units
                                 .par_iter()
@@ -98,12 +128,15 @@ impl CpuPool {
                 })
                 .collect()
         });
-        let mut tracer_seconds = vec![0.0; self.pools.len()];
-        let mut unit_seconds = vec![0.0; split.units()];
+        let mut part = PartTimes {
+            tracer_seconds: vec![0.0; self.pools.len()],
+            counts: RayCounts::default(),
+        };
         for (w, (units, seconds)) in results.into_iter().enumerate() {
-            tracer_seconds[w] = seconds;
-            for (unit, sums, cpu) in units {
+            part.tracer_seconds[w] = seconds;
+            for (unit, sums, counts, cpu) in units {
                 unit_seconds[unit] = cpu;
+                part.counts += counts;
                 let y0 = unit_rows(unit, u.height).start as usize * u.width as usize;
                 for (i, s) in sums.iter().enumerate() {
                     let pixel = &mut film.mean[y0 + i];
@@ -112,21 +145,21 @@ impl CpuPool {
                 }
             }
         }
-        film.samples = if u.film_blend >= 1.0 {
-            u.spp
-        } else {
-            film.samples + u.spp
-        };
-        Ok(FrameTimes {
-            split: split.clone(),
-            tracer_seconds,
-            unit_seconds,
-        })
+        part
     }
+}
+
+/// What [`CpuPool::render_part`] measured.
+#[derive(Clone, Debug, Default)]
+pub struct PartTimes {
+    /// Seconds per pool tracer, from the common start to its last unit.
+    pub tracer_seconds: Vec<f64>,
+    /// Rays traced over all units.
+    pub counts: RayCounts,
 }
 
 /// Renders one unit on the calling thread.
 fn render_unit(scene: &RenderScene, u: &GpuFrameUniforms, unit: usize) -> UnitResult {
-    let (sums, _, seconds) = trace_unit(scene, u, unit);
-    (unit, sums, seconds)
+    let (sums, counts, seconds) = trace_unit(scene, u, unit);
+    (unit, sums, counts, seconds)
 }

@@ -11,8 +11,8 @@ use std::ops::Range;
 
 use super::error::BalanceError;
 
-/// Pixel rows per work unit.
-pub const UNIT_ROWS: u32 = 4;
+/// Pixel rows per work unit (defined in `layout`: the GPU tracer's WGSL shares it).
+pub use crate::layout::UNIT_ROWS;
 
 /// Work units of an image `height` pixels tall.
 pub fn unit_count(height: u32) -> usize {

@@ -3,6 +3,7 @@
 
 mod context;
 mod denoise;
+mod dispatch;
 mod ray_batch;
 mod shaders;
 mod tracer;

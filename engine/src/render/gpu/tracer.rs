@@ -7,7 +7,6 @@
 //! film buffer through `Tracer::film_view`).
 
 use std::sync::Arc;
-use std::time::Instant;
 
 use glam::Vec3;
 use wgpu::util::DeviceExt;
@@ -16,21 +15,21 @@ use super::context::GpuContext;
 use super::shaders::{TRACE, compose};
 use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
-use crate::render::tracer::{FilmView, RayCounts, RenderError, RenderStats, Tracer};
+use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
 use crate::scene::RenderScene;
 
 /// Workgroup edge of `trace_main` (8×8 invocations).
-const WORKGROUP: u32 = 8;
+pub(super) const WORKGROUP: u32 = 8;
 
 /// The GPU path tracer.
 pub struct GpuTracer {
     pub(super) context: Arc<GpuContext>,
-    pipeline: wgpu::ComputePipeline,
+    pub(super) pipeline: wgpu::ComputePipeline,
     pub(super) layout: wgpu::BindGroupLayout,
     /// Uniforms, then the nine scene buffers, in binding order 0..=9.
     pub(super) scene_buffers: Vec<wgpu::Buffer>,
-    film: Option<FilmBuffers>,
-    samples: u32,
+    pub(super) film: Option<FilmBuffers>,
+    pub(super) samples: u32,
     /// Created on first use by `trace_rays` (see `ray_batch.rs`).
     pub(super) ray_batch: Option<super::ray_batch::RayBatchPipeline>,
 }
@@ -40,6 +39,8 @@ pub(super) struct FilmBuffers {
     height: u32,
     pub(super) film: wgpu::Buffer,
     pub(super) counters: wgpu::Buffer,
+    /// The work units to render (binding 12): their count, then each unit's index.
+    pub(super) units: wgpu::Buffer,
     pub(super) bind_group: wgpu::BindGroup,
 }
 
@@ -117,6 +118,7 @@ impl GpuTracer {
         entries.extend((1..=9).map(|b| storage(b, true)));
         entries.push(storage(10, false));
         entries.push(storage(11, false));
+        entries.push(storage(12, true));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("trace bindings"),
             entries: &entries,
@@ -185,12 +187,19 @@ impl GpuTracer {
                     | wgpu::BufferUsages::COPY_DST,
                 mapped_at_creation: false,
             });
-            let bind_group = self.bind_group(&film, &counters);
+            let units = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("work units"),
+                size: (crate::render::balance::unit_count(height) as u64 + 1) * 4,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            let bind_group = self.bind_group(&film, &counters, &units);
             self.film = Some(FilmBuffers {
                 width,
                 height,
                 film,
                 counters,
+                units,
                 bind_group,
             });
             self.samples = 0;
@@ -200,11 +209,12 @@ impl GpuTracer {
             .ok_or_else(|| RenderError::Device("film buffers missing".into()))
     }
 
-    /// The group-0 bind group over the current scene buffers, `film` and `counters`.
+    /// The group-0 bind group over the current scene buffers, `film`, `counters` and `units`.
     pub(super) fn bind_group(
         &self,
         film: &wgpu::Buffer,
         counters: &wgpu::Buffer,
+        units: &wgpu::Buffer,
     ) -> wgpu::BindGroup {
         let mut entries: Vec<wgpu::BindGroupEntry> = self
             .scene_buffers
@@ -223,6 +233,10 @@ impl GpuTracer {
             binding: 11,
             resource: counters.as_entire_binding(),
         });
+        entries.push(wgpu::BindGroupEntry {
+            binding: 12,
+            resource: units.as_entire_binding(),
+        });
         self.context
             .device
             .create_bind_group(&wgpu::BindGroupDescriptor {
@@ -235,7 +249,7 @@ impl GpuTracer {
     /// Rebuilds the film's bind group after a scene buffer was replaced.
     pub(super) fn rebind(&mut self) {
         if let Some(film) = self.film.take() {
-            let bind_group = self.bind_group(&film.film, &film.counters);
+            let bind_group = self.bind_group(&film.film, &film.counters, &film.units);
             self.film = Some(FilmBuffers { bind_group, ..film });
         }
     }
@@ -280,50 +294,9 @@ impl Tracer for GpuTracer {
         _scene: &RenderScene,
         u: &GpuFrameUniforms,
     ) -> Result<RenderStats, RenderError> {
-        if u.width == 0 || u.height == 0 {
-            return Err(RenderError::BadSize {
-                width: u.width,
-                height: u.height,
-                reason: "width and height must be positive".into(),
-            });
-        }
-        let started = Instant::now();
-        self.film_buffers(u.width, u.height)?;
-        let context = Arc::clone(&self.context);
-        let Some(film) = self.film.as_ref() else {
-            return Err(RenderError::Device("film buffers missing".into()));
-        };
-        context
-            .queue
-            .write_buffer(&self.scene_buffers[0], 0, bytemuck::bytes_of(u));
-        let mut encoder = context.device.create_command_encoder(&Default::default());
-        encoder.clear_buffer(&film.counters, 0, None);
-        {
-            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor {
-                label: Some("trace"),
-                timestamp_writes: None,
-            });
-            pass.set_pipeline(&self.pipeline);
-            pass.set_bind_group(0, &film.bind_group, &[]);
-            pass.dispatch_workgroups(u.width.div_ceil(WORKGROUP), u.height.div_ceil(WORKGROUP), 1);
-        }
-        context.queue.submit([encoder.finish()]);
-        let counters_bytes = self.read_buffer(&film.counters)?;
-        let c: &[u32] = bytemuck::cast_slice(&counters_bytes);
-        self.samples = if u.film_blend >= 1.0 {
-            u.spp
-        } else {
-            self.samples + u.spp
-        };
-        Ok(RenderStats {
-            counts: RayCounts {
-                camera: c[0] as u64,
-                bounce: c[1] as u64,
-                shadow: c[2] as u64,
-                dropped: c[3] as u64,
-            },
-            seconds: started.elapsed().as_secs_f64(),
-        })
+        let all: Vec<u32> = (0..crate::render::balance::unit_count(u.height) as u32).collect();
+        let started = self.submit_units(u, &all)?;
+        self.finish(u, started)
     }
 
     fn update(
