@@ -9,6 +9,7 @@
 mod accuracy;
 mod analytic;
 mod bvh;
+mod capture_budget;
 mod demo;
 mod far_from_origin;
 mod furnace;

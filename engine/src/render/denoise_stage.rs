@@ -4,6 +4,9 @@
 //! (`denoise::Svgf`, whose history then does the accumulating), and keep the denoised film for
 //! the capture and the presenter.
 //!
+//! The denoiser reprojects its history per pixel with this frame's camera and instance
+//! transforms (`denoise::reproject`), so a moving camera keeps what is still in view.
+//!
 //! Owns: [`DenoiseStage`]. Both tracers go through the CPU denoiser here (the GPU tracer's
 //! frame is read back); the WGSL twin (`gpu::GpuDenoiser`) is not wired in yet: it needs the
 //! guides on the device (a WGSL guide pass) to pay off. Render thread only.
@@ -11,17 +14,20 @@
 
 use std::time::Instant;
 
+use glam::{Affine3A, Mat3A, Vec3A};
+
 use super::cpu::guides::trace_guides;
-use super::denoise::{Svgf, SvgfParams};
+use super::denoise::{ReprojectStats, Svgf, SvgfParams, View};
 use super::film::Film;
 use super::tracer::{FilmView, RenderError, Tracer};
-use crate::layout::GpuFrameUniforms;
+use crate::layout::{GpuFrameUniforms, GpuInstance};
 use crate::scene::RenderScene;
 
 /// The render thread's denoiser and its last output.
 pub struct DenoiseStage {
     svgf: Svgf,
     film: Film,
+    reprojected: Option<ReprojectStats>,
 }
 
 impl DenoiseStage {
@@ -29,6 +35,7 @@ impl DenoiseStage {
         Self {
             svgf: Svgf::new(params),
             film: Film::new(0, 0),
+            reprojected: None,
         }
     }
 
@@ -45,11 +52,20 @@ impl DenoiseStage {
         let started = Instant::now();
         let frame = tracer.film()?;
         let guides = trace_guides(scene, uniforms);
-        self.film = self
+        let transforms = scene.instances.iter().map(world_from_object).collect();
+        let (film, stats) = self
             .svgf
-            .denoise(&frame.mean, &guides, blend)
+            .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)
             .map_err(|e| RenderError::Device(format!("denoiser: {e}")))?;
+        self.film = film;
+        self.reprojected = stats;
         Ok(started.elapsed().as_secs_f64())
+    }
+
+    /// How many pixels of the last frame kept their reprojected history (`None` after a
+    /// restart).
+    pub fn reprojected(&self) -> Option<ReprojectStats> {
+        self.reprojected
     }
 
     /// The last denoised film.
@@ -60,5 +76,18 @@ impl DenoiseStage {
     /// The last denoised film for the presenter (`None` before the first frame).
     pub fn film_view(&self) -> Option<FilmView<'_>> {
         (self.film.width > 0 && self.film.height > 0).then_some(FilmView::Host(&self.film))
+    }
+}
+
+/// An instance's world-from-object transform (its three packed rows).
+fn world_from_object(instance: &GpuInstance) -> Affine3A {
+    let [r0, r1, r2] = instance.world_from_object;
+    Affine3A {
+        matrix3: Mat3A::from_cols(
+            Vec3A::new(r0[0], r1[0], r2[0]),
+            Vec3A::new(r0[1], r1[1], r2[1]),
+            Vec3A::new(r0[2], r1[2], r2[2]),
+        ),
+        translation: Vec3A::new(r0[3], r1[3], r2[3]),
     }
 }

@@ -142,7 +142,9 @@ fn open(
             };
             Box::new(super::gpu::GpuTracer::new(context, scene)?)
         }
-        TracerChoice::Pool(spec) => Box::new(super::balance::PoolTracer::new(spec, context, scene)?),
+        TracerChoice::Pool(spec) => {
+            Box::new(super::balance::PoolTracer::new(spec, context, scene)?)
+        }
     };
     Ok((tracer, presenter))
 }
@@ -167,7 +169,12 @@ fn render_one(
     if scaling.resized() {
         converge.reset();
     }
-    let blend = converge.blend(&commit.motion);
+    // The denoiser reprojects its history per pixel: camera motion need not restart it.
+    let blend = if denoiser.is_some() {
+        converge.blend_reprojected(&commit.motion)
+    } else {
+        converge.blend(&commit.motion)
+    };
     let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &commit.render);
     settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
     // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.

@@ -50,9 +50,15 @@ pub struct CaptureArgs {
     /// the script's].
     #[arg(long, value_enum)]
     pub tracer: Option<TracerKind>,
-    /// Samples per pixel [default: 64; with --script: the script's, per frame].
+    /// Samples per pixel [default: 64, or no cap with --seconds; with --script: the script's,
+    /// per frame].
     #[arg(long)]
     pub spp: Option<u32>,
+    /// Stop at a time budget instead of a sample count: render batches of `--batch` samples
+    /// until the tracer's render time reaches this many seconds (the last batch may end past
+    /// it), then write the image. `--spp`, if given, still caps the samples. Not with --script.
+    #[arg(long, conflicts_with = "script")]
+    pub seconds: Option<f64>,
     /// Width in pixels [default: 640; with --script: the script's].
     #[arg(long)]
     pub width: Option<u32>,
@@ -94,6 +100,8 @@ pub struct CaptureReport {
     pub triangles: usize,
     pub build_seconds: f64,
     pub render_seconds: f64,
+    /// Samples per pixel rendered (the requested count, or what fit in `--seconds`).
+    pub spp: u32,
     pub samples: u64,
     pub rays: u64,
     pub out: PathBuf,
@@ -105,13 +113,14 @@ impl std::fmt::Display for CaptureReport {
         write!(
             f,
             "wrote {}\n{} tracer on {}: {} triangles, scene build {:.3} s, render {:.3} s, \
-             {:.3} M samples/s, {:.3} M rays/s",
+             {} spp, {:.3} M samples/s, {:.3} M rays/s",
             self.out.display(),
             self.tracer,
             self.device,
             self.triangles,
             self.build_seconds,
             self.render_seconds,
+            self.spp,
             self.samples as f64 / t / 1e6,
             self.rays as f64 / t / 1e6,
         )
@@ -157,8 +166,15 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let Some(level) = &args.level else {
         anyhow::bail!("give a level file, or a capture script with --script");
     };
+    let budget = args.seconds;
+    if let Some(s) = budget
+        && !(s.is_finite() && s > 0.0)
+    {
+        anyhow::bail!("--seconds must be a positive number of seconds, not {s}");
+    }
     let (spp, width, height) = (
-        args.spp.unwrap_or(64),
+        args.spp
+            .unwrap_or(if budget.is_some() { u32::MAX } else { 64 }),
         args.width.unwrap_or(640),
         args.height.unwrap_or(360),
     );
@@ -174,16 +190,25 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     let mut tracer = open_tracer(tracer_kind, &scene)
         .with_context(|| format!("cannot open the {tracer_kind:?} tracer"))?;
 
+    // With a time budget the bar counts render milliseconds, else samples per pixel.
+    let (length, template) = match budget {
+        Some(s) => (
+            (s * 1000.0).ceil() as u64,
+            "{spinner} {msg} [{bar:40}] {pos}/{len} ms of render time, {elapsed}",
+        ),
+        None => (
+            spp as u64,
+            "{spinner} {msg} [{bar:40}] {pos}/{len} spp, {elapsed} (eta {eta})",
+        ),
+    };
     let progress = if args.quiet {
         indicatif::ProgressBar::hidden()
     } else {
-        indicatif::ProgressBar::new(spp as u64)
+        indicatif::ProgressBar::new(length)
     };
     progress.set_style(
-        indicatif::ProgressStyle::with_template(
-            "{spinner} {msg} [{bar:40}] {pos}/{len} spp, {elapsed} (eta {eta})",
-        )
-        .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
+        indicatif::ProgressStyle::with_template(template)
+            .unwrap_or_else(|_| indicatif::ProgressStyle::default_bar()),
     );
     progress.set_message(format!("{} tracer", tracer.name()));
     let mut rays = 0u64;
@@ -194,7 +219,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         .then(|| Svgf::new(candela::render::denoise::SvgfParams::default()));
     let mut guides = None;
     let mut denoised = None;
-    while done < spp {
+    while done < spp && budget.is_none_or(|s| render_seconds < s) {
         let batch = args.batch.max(1).min(spp - done);
         let mut settings =
             FrameSettings::new(width, height, batch, args.seed, &desc.render).continuing(done);
@@ -218,7 +243,10 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
             denoised = Some(svgf.denoise(&tracer.film()?.mean, g, blend)?);
         }
         done += batch;
-        progress.set_position(done as u64);
+        progress.set_position(match budget {
+            Some(_) => (render_seconds * 1000.0) as u64,
+            None => done as u64,
+        });
     }
     progress.finish_and_clear();
     let film = match denoised {
@@ -240,7 +268,8 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         triangles: scene.stats.instanced_triangles,
         build_seconds,
         render_seconds,
-        samples: spp as u64 * width as u64 * height as u64,
+        spp: done,
+        samples: done as u64 * width as u64 * height as u64,
         rays,
         out: args.out.clone(),
     })

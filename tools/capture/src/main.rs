@@ -1,5 +1,6 @@
 //! `capture <level> --tracer gpu|cpu --spp N --width W --height H --out frame.png
-//! [--exr frame.exr] [--seed S] [--denoise]`: renders a level headless and prints time,
+//! [--exr frame.exr] [--seed S] [--denoise] [--seconds S]` (with `--seconds`, stop at a render-time
+//! budget instead of a sample count): renders a level headless and prints time,
 //! samples per second and rays per second. `capture --script file.ron [--out-dir DIR]` runs a capture script
 //! (frames, camera, motions, light switches, screenshots) and prints the time per frame split
 //! into update, upkeep and render, and the commit bytes. See `capture::CaptureArgs`.

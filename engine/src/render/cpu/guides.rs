@@ -5,7 +5,9 @@
 //! the camera, the depth its distance along the ray (metres), the instance the one hit; the
 //! albedo follows perfect mirrors (up to [`MAX_SPECULAR`] reflections, multiplying their tints)
 //! to the first non-specular surface and takes its base colour; smooth glass and the sky give 1
-//! (not demodulated). A pixel whose primary hit emits is flagged (the filter leaves it alone).
+//! (not demodulated). A pixel whose primary hit emits is flagged (the filter leaves it alone), and
+//! so is one whose primary hit is specular (a mirror or smooth glass: reprojection does not
+//! reuse its history, its picture moves unlike its surface).
 //! It runs only when the denoiser is on, so the tracer pays nothing for it
 //! otherwise; render thread, rows on rayon's pool.
 //! Must not: shade or accumulate radiance (the integrator does), or change the scene.
@@ -20,8 +22,8 @@ use crate::render::denoise::{Guides, NO_INSTANCE};
 use crate::scene::RenderScene;
 use crate::trace::Ray;
 
-/// One pixel's guide: normal, depth, albedo, instance, emissive.
-type Guide = (Vec3, f32, Vec3, u32, bool);
+/// One pixel's guide: normal, depth, albedo, instance, emissive, specular first hit.
+type Guide = (Vec3, f32, Vec3, u32, bool, bool);
 
 /// Mirror reflections the albedo follows before giving up (and taking 1).
 pub const MAX_SPECULAR: u32 = 3;
@@ -53,7 +55,7 @@ fn guide_pixel(
     let mut ray = centre_ray(u, px, py);
     let mut first: Option<(Vec3, f32, u32, bool)> = None;
     let mut tint = Vec3::ONE;
-    for _ in 0..=MAX_SPECULAR {
+    for k in 0..=MAX_SPECULAR {
         let Some(hit) = tracer.closest(&ray) else {
             break;
         };
@@ -73,7 +75,7 @@ fn guide_pixel(
         if !bsdf.is_delta() {
             tint *= bsdf.base_color;
             let (normal, depth, instance, emits) = first.unwrap_or((n, hit.t, hit.instance, false));
-            return (normal, depth, tint, instance, emits);
+            return (normal, depth, tint, instance, emits, k > 0);
         }
         if bsdf.kind != MATERIAL_CONDUCTOR {
             break;
@@ -93,8 +95,8 @@ fn guide_pixel(
         };
     }
     match first {
-        Some((normal, depth, instance, emits)) => (normal, depth, Vec3::ONE, instance, emits),
-        None => (Vec3::ZERO, 0.0, Vec3::ONE, NO_INSTANCE, false),
+        Some((normal, depth, instance, emits)) => (normal, depth, Vec3::ONE, instance, emits, true),
+        None => (Vec3::ZERO, 0.0, Vec3::ONE, NO_INSTANCE, false, false),
     }
 }
 
@@ -113,7 +115,8 @@ pub fn trace_guides(scene: &RenderScene, u: &GpuFrameUniforms) -> Guides {
                 .collect()
         })
         .collect();
-    for (i, (n, z, a, id, e)) in rows.into_iter().flatten().enumerate() {
+    for (i, (n, z, a, id, e, spec)) in rows.into_iter().flatten().enumerate() {
+        guides.specular[i] = spec;
         guides.normal[i] = n;
         guides.depth[i] = z;
         guides.albedo[i] = a;

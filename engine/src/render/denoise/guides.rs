@@ -31,6 +31,9 @@ pub struct Guides {
     /// The primary hit emits light: such pixels (a lamp seen directly, its radiance known, not
     /// noisy) pass the filter unchanged and never blur into their neighbours, as the sky does.
     pub emissive: Vec<bool>,
+    /// The primary hit is specular (a mirror or smooth glass): the pixel shows light from
+    /// other surfaces, which moves unlike its own; reprojection does not reuse its history.
+    pub specular: Vec<bool>,
 }
 
 impl Guides {
@@ -45,6 +48,7 @@ impl Guides {
             albedo: vec![Vec3::ONE; n],
             instance: vec![NO_INSTANCE; n],
             emissive: vec![false; n],
+            specular: vec![false; n],
         }
     }
 
@@ -66,6 +70,7 @@ impl Guides {
             && self.albedo.len() == n
             && self.instance.len() == n
             && self.emissive.len() == n
+            && self.specular.len() == n
     }
 
     /// (normal xyz, depth w) per pixel, as the passes and the GPU buffers hold them (raw: the

@@ -10,6 +10,7 @@
 
 mod atrous;
 mod guides;
+mod reproject;
 mod svgf;
 mod temporal;
 mod variance;
@@ -17,6 +18,9 @@ pub mod weights;
 
 pub use atrous::{Pass, atrous_pixel};
 pub use guides::{Guides, NO_INSTANCE};
+pub use reproject::{
+    DEPTH_TOLERANCE, NORMAL_COS, PrevFrame, ReprojectStats, SNAP_PIXELS, View, reproject,
+};
 pub use svgf::{DenoiseError, Svgf, SvgfParams};
 pub use temporal::{History, Reprojection, temporal_pixel};
 pub use variance::variance_pixel;

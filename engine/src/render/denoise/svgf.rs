@@ -12,10 +12,11 @@
 //! render thread (its passes on rayon's pool).
 //! Must not: trace rays or touch the tracer's film.
 
-use glam::{Vec3, Vec4};
+use glam::{Affine3A, Vec3, Vec4};
 
 use super::atrous::{Pass, filter};
 use super::guides::Guides;
+use super::reproject::{PrevFrame, ReprojectStats, View, reproject};
 use super::temporal::{History, Reprojection, accumulate};
 use super::variance::estimate;
 use crate::render::film::Film;
@@ -73,7 +74,8 @@ pub enum DenoiseError {
 pub struct Svgf {
     pub params: SvgfParams,
     history: History,
-    reprojection: Reprojection,
+    /// The previous frame, kept by [`Svgf::denoise_moving`] for reprojection.
+    prev: Option<PrevFrame>,
 }
 
 impl Svgf {
@@ -87,6 +89,7 @@ impl Svgf {
     /// Forgets the history (the next frame starts afresh whatever its blend factor).
     pub fn reset(&mut self) {
         self.history = History::new(self.history.width, self.history.height);
+        self.prev = None;
     }
 
     /// The history so far (for tests and the GPU twin's comparison).
@@ -103,6 +106,71 @@ impl Svgf {
         guides: &Guides,
         blend: f32,
     ) -> Result<Film, DenoiseError> {
+        self.check(frame, guides)?;
+        let albedo = guides.packed_albedo();
+        accumulate(
+            &mut self.history,
+            frame,
+            &albedo,
+            blend,
+            Reprojection::Identity,
+        );
+        self.prev = None;
+        Ok(self.filter_history(guides, &albedo))
+    }
+
+    /// Denoises one frame seen from `view` with the instances at `world_from_object` (by
+    /// instance index), reprojecting the history of the previous frame given here onto this
+    /// frame's pixels (`reproject`): a moving camera or object keeps the history of every
+    /// surface still in view. `blend` is the weight of the new frame where the history is
+    /// long (1 restarts every pixel: a cut). Returns the film and, when a previous frame was
+    /// reprojected, how many pixels kept their history.
+    pub fn denoise_moving(
+        &mut self,
+        frame: &[Vec3],
+        guides: &Guides,
+        blend: f32,
+        view: View,
+        world_from_object: Vec<Affine3A>,
+    ) -> Result<(Film, Option<ReprojectStats>), DenoiseError> {
+        self.check(frame, guides)?;
+        let albedo = guides.packed_albedo();
+        let restart = blend.is_nan() || blend >= 1.0;
+        let stats = match self.prev.take() {
+            Some(prev) if !restart => {
+                let (moved, stats) =
+                    reproject(&self.history, &prev, guides, &view, &world_from_object);
+                self.history = moved;
+                accumulate(
+                    &mut self.history,
+                    frame,
+                    &albedo,
+                    blend,
+                    Reprojection::Moved,
+                );
+                Some(stats)
+            }
+            _ => {
+                accumulate(
+                    &mut self.history,
+                    frame,
+                    &albedo,
+                    blend,
+                    Reprojection::Identity,
+                );
+                None
+            }
+        };
+        self.prev = Some(PrevFrame {
+            view,
+            guides: guides.clone(),
+            world_from_object,
+        });
+        Ok((self.filter_history(guides, &albedo), stats))
+    }
+
+    /// Checks the sizes and resizes (so restarts) the history when the guides' size changed.
+    fn check(&mut self, frame: &[Vec3], guides: &Guides) -> Result<(), DenoiseError> {
         let (width, height) = (guides.width, guides.height);
         let n = width as usize * height as usize;
         if frame.len() != n || !guides.is_consistent() {
@@ -115,10 +183,16 @@ impl Svgf {
         }
         if self.history.width != width || self.history.height != height {
             self.history = History::new(width, height);
+            self.prev = None;
         }
+        Ok(())
+    }
+
+    /// Variance estimate and the à-trous passes over the current history.
+    fn filter_history(&self, guides: &Guides, albedo: &[Vec4]) -> Film {
+        let (width, height) = (guides.width, guides.height);
+        let n = width as usize * height as usize;
         let nd = guides.packed_normal_depth();
-        let albedo = guides.packed_albedo();
-        accumulate(&mut self.history, frame, &albedo, blend, self.reprojection);
         let mut a = vec![Vec4::ZERO; n];
         let mut b = vec![Vec4::ZERO; n];
         estimate(
@@ -131,7 +205,7 @@ impl Svgf {
             &mut a,
         );
         for pass in self.params.passes() {
-            filter(&a, &nd, &albedo, width, height, &pass, &mut b);
+            filter(&a, &nd, albedo, width, height, &pass, &mut b);
             std::mem::swap(&mut a, &mut b);
         }
         let mut film = Film::new(width, height);
@@ -143,6 +217,6 @@ impl Svgf {
             .map(|h| h.w as u32)
             .max()
             .unwrap_or(0);
-        Ok(film)
+        film
     }
 }

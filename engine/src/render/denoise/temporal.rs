@@ -5,9 +5,11 @@
 //! Owns: [`History`] and [`accumulate`]. Inputs: this frame's mean radiance per pixel (linear,
 //! not yet blended with earlier frames), the albedo guide, and the blend factor of the new
 //! frame chosen by `film::Converge` (1 restarts: camera cut, camera motion, resize).
-//! Reprojection is the identity today (a pixel's history is the same pixel's); per-pixel
-//! motion vectors with depth/normal/instance rejection plug in at [`Reprojection`] (issue 13,
-//! part 2): they choose the history sample and may reset a pixel's length to 0. Render thread.
+//! The history is either the same pixel's ([`Reprojection::Identity`]) or was moved onto this
+//! frame's pixels by `reproject` ([`Reprojection::Moved`]: motion vectors with depth, normal
+//! and instance rejection, a rejected pixel's length 0); then each pixel's weight is at least
+//! 1/(its history length + 1), so a pixel revealed a frame ago is an exact mean of its two
+//! frames, not a floored blend. Render thread.
 //! Must not: filter spatially (see `variance`, `atrous`).
 
 use glam::{Vec3, Vec4};
@@ -21,6 +23,9 @@ pub enum Reprojection {
     /// The same pixel (a still camera; camera motion resets through the blend factor).
     #[default]
     Identity,
+    /// The history was reprojected onto this frame's pixels (`reproject`): per-pixel weight
+    /// `max(blend, 1 / (length + 1))`.
+    Moved,
 }
 
 /// The denoiser's memory between frames: per pixel (illumination rgb, history length in
@@ -83,15 +88,16 @@ pub fn accumulate(
     blend: f32,
     reprojection: Reprojection,
 ) {
-    match reprojection {
-        Reprojection::Identity => {}
-    }
     history
         .illumination
         .par_iter_mut()
         .zip(history.moments.par_iter_mut())
         .zip(frame.par_iter().zip(albedo.par_iter()))
         .for_each(|((h, m), (c, a))| {
+            let blend = match reprojection {
+                Reprojection::Identity => blend,
+                Reprojection::Moved => blend.max(1.0 / (h.w.max(0.0) + 1.0)),
+            };
             let [nh, nm] = temporal_pixel(*h, *m, *c, demodulator(a.truncate()), blend);
             *h = nh;
             *m = nm;

@@ -2,8 +2,8 @@
 //! `C = (1 − f)·C_prev + f·C_new`.
 //!
 //! Owns: the one function that chooses `f` (and so resets accumulation): a full reset on cuts
-//! and on camera motion above a threshold (there is no reprojection yet, so old pixels would
-//! smear); an exact running mean (`f = 1/n` for the n-th still frame) while nothing moves; and a
+//! and on camera motion above a threshold (the film has no reprojection, so old pixels would
+//! smear; the denoiser reprojects per pixel and uses [`Converge::blend_reprojected`]); an exact running mean (`f = 1/n` for the n-th still frame) while nothing moves; and a
 //! floor on `f` while objects move so that they do not leave ghosts. After a floored blend the
 //! frame count drops to the film's effective count, so that once motion stops new frames get
 //! the weight the film's real noise calls for (see [`Converge::blend`]). Render thread.
@@ -69,6 +69,19 @@ impl Converge {
             self.frames = self.frames.min(effective);
         }
         f
+    }
+
+    /// The blend factor `f` for the next frame when the consumer reprojects its history per
+    /// pixel (the denoiser, `denoise::reproject`): camera motion no longer restarts the image,
+    /// it is floored as moving objects are (old pixels that survive reprojection still fade
+    /// within about 1/floor frames); only cuts restart.
+    pub fn blend_reprojected(&mut self, motion: &Motion) -> f32 {
+        let moving = motion.objects || motion.camera > self.policy.camera_reset;
+        self.blend(&Motion {
+            cut: motion.cut,
+            camera: 0.0,
+            objects: moving,
+        })
     }
 }
 
