@@ -142,11 +142,13 @@ impl Gamepads {
         })
     }
 
-    /// Feeds every event since the last poll into `input`. Call once per frame, before the
-    /// frame's fixed steps.
-    pub fn poll(&mut self, input: &mut InputState) {
+    /// Feeds every event since the last poll into `input` and returns the buttons pressed
+    /// since then, in order (the window forwards them to the shell, for rebinding). Call once
+    /// per frame, before the frame's fixed steps.
+    pub fn poll(&mut self, input: &mut InputState) -> Vec<PadButton> {
+        let mut presses = Vec::new();
         let Some(gilrs) = self.gilrs.as_mut() else {
-            return;
+            return presses;
         };
         while let Some(gilrs::Event { id, event, .. }) = gilrs.next_event() {
             let pad = self.pads.entry(id).or_default();
@@ -155,6 +157,7 @@ impl Gamepads {
                     if let Some(b) = pad_button(b) {
                         if !pad.held.contains(&b) {
                             pad.held.push(b);
+                            presses.push(b);
                         }
                         input.pad_button(b, true);
                     }
@@ -191,6 +194,7 @@ impl Gamepads {
                 _ => {}
             }
         }
+        presses
     }
 }
 

@@ -21,7 +21,8 @@ use winit::window::{Fullscreen, Window};
 use super::engine::{Engine, Environment};
 use super::frame_limiter::FrameLimiter;
 use super::game::Game;
-use super::input::{InputState, actions};
+use super::gamepad::Gamepads;
+use super::input::{Binding, InputState, actions};
 use super::shell::{ShellConfig, ShellRun};
 use super::stats::FrameStats;
 use super::stats_overlay::StatsOverlay;
@@ -134,6 +135,7 @@ impl<'g> WindowApp<'g> {
         };
         Ok(Running {
             overlay: StatsOverlay::new(&window, self.config.show_stats),
+            gamepads: Gamepads::new(),
             window,
             engine,
             limiter: FrameLimiter::new(self.config.max_fps),
@@ -269,6 +271,12 @@ impl<'g> WindowApp<'g> {
         let now = Instant::now();
         let frame_seconds = (now - running.last_frame).as_secs_f64();
         running.last_frame = now;
+        let pad_presses = running.gamepads.poll(running.engine.input_mut());
+        if let Some(shell) = self.shell.as_mut() {
+            for button in pad_presses {
+                shell.pressed(Binding::Pad(button));
+            }
+        }
         self.runner_actions(event_loop);
         let Some(running) = self.running.as_mut() else {
             return;

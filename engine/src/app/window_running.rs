@@ -11,6 +11,7 @@ use winit::window::{CursorGrabMode, Fullscreen, Window};
 
 use super::engine::Engine;
 use super::frame_limiter::FrameLimiter;
+use super::gamepad::Gamepads;
 use super::shell::WindowWants;
 use super::stats::FrameStats;
 use super::stats_overlay::StatsOverlay;
@@ -19,6 +20,8 @@ pub(super) struct Running {
     pub(super) window: Arc<Window>,
     pub(super) engine: Engine,
     pub(super) overlay: StatsOverlay,
+    /// The gamepads, polled once per frame into the engine's input.
+    pub(super) gamepads: Gamepads,
     pub(super) limiter: FrameLimiter,
     pub(super) stats: FrameStats,
     pub(super) last_frame: Instant,

@@ -100,6 +100,44 @@ fn the_screens_follow_the_menus_and_the_pause_action() {
 }
 
 #[test]
+fn a_gamepad_button_rebinds_the_pad_binding_and_keeps_the_keys() {
+    let set = ActionSet::standard();
+    let mut e = SettingsEditor::new(Settings::default(), set.clone());
+    // Click "Jump", press the pad's North: it replaces South, Space stays.
+    e.start_rebind(game_actions::JUMP);
+    assert!(e.offer(Binding::Pad(PadButton::North)));
+    assert_eq!(e.capturing(), None);
+    assert_eq!(
+        e.bindings_of(game_actions::JUMP),
+        vec![Binding::Key(KeyCode::Space), Binding::Pad(PadButton::North)]
+    );
+    assert!(e.draft.check(&set).is_ok());
+    // A key afterwards replaces the key and keeps the new pad button.
+    e.start_rebind(game_actions::JUMP);
+    e.offer(Binding::Key(KeyCode::KeyJ));
+    assert_eq!(
+        e.bindings_of(game_actions::JUMP),
+        vec![Binding::Key(KeyCode::KeyJ), Binding::Pad(PadButton::North)]
+    );
+    // Pressing the defaults again stores nothing: the settings file stays clean.
+    e.start_rebind(game_actions::JUMP);
+    e.offer(Binding::Pad(PadButton::South));
+    e.start_rebind(game_actions::JUMP);
+    e.offer(Binding::Key(KeyCode::Space));
+    assert_eq!(e.draft.bindings.0.get(game_actions::JUMP), None);
+    // Two actions on one pad button are a conflict like two on one key.
+    let pad_of_use = e
+        .bindings_of(game_actions::USE)
+        .into_iter()
+        .find(|b| matches!(b, Binding::Pad(_)))
+        .expect("Use has a default pad button");
+    e.start_rebind(game_actions::JUMP);
+    e.offer(pad_of_use);
+    assert_eq!(e.conflicts().len(), 1, "{:?}", e.conflicts());
+    assert_eq!(e.conflicts()[0].binding, pad_of_use);
+}
+
+#[test]
 fn rebinding_takes_the_next_press_keeps_pad_bindings_and_finds_conflicts() {
     let set = ActionSet::standard();
     let mut e = SettingsEditor::new(Settings::default(), set.clone());

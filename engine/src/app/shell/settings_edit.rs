@@ -1,6 +1,7 @@
 //! The settings screen's model, without egui: a draft of the player's [`Settings`] that the
-//! widgets change, key rebinding (pick an action, then the next key or mouse button pressed
-//! becomes its keyboard/mouse binding; Escape cancels; gamepad bindings are kept), conflicts
+//! widgets change, rebinding (pick an action, then the next key or mouse button pressed
+//! becomes its keyboard/mouse binding and the other kind's bindings are kept, the next gamepad
+//! button its gamepad binding and the keyboard/mouse ones are kept; Escape cancels), conflicts
 //! (one key bound to two actions), and reset to the defaults.
 //!
 //! The runner applies the draft live whenever it differs from what was applied, and saves it
@@ -90,22 +91,36 @@ impl SettingsEditor {
         self.capturing.as_deref()
     }
 
-    /// Offers a pressed key or mouse button. While waiting: Escape cancels, any other key or
-    /// button replaces the action's keyboard and mouse bindings (gamepad ones stay); returns
+    /// Offers a pressed key, mouse button or gamepad button. While waiting: Escape cancels; a
+    /// key or mouse button replaces the action's keyboard and mouse bindings (its gamepad ones
+    /// stay), a gamepad button its gamepad buttons (its keyboard and mouse ones stay); returns
     /// true (the press was used). Not waiting: false.
     pub fn offer(&mut self, pressed: Binding) -> bool {
         let Some(action) = self.capturing.take() else {
             return false;
         };
-        if pressed == Binding::Key(KeyCode::Escape) || !desk(&pressed) {
+        let pad = matches!(pressed, Binding::Pad(_));
+        if pressed == Binding::Key(KeyCode::Escape) || !(desk(&pressed) || pad) {
             return true;
         }
+        // Keep the bindings of the other kind than the press.
+        let same_kind = |b: &Binding| {
+            if pad {
+                matches!(b, Binding::Pad(_))
+            } else {
+                desk(b)
+            }
+        };
         let mut bindings: Vec<Binding> = self
             .bindings_of(&action)
             .into_iter()
-            .filter(|b| !desk(b))
+            .filter(|b| !same_kind(b))
             .collect();
-        bindings.insert(0, pressed);
+        if pad {
+            bindings.push(pressed);
+        } else {
+            bindings.insert(0, pressed);
+        }
         let defaults = self.set.default_map().actions.get(&action).cloned();
         if defaults.as_ref() == Some(&bindings) {
             self.draft.bindings.reset(&action);

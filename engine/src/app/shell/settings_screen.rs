@@ -1,6 +1,6 @@
 //! The settings screen: picture (resolution scale, target frame rate, vsync, fullscreen), sound
 //! (master, effects, music), controls (mouse sensitivity, invert Y) and key bindings (click an
-//! action, press a key or mouse button; a key bound twice is marked), with Reset to defaults
+//! action, press a key, mouse button or gamepad button; a key bound twice is marked), with Reset to defaults
 //! and Back. Every change goes into the [`SettingsEditor`]'s draft, which the runner applies at
 //! once and saves.
 //!
@@ -148,7 +148,7 @@ fn bindings(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
                     label
                 });
                 let text = if capturing.as_deref() == Some(action.as_str()) {
-                    RichText::new("press a key…").color(theme::ACCENT)
+                    RichText::new("press a key or button…").color(theme::ACCENT)
                 } else {
                     let shown: Vec<String> = editor
                         .bindings_of(&action)
