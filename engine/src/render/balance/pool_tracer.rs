@@ -69,7 +69,9 @@ impl PoolTracer {
         scene: &RenderScene,
     ) -> Result<Self, RenderError> {
         if spec.tracers() == 0 {
-            return Err(RenderError::Device("a tracer pool needs at least one tracer".into()));
+            return Err(RenderError::Device(
+                "a tracer pool needs at least one tracer".into(),
+            ));
         }
         let gpu = if spec.gpu {
             let context = match context {
@@ -236,5 +238,9 @@ impl Tracer for PoolTracer {
         if let Some(gpu) = &mut self.gpu {
             gpu.clear();
         }
+    }
+
+    fn device_lost(&self) -> Option<String> {
+        self.gpu.as_ref().and_then(|gpu| gpu.device_lost())
     }
 }
