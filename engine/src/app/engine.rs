@@ -105,6 +105,21 @@ impl Engine {
         ))
     }
 
+    /// Starts the render thread headless on the tracer `open` makes (`config.tracer` is
+    /// ignored): for tests that need a tracer of their own, such as one whose GPU device is
+    /// lost part-way (`RenderThread::spawn_with_tracer`).
+    pub fn with_tracer(
+        config: RenderConfig,
+        environment: Environment,
+        open: crate::render::OpenTracer,
+    ) -> Result<Self, EngineError> {
+        Ok(Self::with_render(
+            RenderThread::spawn_with_tracer(config, open)?,
+            environment,
+            Audio::silent(),
+        ))
+    }
+
     /// Starts the render thread with `config`, presenting into `target`'s window (see
     /// [`Engine::present_next`]).
     pub fn new_windowed(
@@ -241,6 +256,12 @@ impl Engine {
     /// Audio, to play sounds and set volumes.
     pub fn audio_mut(&mut self) -> &mut Audio {
         &mut self.audio
+    }
+
+    /// Replaces the sound output (the sounds playing on the old one stop): for example an
+    /// `Audio::with_output` on a test device that can fail.
+    pub fn set_audio(&mut self, audio: Audio) {
+        self.audio = audio;
     }
 
     /// The actions' state that the game's hooks read.

@@ -87,21 +87,46 @@ fn sync_folder(folder: &Path) {
 
 /// Moves `path` out of the way as `<name>.corrupt` beside it (or `<name>.corrupt.1`, `.2`, …
 /// if that exists, so an earlier kept-aside file is never overwritten) and returns the new path.
+///
+/// The move is a hard link to the new name (which fails rather than replace a file that
+/// appeared there meanwhile) and then the removal of the old name; on a file system without
+/// hard links it falls back to a rename after checking the new name is free.
 pub fn keep_aside(path: &Path) -> Result<PathBuf, AtomicFileError> {
     let name = path
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_else(|| "file".into());
-    let mut aside = path.with_file_name(format!("{name}.corrupt"));
-    let mut n = 0u32;
-    while aside.exists() {
-        n += 1;
-        aside = path.with_file_name(format!("{name}.corrupt.{n}"));
-    }
-    std::fs::rename(path, &aside).map_err(|source| AtomicFileError {
+    let fail = |source| AtomicFileError {
         path: path.to_path_buf(),
         stage: "move aside",
         source,
-    })?;
-    Ok(aside)
+    };
+    for n in 0..MAX_KEPT_ASIDE {
+        let aside = if n == 0 {
+            path.with_file_name(format!("{name}.corrupt"))
+        } else {
+            path.with_file_name(format!("{name}.corrupt.{n}"))
+        };
+        match std::fs::hard_link(path, &aside) {
+            Ok(()) => {
+                std::fs::remove_file(path).map_err(fail)?;
+                return Ok(aside);
+            }
+            Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Err(fail(e)),
+            Err(_) if !aside.exists() => {
+                // No hard links here (FAT, some network shares): a plain rename.
+                std::fs::rename(path, &aside).map_err(fail)?;
+                return Ok(aside);
+            }
+            Err(_) => continue,
+        }
+    }
+    Err(fail(std::io::Error::other(format!(
+        "{MAX_KEPT_ASIDE} earlier copies are already kept aside"
+    ))))
 }
+
+/// Most kept-aside copies of one file (`<name>.corrupt` to `<name>.corrupt.9999`); past
+/// that the bad file is left where it is and the error says so.
+pub const MAX_KEPT_ASIDE: u32 = 10_000;

@@ -330,13 +330,7 @@ impl Level {
             path: path.to_path_buf(),
             message: format!("cannot serialise: {e}"),
         })?;
-        let file_name = path
-            .file_name()
-            .map(|n| n.to_string_lossy().into_owned())
-            .unwrap_or_else(|| "level.ron".into());
-        let temp = path.with_file_name(format!(".{file_name}.{}.tmp", std::process::id()));
-        std::fs::write(&temp, text).map_err(io)?;
-        std::fs::rename(&temp, path).map_err(io)
+        super::atomic_file::write_atomic(path, text.as_bytes()).map_err(|e| io(e.source))
     }
 }
 

@@ -1,4 +1,5 @@
-//! Where the mixed sound goes: the sound card (kira's cpal backend) or the silent recorder.
+//! Where the mixed sound goes: the sound card (kira's cpal backend), the silent recorder, or a
+//! [`TestDevice`] standing in for a sound card in fault tests.
 //!
 //! Owns: [`OutputBackend`], the one kira `Backend` the engine builds its `AudioManager` on, so
 //! that `playback.rs` has a single code path for both; and [`SilentSettings`]. With a device, kira's
@@ -15,6 +16,7 @@ use kira::backend::cpal::{CpalBackend, CpalBackendSettings};
 use kira::backend::{Backend, Renderer};
 
 use super::AudioError;
+use super::test_device::TestDevice;
 
 /// Settings of the silent recorder.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,12 +41,23 @@ impl Default for SilentSettings {
 }
 
 /// Which output to open.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug)]
 pub enum OutputSettings {
     /// The default output device of the default host (ALSA on Linux).
     Device,
     /// No device: mix on `Audio::tick` into memory.
     Silent(SilentSettings),
+    /// A stand-in device a test can make absent or unplug (mixes at 44.1 kHz).
+    Test(TestDevice),
+}
+
+/// Something the device reported.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DeviceProblem {
+    pub message: String,
+    /// The device is gone (unplugged, disconnected, its stream invalidated): nothing more will
+    /// be heard from it.
+    pub lost: bool,
 }
 
 /// The silent recorder: kira's renderer and a scratch buffer of interleaved stereo samples.
@@ -62,6 +75,8 @@ pub enum OutputBackend {
     Device(CpalBackend),
     /// Boxed: the renderer is large (1.8 KB) next to the cpal handle.
     Silent(Box<Recorder>),
+    /// A test's stand-in device: a recorder whose output is thrown away, and its switch.
+    Test(Box<Recorder>, TestDevice, bool),
 }
 
 impl OutputBackend {
@@ -69,7 +84,23 @@ impl OutputBackend {
     pub fn silent_sample_rate_hz(&self) -> Option<u32> {
         match self {
             Self::Silent(r) => Some(r.sample_rate_hz),
-            Self::Device(_) => None,
+            Self::Device(_) | Self::Test(..) => None,
+        }
+    }
+
+    /// A test device: mixes (and drops) `frames` frames, as a device's own thread would play
+    /// them. Does nothing for the others.
+    pub fn pump(&mut self, frames: usize) {
+        if let Self::Test(recorder, _, _) = self {
+            recorder.mix(frames);
+        }
+    }
+
+    /// A test device's sample rate.
+    pub fn test_sample_rate_hz(&self) -> Option<u32> {
+        match self {
+            Self::Test(r, _, _) => Some(r.sample_rate_hz),
+            _ => None,
         }
     }
 
@@ -80,24 +111,57 @@ impl OutputBackend {
         let Self::Silent(recorder) = self else {
             return &[];
         };
-        let Some(renderer) = recorder.renderer.as_mut() else {
+        recorder.mix(frames)
+    }
+
+    /// Device mode: the next problem the device reported (kira's cpal backend: a stream error;
+    /// a test device: its unplugging, once).
+    pub fn pop_device_error(&mut self) -> Option<DeviceProblem> {
+        match self {
+            Self::Device(cpal) => cpal.pop_error().map(|e| {
+                use kira::backend::cpal::cpal::ErrorKind;
+                DeviceProblem {
+                    message: e.to_string(),
+                    lost: matches!(
+                        e.kind(),
+                        ErrorKind::DeviceNotAvailable | ErrorKind::StreamInvalidated
+                    ),
+                }
+            }),
+            Self::Test(_, device, reported) if device.is_unplugged() && !*reported => {
+                *reported = true;
+                Some(DeviceProblem {
+                    message: "the device was unplugged (test device)".into(),
+                    lost: true,
+                })
+            }
+            Self::Silent(_) | Self::Test(..) => None,
+        }
+    }
+}
+
+impl Recorder {
+    fn new(sample_rate_hz: u32, internal_buffer_size: usize) -> Self {
+        Self {
+            sample_rate_hz,
+            block_frames: internal_buffer_size.max(1),
+            renderer: None,
+            scratch: Vec::new(),
+        }
+    }
+
+    /// Mixes the next `frames` frames (interleaved stereo; empty before kira has started).
+    fn mix(&mut self, frames: usize) -> &[f32] {
+        let Some(renderer) = self.renderer.as_mut() else {
             return &[];
         };
-        recorder.scratch.clear();
-        recorder.scratch.resize(frames * 2, 0.0);
-        for block in recorder.scratch.chunks_mut(recorder.block_frames * 2) {
+        self.scratch.clear();
+        self.scratch.resize(frames * 2, 0.0);
+        for block in self.scratch.chunks_mut(self.block_frames * 2) {
             renderer.on_start_processing();
             renderer.process(block, 2);
         }
-        &recorder.scratch
-    }
-
-    /// Device mode: the next stream error kira's cpal backend reported, as text.
-    pub fn pop_device_error(&mut self) -> Option<String> {
-        match self {
-            Self::Device(cpal) => cpal.pop_error().map(|e| e.to_string()),
-            Self::Silent(_) => None,
-        }
+        &self.scratch
     }
 }
 
@@ -121,13 +185,16 @@ impl Backend for OutputBackend {
                         "the silent recorder needs a sample rate above 0 Hz".into(),
                     ));
                 }
-                let recorder = Recorder {
-                    sample_rate_hz: s.sample_rate_hz,
-                    block_frames: internal_buffer_size.max(1),
-                    renderer: None,
-                    scratch: Vec::new(),
-                };
+                let recorder = Recorder::new(s.sample_rate_hz, internal_buffer_size);
                 Ok((Self::Silent(Box::new(recorder)), s.sample_rate_hz))
+            }
+            OutputSettings::Test(device) => {
+                if let Some(refusal) = device.refusal() {
+                    return Err(AudioError::Device(refusal.into()));
+                }
+                let rate = SilentSettings::default().sample_rate_hz;
+                let recorder = Recorder::new(rate, internal_buffer_size);
+                Ok((Self::Test(Box::new(recorder), device, false), rate))
             }
         }
     }
@@ -137,7 +204,7 @@ impl Backend for OutputBackend {
             Self::Device(cpal) => cpal
                 .start(renderer)
                 .map_err(|e| AudioError::Device(e.to_string())),
-            Self::Silent(recorder) => {
+            Self::Silent(recorder) | Self::Test(recorder, _, _) => {
                 recorder.renderer = Some(renderer);
                 Ok(())
             }

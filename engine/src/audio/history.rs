@@ -24,6 +24,16 @@ impl<T: Clone> Capped<T> {
         }
     }
 
+    /// An empty history whose first item will be item `start` of everything (as if `start`
+    /// items had been appended and dropped already).
+    pub fn starting_at(keep: usize, start: u64) -> Self {
+        Self {
+            items: Vec::new(),
+            keep,
+            dropped: start,
+        }
+    }
+
     pub fn push(&mut self, item: T) {
         self.extend_from_slice(std::slice::from_ref(&item));
     }

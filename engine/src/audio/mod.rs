@@ -4,7 +4,9 @@
 //! listener at the camera, music with crossfades, and three volume buses (`Master`, `Effects`,
 //! `Music`). Without an output device (CI, headless capture) a silent recorder takes the
 //! device's place: the same kira mixer runs on [`Audio::tick`] and its output is kept, so tests
-//! can check what would have been heard, sample by sample.
+//! can check what would have been heard, sample by sample. A device that is missing at start
+//! or lost mid-run (unplugged) is one message ([`Audio::device_messages`]) and the silent
+//! recorder from then on; [`TestDevice`] stands in for a sound card in those tests.
 //!
 //! Flow: `sounds` decodes files into [`Sound`]s (at load time) → the game calls [`Audio::play`]
 //! / [`Audio::play_music`] and [`sync_emitters`] each step → [`Audio::tick`] advances audio time
@@ -15,6 +17,7 @@
 //! Must not: read level files or know about triggers; they call this API.
 
 mod backend;
+mod device_loss;
 mod emitters;
 mod error;
 mod history;
@@ -23,6 +26,7 @@ mod options;
 mod playback;
 mod riff;
 mod sounds;
+mod test_device;
 
 pub use backend::SilentSettings;
 pub use emitters::{EMITTER_GONE_FADE_SECONDS, SoundEmitter, sync_emitters};
@@ -35,3 +39,4 @@ pub use limits::{
 pub use options::{Bus, PlayOptions, PlayedSound, PlayingId, decibels_of};
 pub use playback::Audio;
 pub use sounds::{Sound, decode_sound, decode_sound_bytes};
+pub use test_device::TestDevice;

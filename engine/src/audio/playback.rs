@@ -54,39 +54,34 @@ struct Voice {
 
 /// Sound output: one-shot and looping sounds, spatial sounds, music, bus volumes.
 pub struct Audio {
-    manager: AudioManager<OutputBackend>,
-    listener: ListenerHandle,
-    effects: TrackHandle,
-    music: TrackHandle,
+    pub(super) manager: AudioManager<OutputBackend>,
+    pub(super) listener: ListenerHandle,
+    pub(super) effects: TrackHandle,
+    pub(super) music: TrackHandle,
     voices: HashMap<PlayingId, Voice>,
-    music_voice: Option<StaticSoundHandle>,
-    next_id: u64,
+    pub(super) music_voice: Option<StaticSoundHandle>,
+    pub(super) next_id: u64,
     /// Game seconds: the sum of all (clamped) `tick` steps.
-    time_seconds: f64,
+    pub(super) time_seconds: f64,
     /// Silent: frames mixed so far.
-    frames_mixed: u64,
-    played: Capped<PlayedSound>,
-    recorded: Capped<[f32; 2]>,
-    volumes: HashMap<Bus, f32>,
+    pub(super) frames_mixed: u64,
+    pub(super) played: Capped<PlayedSound>,
+    pub(super) recorded: Capped<[f32; 2]>,
+    pub(super) volumes: HashMap<Bus, f32>,
     /// The recorder's sample rate; `None` with a device.
-    silent_rate_hz: Option<u32>,
+    pub(super) silent_rate_hz: Option<u32>,
     /// Sounds owned by `SoundEmitter`s (see `emitters.rs`).
     pub(super) emitter_sounds: HashSet<PlayingId>,
+    /// What was opened (reopened once when a device is lost).
+    pub(super) output: OutputSettings,
+    /// A device (real or test) mixes at this rate; `None` for the silent recorder and for the
+    /// real device (its own thread pulls).
+    pub(super) test_rate_hz: Option<u32>,
+    /// What went wrong with the sound device, one message per failure (also logged).
+    pub(super) device_messages: Vec<String>,
 }
 
 impl Audio {
-    /// Tries the default output device; on failure logs one line and falls back to the silent
-    /// recorder. Never fails.
-    pub fn new() -> Self {
-        match Self::with_device() {
-            Ok(audio) => audio,
-            Err(e) => {
-                log::warn!("{e}; sound is off (the silent recorder takes its place)");
-                Self::silent()
-            }
-        }
-    }
-
     /// The default output device, or the error that kept it from opening.
     pub fn with_device() -> Result<Self, AudioError> {
         Self::build(OutputSettings::Device)
@@ -110,8 +105,8 @@ impl Audio {
         })
     }
 
-    fn build(settings: OutputSettings) -> Result<Self, AudioError> {
-        let keep_frames = match settings {
+    pub(super) fn build(settings: OutputSettings) -> Result<Self, AudioError> {
+        let keep_frames = match &settings {
             OutputSettings::Silent(s) => {
                 let frames = s.max_recorded_seconds.max(0.0) * f64::from(s.sample_rate_hz);
                 if frames.is_finite() {
@@ -120,8 +115,9 @@ impl Audio {
                     0
                 }
             }
-            OutputSettings::Device => 0,
+            OutputSettings::Device | OutputSettings::Test(_) => 0,
         };
+        let output = settings.clone();
         let mut manager = AudioManager::<OutputBackend>::new(AudioManagerSettings {
             capacities: Default::default(),
             main_track_builder: Default::default(),
@@ -148,7 +144,11 @@ impl Audio {
             .add_sub_track(TrackBuilder::new().sound_capacity(MUSIC_SOUND_CAPACITY))
             .map_err(setup("music bus"))?;
         let silent_rate_hz = manager.backend_mut().silent_sample_rate_hz();
+        let test_rate_hz = manager.backend_mut().test_sample_rate_hz();
         Ok(Self {
+            output,
+            test_rate_hz,
+            device_messages: Vec::new(),
             silent_rate_hz,
             manager,
             listener,
@@ -194,8 +194,22 @@ impl Audio {
             self.recorded
                 .extend_from_slice(bytemuck::cast_slice::<f32, [f32; 2]>(mixed));
         } else {
-            while let Some(e) = self.manager.backend_mut().pop_device_error() {
-                log::warn!("audio device: {e}");
+            if let Some(rate) = self.test_rate_hz {
+                let target = (self.time_seconds * f64::from(rate)).round() as u64;
+                let frames = target.saturating_sub(self.frames_mixed) as usize;
+                self.frames_mixed = target.max(self.frames_mixed);
+                self.manager.backend_mut().pump(frames);
+            }
+            let mut lost = None;
+            while let Some(problem) = self.manager.backend_mut().pop_device_error() {
+                if problem.lost {
+                    lost.get_or_insert(problem.message);
+                } else {
+                    log::warn!("audio device: {}", problem.message);
+                }
+            }
+            if let Some(problem) = lost {
+                self.lose_device(&problem);
             }
         }
         self.voices
@@ -358,10 +372,15 @@ impl Audio {
     /// reached over [`VOLUME_RAMP_SECONDS`]. Buses multiply: an effect sound is scaled by its
     /// own volume, `Effects` and `Master`.
     pub fn set_volume(&mut self, bus: Bus, linear: f32) {
+        self.set_volume_over(bus, linear, VOLUME_RAMP_SECONDS);
+    }
+
+    /// [`Self::set_volume`] reached over `seconds` (0: from the next mixed block on).
+    pub(super) fn set_volume_over(&mut self, bus: Bus, linear: f32, seconds: f64) {
         let linear = clamp_volume(linear);
         self.volumes.insert(bus, linear);
         let db = decibels_of(linear);
-        let ramp = tween_seconds(VOLUME_RAMP_SECONDS);
+        let ramp = tween_seconds(seconds);
         match bus {
             Bus::Master => self.manager.main_track().set_volume(db, ramp),
             Bus::Effects => self.effects.set_volume(db, ramp),

@@ -8,7 +8,9 @@ pub mod camera;
 pub mod cpu;
 pub mod denoise;
 pub mod denoise_stage;
+mod device_loss;
 pub mod film;
+mod frame_render;
 pub mod gpu;
 pub mod present;
 pub mod scaling;
@@ -16,5 +18,5 @@ pub mod thread;
 pub mod tracer;
 
 pub use camera::{FrameSettings, frame_uniforms};
-pub use thread::{RenderConfig, RenderThread, Rendered, TracerChoice};
+pub use thread::{OpenTracer, RenderConfig, RenderThread, Rendered, TracerChoice};
 pub use tracer::{FilmView, RenderError, RenderStats, Tracer};

@@ -1,6 +1,9 @@
 //! The render thread (Brigade §4.2, Figure 7): receive commit → apply → trace → converge →
 //! present → report.
 //!
+//! When the GPU device is lost mid-run the thread goes on with the CPU tracer, rendering the
+//! frame in hand again, and says so once (`device_loss`, [`Rendered::notice`]).
+//!
 //! Owns: the tracer (and with it the wgpu device for the GPU tracer), the render side's copy of
 //! the flattened scene, the converging state and workload scaling, and in a window the
 //! presenter (the device is then opened for the window's surface and shared with the GPU
@@ -13,15 +16,14 @@
 
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::thread::JoinHandle;
-use std::time::Instant;
 
 use super::denoise::SvgfParams;
 use super::denoise_stage::DenoiseStage;
 use super::film::{Converge, ConvergePolicy, Film};
+use super::frame_render::render_one;
 use super::present::{PresentTarget, Presenter, Screenshot};
 use super::scaling::{Scaling, ScalingGoal, ScalingTarget};
 use super::tracer::{RenderError, RenderStats, Tracer};
-use super::{FrameSettings, frame_uniforms};
 use crate::commit::{Commit, CommitReceiver, CommitSender, commit_channel};
 use crate::scene::RenderScene;
 
@@ -109,6 +111,10 @@ pub struct Rendered {
     pub present_skipped: Option<&'static str>,
     /// What the window showed, when the commit's present request asked for it.
     pub screenshot: Option<Screenshot>,
+    /// Set on the one frame where the render thread changed course, saying why: the GPU device
+    /// was lost and the CPU tracer took over (this frame is already the CPU tracer's), or the
+    /// window's device was lost and the presenter was reopened.
+    pub notice: Option<String>,
 }
 
 /// A running render thread.
@@ -120,9 +126,21 @@ pub struct RenderThread {
 
 type Opened = (Box<dyn Tracer>, Option<Presenter>);
 
+/// Makes the render thread's tracer on the render thread, from the window's device when there
+/// is one and the (empty) scene: a seam for tests that need a tracer of their own, such as one
+/// that loses its device ([`RenderThread::spawn_with_tracer`]).
+pub type OpenTracer = Box<
+    dyn FnOnce(
+            Option<std::sync::Arc<super::gpu::GpuContext>>,
+            &RenderScene,
+        ) -> Result<Box<dyn Tracer>, RenderError>
+        + Send,
+>;
+
 /// The tracer, and in a window the presenter on the same device.
 fn open(
     choice: TracerChoice,
+    custom: Option<OpenTracer>,
     target: Option<&PresentTarget>,
     scene: &RenderScene,
 ) -> Result<Opened, RenderError> {
@@ -133,6 +151,9 @@ fn open(
         }
         None => (None, None),
     };
+    if let Some(custom) = custom {
+        return Ok((custom(context, scene)?, presenter));
+    }
     let tracer: Box<dyn Tracer> = match super::auto::resolve(choice, context.as_deref()) {
         TracerChoice::Cpu | TracerChoice::Auto => Box::new(super::cpu::CpuTracer::new()),
         TracerChoice::Gpu => {
@@ -149,85 +170,15 @@ fn open(
     Ok((tracer, presenter))
 }
 
-#[allow(clippy::too_many_arguments)] // the render thread's state, one borrow each
-fn render_one(
-    commit: Commit,
-    output: (u32, u32),
-    config: &RenderConfig,
-    scene: &mut RenderScene,
-    tracer: &mut dyn Tracer,
-    converge: &mut Converge,
-    scaling: &mut Scaling,
-    mut denoiser: Option<&mut DenoiseStage>,
-) -> Result<Rendered, RenderError> {
-    let started = Instant::now();
-    scene.apply(&commit.writes, &commit.header);
-    tracer.update(scene, &commit.writes)?;
-    let apply_seconds = started.elapsed().as_secs_f64();
-    let work = scaling.current();
-    let (width, height) = work.film_size(output.0, output.1);
-    if scaling.resized() {
-        converge.reset();
-    }
-    // The denoiser reprojects its history per pixel: camera motion need not restart it.
-    let blend = if denoiser.is_some() {
-        converge.blend_reprojected(&commit.motion)
-    } else {
-        converge.blend(&commit.motion)
-    };
-    let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &commit.render);
-    settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
-    // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.
-    settings.film_blend = if denoiser.is_some() { 1.0 } else { blend };
-    settings.roulette_scale = work.roulette_scale;
-    let uniforms = frame_uniforms(
-        &commit.camera,
-        commit.sun.as_ref(),
-        &commit.sky,
-        &settings,
-        &scene.header(),
-    );
-    let started = Instant::now();
-    let stats = tracer.render(scene, &uniforms)?;
-    let render_seconds = started.elapsed().as_secs_f64();
-    let denoise_seconds = match denoiser.as_deref_mut() {
-        Some(d) => d.run(scene, &uniforms, tracer, blend)?,
-        None => 0.0,
-    };
-    scaling.observe(render_seconds + apply_seconds + denoise_seconds);
-    let film = match (commit.capture, denoiser) {
-        (false, _) => None,
-        (true, Some(d)) => Some(d.film().clone()),
-        (true, None) => Some(tracer.film()?),
-    };
-    Ok(Rendered {
-        frame: commit.frame,
-        tracer: tracer.name(),
-        stats,
-        apply_seconds,
-        render_seconds,
-        denoise_seconds,
-        blend,
-        spp: work.spp,
-        roulette_scale: work.roulette_scale,
-        film_size: (width, height),
-        commit_bytes: commit.bytes(),
-        lights: scene.lights.count,
-        film,
-        present_seconds: 0.0,
-        present_skipped: None,
-        screenshot: None,
-    })
-}
-
 fn run(
     config: RenderConfig,
     target: Option<PresentTarget>,
+    custom: Option<OpenTracer>,
     commits: CommitReceiver,
     results: Sender<Result<Rendered, RenderError>>,
 ) {
     let mut scene = RenderScene::empty();
-    let (mut tracer, mut presenter) = match open(config.tracer, target.as_ref(), &scene) {
+    let (mut tracer, mut presenter) = match open(config.tracer, custom, target.as_ref(), &scene) {
         Ok(opened) => opened,
         Err(e) => {
             let _ = results.send(Err(e));
@@ -262,19 +213,46 @@ fn run(
             output,
             &config,
             &mut scene,
-            tracer.as_mut(),
+            &mut tracer,
             &mut converge,
             &mut scaling,
             denoiser.as_mut(),
         );
-        if let (Ok(rendered), Some(presenter), Some(request)) =
-            (&mut outcome, presenter.as_mut(), request.as_mut())
-        {
+        if let (Ok(rendered), Some(shown), Some(request), Some(target)) = (
+            &mut outcome,
+            presenter.as_mut(),
+            request.as_mut(),
+            target.as_ref(),
+        ) {
             let view = match &denoiser {
                 Some(d) => d.film_view(),
                 None => tracer.film_view(),
             };
-            match presenter.present(view, request) {
+            let mut presented = shown.present(view, request);
+            if presented.is_err()
+                && let Some(reason) = shown.device_lost()
+            {
+                // The window's device is gone: open the window on a device again (the tracer,
+                // if it was on that device, has already moved to the CPU) and show the frame.
+                match Presenter::open(target) {
+                    Ok((reopened, _context)) => {
+                        let message = format!(
+                            "the window's GPU device was lost ({reason}); the window was \
+                             opened again on a new device"
+                        );
+                        log::warn!("{message}");
+                        rendered.notice.get_or_insert(message);
+                        *shown = reopened;
+                        let view = match &denoiser {
+                            Some(d) => d.film_view(),
+                            None => tracer.film_view(),
+                        };
+                        presented = shown.present(view, request);
+                    }
+                    Err(e) => presented = Err(e),
+                }
+            }
+            match presented {
                 Ok(presented) => {
                     rendered.present_seconds = presented.seconds;
                     rendered.present_skipped = presented.skipped;
@@ -306,12 +284,27 @@ impl RenderThread {
         Self::start(config, Some(target))
     }
 
+    /// Starts the render thread, headless, on the tracer `open` makes (on the render thread;
+    /// `config.tracer` is ignored). For tests that need a tracer of their own, such as one
+    /// whose device is lost part-way through.
+    pub fn spawn_with_tracer(config: RenderConfig, open: OpenTracer) -> Result<Self, RenderError> {
+        Self::start_with(config, None, Some(open))
+    }
+
     fn start(config: RenderConfig, target: Option<PresentTarget>) -> Result<Self, RenderError> {
+        Self::start_with(config, target, None)
+    }
+
+    fn start_with(
+        config: RenderConfig,
+        target: Option<PresentTarget>,
+        custom: Option<OpenTracer>,
+    ) -> Result<Self, RenderError> {
         let (sender, receiver) = commit_channel();
         let (result_tx, results) = channel();
         let handle = std::thread::Builder::new()
             .name("candela-render".into())
-            .spawn(move || run(config, target, receiver, result_tx))
+            .spawn(move || run(config, target, custom, receiver, result_tx))
             .map_err(|e| RenderError::Device(format!("cannot start the render thread: {e}")))?;
         Ok(Self {
             sender: Some(sender),

@@ -36,6 +36,10 @@ pub enum RenderError {
     NoAdapter,
     #[error("GPU device error: {0}")]
     Device(String),
+    /// The device went away under the tracer (driver reset, GPU unplugged or hung); nothing on
+    /// it can be used again. The render thread goes on with the CPU tracer.
+    #[error("the GPU device was lost: {0}")]
+    DeviceLost(String),
     #[error("the scene does not fit the GPU: {0}")]
     TooLarge(String),
     #[error("image size {width}×{height} is not allowed: {reason}")]
@@ -84,4 +88,9 @@ pub trait Tracer {
     fn film_view(&self) -> Option<FilmView<'_>>;
     /// Forgets every accumulated sample.
     fn clear(&mut self);
+    /// Why the device under this tracer was lost, if it was (`None` for tracers without one).
+    /// An error from a tracer whose device is lost is treated as [`RenderError::DeviceLost`].
+    fn device_lost(&self) -> Option<String> {
+        None
+    }
 }

@@ -174,11 +174,13 @@ impl CostTrace {
         Self::parse(&path.display().to_string(), &text)
     }
 
-    /// Writes a cost file.
+    /// Writes a cost file (atomically: the previous file stays whole if the write fails).
     pub fn write(&self, path: &Path) -> Result<(), BalanceError> {
-        std::fs::write(path, self.to_csv()).map_err(|source| BalanceError::Io {
-            path: path.display().to_string(),
-            source,
+        crate::assets::atomic_file::write_atomic(path, self.to_csv().as_bytes()).map_err(|e| {
+            BalanceError::Io {
+                path: path.display().to_string(),
+                source: e.source,
+            }
         })
     }
 

@@ -239,4 +239,8 @@ impl Tracer for PoolTracer {
             gpu.clear();
         }
     }
+
+    fn device_lost(&self) -> Option<String> {
+        self.gpu.as_ref().and_then(|gpu| gpu.device_lost())
+    }
 }

@@ -3,11 +3,13 @@
 //! Owns: creating the instance, adapter and device — headless, or for a window's surface (the
 //! adapter must be able to present to it) — with the adapter's own limits (wgpu's defaults are
 //! lower than what lavapipe offers: 128 MiB per storage binding), and routing uncaptured wgpu
-//! errors to the log instead of a panic. Without a GPU, Mesa's lavapipe (software Vulkan) runs
+//! errors to the log instead of a panic, and noticing when the device is lost (a driver reset,
+//! an unplugged or hung GPU: [`GpuContext::lost`]; [`GpuContext::destroy_device`] loses it on
+//! purpose, for fault tests). Without a GPU, Mesa's lavapipe (software Vulkan) runs
 //! the same WGSL on the CPU.
 //! Must not: know scenes or shaders.
 
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 
 use crate::render::tracer::RenderError;
 
@@ -18,6 +20,8 @@ pub struct GpuContext {
     pub queue: wgpu::Queue,
     pub info: wgpu::AdapterInfo,
     pub limits: wgpu::Limits,
+    /// Why the device was lost, once wgpu has said so (its device-lost callback).
+    lost: Arc<Mutex<Option<String>>>,
 }
 
 impl GpuContext {
@@ -73,6 +77,18 @@ impl GpuContext {
         device.on_uncaptured_error(Arc::new(|error: wgpu::Error| {
             log::error!("wgpu: {error}");
         }));
+        let lost = Arc::new(Mutex::new(None));
+        let lost_in_callback = Arc::clone(&lost);
+        device.set_device_lost_callback(move |reason, message| {
+            let text = if message.is_empty() {
+                format!("{reason:?}")
+            } else {
+                format!("{reason:?}: {message}")
+            };
+            if let Ok(mut lost) = lost_in_callback.lock() {
+                lost.get_or_insert(text);
+            }
+        });
         log::info!(
             "GPU adapter: {} ({:?}, {:?}, driver {} {})",
             info.name,
@@ -87,7 +103,31 @@ impl GpuContext {
             queue,
             info,
             limits,
+            lost,
         }))
+    }
+
+    /// Why the device was lost, if it was (wgpu reports it from any later call that touches
+    /// the device, a `poll` at the latest). Once lost, a device never comes back.
+    pub fn lost(&self) -> Option<String> {
+        self.lost.lock().ok().and_then(|lost| lost.clone())
+    }
+
+    /// `Err(RenderError::DeviceLost)` once the device is lost.
+    pub fn check_alive(&self) -> Result<(), RenderError> {
+        match self.lost() {
+            Some(reason) => Err(RenderError::DeviceLost(reason)),
+            None => Ok(()),
+        }
+    }
+
+    /// Fault injection: destroys the device, which wgpu then treats exactly as a lost device
+    /// (every later use fails, the device-lost callback runs). For tests of what the render
+    /// thread does when the GPU goes away mid-run.
+    pub fn destroy_device(&self) {
+        self.device.destroy();
+        // Let wgpu run the device-lost callback now rather than at the next use.
+        let _ = self.device.poll(wgpu::PollType::Poll);
     }
 
     /// "name (type, backend)" for reports.

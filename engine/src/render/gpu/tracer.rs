@@ -254,6 +254,22 @@ impl GpuTracer {
         }
     }
 
+    /// The device this tracer runs on (shared with a window's presenter).
+    pub fn context(&self) -> &Arc<GpuContext> {
+        &self.context
+    }
+
+    /// `result`, except that any error once the device is lost is [`RenderError::DeviceLost`]
+    /// (a lost device makes every call fail, with whatever message the failing call has).
+    pub(crate) fn lost_or<T>(&self, result: Result<T, RenderError>) -> Result<T, RenderError> {
+        match (result, self.context.lost()) {
+            (Err(RenderError::DeviceLost(reason)), _) | (Err(_), Some(reason)) => {
+                Err(RenderError::DeviceLost(reason))
+            }
+            (result, _) => result,
+        }
+    }
+
     pub(super) fn film_buffers_ref(&self) -> Option<&FilmBuffers> {
         self.film.as_ref()
     }
@@ -294,9 +310,12 @@ impl Tracer for GpuTracer {
         _scene: &RenderScene,
         u: &GpuFrameUniforms,
     ) -> Result<RenderStats, RenderError> {
+        self.context.check_alive()?;
         let all: Vec<u32> = (0..crate::render::balance::unit_count(u.height) as u32).collect();
-        let started = self.submit_units(u, &all)?;
-        self.finish(u, started)
+        let result = self
+            .submit_units(u, &all)
+            .and_then(|started| self.finish(u, started));
+        self.lost_or(result)
     }
 
     fn update(
@@ -304,14 +323,17 @@ impl Tracer for GpuTracer {
         scene: &RenderScene,
         writes: &[crate::scene::SceneWrite],
     ) -> Result<(), RenderError> {
-        self.upload(scene, writes)
+        self.context.check_alive()?;
+        let result = self.upload(scene, writes);
+        self.lost_or(result)
     }
 
     fn film(&mut self) -> Result<Film, RenderError> {
+        self.context.check_alive()?;
         let Some(film) = self.film.as_ref() else {
             return Ok(Film::new(0, 0));
         };
-        let bytes = self.read_buffer(&film.film)?;
+        let bytes = self.lost_or(self.read_buffer(&film.film))?;
         let texels: &[[f32; 4]] = bytemuck::cast_slice(&bytes);
         Ok(Film {
             width: film.width,
@@ -339,5 +361,9 @@ impl Tracer for GpuTracer {
             self.context.queue.submit([encoder.finish()]);
         }
         self.samples = 0;
+    }
+
+    fn device_lost(&self) -> Option<String> {
+        self.context.lost()
     }
 }

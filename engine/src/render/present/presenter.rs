@@ -67,6 +67,11 @@ impl Presenter {
         ))
     }
 
+    /// Why the window's device was lost, if it was (the presenter must then be reopened).
+    pub fn device_lost(&self) -> Option<String> {
+        self.composer.context().lost()
+    }
+
     /// Shows `film` as `request` asks.
     pub fn present(
         &mut self,
