@@ -58,6 +58,9 @@ pub struct RenderConfig {
     /// the denoiser's history accumulates them. Off for captures and references (biased), on
     /// in games.
     pub denoise: bool,
+    /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
+    /// level's; `capture --light-sampling`).
+    pub light_sampling: Option<crate::assets::LightSampling>,
 }
 
 impl RenderConfig {
@@ -73,6 +76,7 @@ impl RenderConfig {
             converge: ConvergePolicy::default(),
             scaling: None,
             denoise: false,
+            light_sampling: None,
         }
     }
 }
@@ -142,7 +146,9 @@ fn open(
             };
             Box::new(super::gpu::GpuTracer::new(context, scene)?)
         }
-        TracerChoice::Pool(spec) => Box::new(super::balance::PoolTracer::new(spec, context, scene)?),
+        TracerChoice::Pool(spec) => {
+            Box::new(super::balance::PoolTracer::new(spec, context, scene)?)
+        }
     };
     Ok((tracer, presenter))
 }
@@ -168,7 +174,11 @@ fn render_one(
         converge.reset();
     }
     let blend = converge.blend(&commit.motion);
-    let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &commit.render);
+    let mut render = commit.render;
+    if let Some(sampling) = config.light_sampling {
+        render.light_sampling = sampling;
+    }
+    let mut settings = FrameSettings::new(width, height, work.spp, config.seed, &render);
     settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
     // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.
     settings.film_blend = if denoiser.is_some() { 1.0 } else { blend };
