@@ -134,6 +134,14 @@ impl LightBounds {
 /// The smallest cone around both cones (axis, cos half-angle); PBRT-v4's
 /// `Union(DirectionCone, DirectionCone)`. The whole sphere is (any axis, −1).
 pub fn cone_union(a: (Vec3, f32), b: (Vec3, f32)) -> (Vec3, f32) {
+    // Fast paths (no trigonometry): equal cones (the triangles of one flat panel), or one
+    // already the whole sphere.
+    if a == b || a.1 <= -1.0 {
+        return a;
+    }
+    if b.1 <= -1.0 {
+        return b;
+    }
     let theta_a = a.1.clamp(-1.0, 1.0).acos();
     let theta_b = b.1.clamp(-1.0, 1.0).acos();
     let theta_d = a.0.dot(b.0).clamp(-1.0, 1.0).acos();

@@ -86,8 +86,10 @@ pub struct CaptureArgs {
     pub denoise: bool,
     /// How lights are picked: `power` (one table by power) or `tree` (the light tree, by
     /// importance from each point) [default: the level's `render.light_sampling`].
-    #[arg(long, value_parser = clap::builder::PossibleValuesParser::new(["power", "tree"])
-        .map(|s| if s == "tree" { LightSampling::Tree } else { LightSampling::Power }))]
+    #[arg(long, value_parser = clap::builder::TypedValueParser::map(
+        clap::builder::PossibleValuesParser::new(["power", "tree"]),
+        |s: String| if s == "tree" { LightSampling::Tree } else { LightSampling::Power },
+    ))]
     pub light_sampling: Option<LightSampling>,
 }
 
