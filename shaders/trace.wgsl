@@ -1,7 +1,8 @@
 // The path tracing pass: one invocation per pixel traces `frame.spp` samples and adds their
 // radiance to the film. Twin of engine/src/render/cpu/integrator.rs (same algorithm, same RNG
 // draws in the same order). Composed after shared/{types,bindings,rng,sampling,microfacet,
-// bsdf,texture,traverse,surface}.wgsl by engine/src/render/gpu/shaders.rs.
+// bsdf,texture,traverse,surface}.wgsl and shared/light_tree.wgsl by
+// engine/src/render/gpu/shaders.rs.
 
 const FAR: f32 = 3.0e38;
 const NEE_RANDOMS: u32 = 6u;
@@ -92,9 +93,9 @@ fn light_emission(instance: u32, triangle: u32, bary: vec2<f32>) -> LightEmissio
     return LightEmission(emission, (m.flags & MATERIAL_FLAG_TWO_SIDED_EMISSION) != 0u);
 }
 
-// Direct light at a non-delta surface: one emissive triangle picked by power and the sun, each
-// weighted against BSDF sampling. Returns the shadow rays to trace; `throughput` is folded into
-// their contributions.
+// Direct light at a non-delta surface: one emissive triangle (picked by power, uniformly or by
+// the light tree) and the sun, each weighted against BSDF sampling. Returns the shadow rays to
+// trace; `throughput` is folded into their contributions.
 fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, throughput: vec3<f32>, rng: ptr<function, Rng>) -> ShadowRays {
     var xi: array<f32, 6>;
     for (var i = 0u; i < NEE_RANDOMS; i++) {
@@ -105,13 +106,25 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
     let nee = (frame.method & METHOD_NEE) != 0u;
     let mis = (frame.method & METHOD_MIS) != 0u;
     let by_power = (frame.method & METHOD_LIGHTS_BY_POWER) != 0u;
+    var picked = LightPick(false, 0u, 0.0);
     if (nee && frame.light_count > 0u && frame.light_weight_total > 0.0) {
         let n_lights = frame.light_count;
-        let pick = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
-        var light = lights[pick];
-        if (by_power && xi[1] >= light.alias_threshold) {
-            light = lights[light.alias_index];
+        if ((frame.method & METHOD_LIGHT_TREE) != 0u) {
+            picked = light_tree_sample(n_lights, x, f.n, xi[0]);
+        } else {
+            var index = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
+            if (by_power && xi[1] >= lights[index].alias_threshold) {
+                index = lights[index].alias_index;
+            }
+            var chance = 1.0 / f32(n_lights);
+            if (by_power) {
+                chance = lights[index].weight / frame.light_weight_total;
+            }
+            picked = LightPick(true, index, chance);
         }
+    }
+    if (picked.found && picked.light < arrayLength(&lights)) {
+        let light = lights[picked.light];
         let bary = uniform_triangle(vec2<f32>(xi[2], xi[3]));
         let p = light.p0 + (light.p1 - light.p0) * bary.x + (light.p2 - light.p0) * bary.y;
         let cr = cross(light.p1 - light.p0, light.p2 - light.p0);
@@ -128,11 +141,7 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
             if (cos_light > 0.0 && any(emitter.radiance != vec3<f32>(0.0))) {
                 let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
-                var select = 1.0 / f32(n_lights);
-                if (by_power) {
-                    select = light.weight / frame.light_weight_total;
-                }
-                let light_pdf = select * dist2 / (cos_light * area);
+                let light_pdf = picked.pmf * dist2 / (cos_light * area);
                 if (any(e.value != vec3<f32>(0.0))) {
                     var w = 1.0;
                     if (mis) {
@@ -209,6 +218,9 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var result = vec3<f32>(0.0);
     var last_pdf = 0.0;
     var last_delta = true;
+    // The shading point and normal the direction was sampled at (the light tree's PMF there).
+    var last_position = vec3<f32>(0.0);
+    var last_normal = vec3<f32>(0.0);
     var bounce = 0u;
     var shadows: ShadowRays;
     shadows.count = 0u;
@@ -258,13 +270,16 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             var w = 1.0;
             if (!last_delta && frame.light_count > 0u) {
                 let cos_light = abs(dot(wo, surface.geometric_normal));
-                var select = 0.0;
-                if ((frame.method & METHOD_LIGHTS_BY_POWER) != 0u) {
-                    select = materials[surface.material].emission.w / frame.light_weight_total;
+                var chance = 0.0;
+                if ((frame.method & METHOD_LIGHT_TREE) != 0u) {
+                    let leaf = light_leaf_of(hit.instance, hit.triangle);
+                    chance = light_tree_pmf(leaf, last_position, last_normal) / hit_area(hit);
+                } else if ((frame.method & METHOD_LIGHTS_BY_POWER) != 0u) {
+                    chance = materials[surface.material].emission.w / frame.light_weight_total;
                 } else {
-                    select = 1.0 / (f32(frame.light_count) * hit_area(hit));
+                    chance = 1.0 / (f32(frame.light_count) * hit_area(hit));
                 }
-                let light_pdf = select * hit.t * hit.t / max(cos_light, 1e-30);
+                let light_pdf = chance * hit.t * hit.t / max(cos_light, 1e-30);
                 w = bsdf_hit_weight(false, last_pdf, light_pdf);
             }
             result += throughput * shading.emission * w;
@@ -315,6 +330,8 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             } else {
                 last_pdf = s.pdf;
                 last_delta = s.delta;
+                last_position = surface.position;
+                last_normal = ns;
                 next_ray = Ray(offset_origin(surface.position, select(ng, -ng, below)), 0.0, wi, FAR);
                 count_bounce += 1u;
                 let xr = rng_next(&rng);

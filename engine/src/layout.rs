@@ -269,6 +269,42 @@ pub struct GpuLight {
 }
 const _: () = assert!(size_of::<GpuLight>() == 64);
 
+/// One node of the light tree (PBRT-v4's BVH light sampler; built by `scene::light_tree`,
+/// sampled by `render::cpu::light_tree` and its twin `shaders/shared/light_tree.wgsl`): the
+/// render-space box, power bound and orientation cone of the emissive triangles below it.
+/// Interior nodes: the first child is the next node, the second is `child`; leaves
+/// ([`LIGHT_NODE_LEAF`]): `child` is the light's index in the light table. `parent` is
+/// [`INVALID`] at the root (index 0). 64 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
+pub struct GpuLightNode {
+    /// Render-space box of the emitters below, metres.
+    pub bounds_min: [f32; 3],
+    /// Power φ of the emitters below (area × emission weight, twice for two-sided emitters;
+    /// relative units, only ratios matter).
+    pub phi: f32,
+    pub bounds_max: [f32; 3],
+    /// cos θ_o: every emitter's normal lies within θ_o of `axis`.
+    pub cos_theta_o: f32,
+    /// Unit axis of the normal cone.
+    pub axis: [f32; 3],
+    /// cos θ_e: every emitter emits within θ_e of its normal (0, θ_e = π/2, for area lights).
+    pub cos_theta_e: f32,
+    /// Second child (interior) or light index (leaf).
+    pub child: u32,
+    pub parent: u32,
+    /// [`LIGHT_NODE_LEAF`] | [`LIGHT_NODE_TWO_SIDED`].
+    pub flags: u32,
+    pub _padding: u32,
+}
+const _: () = assert!(size_of::<GpuLightNode>() == 64);
+
+/// `GpuLightNode::flags`: a leaf (one light).
+pub const LIGHT_NODE_LEAF: u32 = 1;
+/// `GpuLightNode::flags`: some emitter below emits from both faces (the cone then bounds
+/// ±normal: the importance uses |cos θ_w|).
+pub const LIGHT_NODE_TWO_SIDED: u32 = 2;
+
 /// `GpuFrameUniforms::method`: sample lights explicitly (next-event estimation).
 pub const METHOD_NEE: u32 = 1;
 /// `GpuFrameUniforms::method`: weight light and BSDF samples by multiple importance sampling
@@ -276,6 +312,10 @@ pub const METHOD_NEE: u32 = 1;
 pub const METHOD_MIS: u32 = 2;
 /// `GpuFrameUniforms::method`: pick lights in proportion to power (otherwise uniformly).
 pub const METHOD_LIGHTS_BY_POWER: u32 = 4;
+/// `GpuFrameUniforms::method`: pick lights by the light tree (importance from each shading
+/// point, PBRT-v4's `LightBounds::Importance`); takes precedence over
+/// [`METHOD_LIGHTS_BY_POWER`].
+pub const METHOD_LIGHT_TREE: u32 = 8;
 /// The default estimator.
 pub const METHOD_DEFAULT: u32 = METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER;
 

@@ -18,3 +18,8 @@
 @group(0) @binding(11) var<storage, read_write> counters: array<atomic<u32>, 4>;
 // The work units this pass renders: their count, then each unit's index (UNIT_ROWS rows each).
 @group(0) @binding(12) var<storage, read> work_units: array<u32>;
+// The light tree (engine/src/scene/light_tree.rs): its nodes, root first.
+@group(0) @binding(13) var<storage, read> light_nodes: array<GpuLightNode>;
+// The hit lookup: [0] instances covered, [1 + i] instance i's table (INVALID: none), then per
+// mesh-local triangle its leaf node or INVALID.
+@group(0) @binding(14) var<storage, read> light_lookup: array<u32>;

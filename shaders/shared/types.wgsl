@@ -28,6 +28,10 @@ const TEXTURE_FLAG_NEAREST: u32 = 16u;
 const METHOD_NEE: u32 = 1u;
 const METHOD_MIS: u32 = 2u;
 const METHOD_LIGHTS_BY_POWER: u32 = 4u;
+const METHOD_LIGHT_TREE: u32 = 8u;
+
+const LIGHT_NODE_LEAF: u32 = 1u;
+const LIGHT_NODE_TWO_SIDED: u32 = 2u;
 
 const SKY_CONSTANT: u32 = 0u;
 const SKY_GRADIENT: u32 = 1u;
@@ -118,6 +122,21 @@ struct GpuLight {
     alias_threshold: f32,
     alias_index: u32,
     _padding: vec2<u32>,
+}
+
+// One node of the light tree: box, power and normal cone of the emitters below. Interior: the
+// first child is the next node, the second `child`; leaf: `child` is the light index.
+struct GpuLightNode {
+    bounds_min: vec3<f32>,
+    phi: f32,
+    bounds_max: vec3<f32>,
+    cos_theta_o: f32,
+    axis: vec3<f32>,
+    cos_theta_e: f32,
+    child: u32,
+    parent: u32,
+    flags: u32,
+    _padding: u32,
 }
 
 struct GpuFrameUniforms {

@@ -197,3 +197,30 @@ fn cpu_every_method_is_unbiased() {
         check_bias(&format!("cornell_box/Cpu 64×64 {name}"), &b, &r);
     }
 }
+
+/// The light tree (`LightSampling::Tree`, `METHOD_LIGHT_TREE`) is unbiased on both references:
+/// the same bias and rate checks on the CPU tracer.
+fn accuracy_light_tree(scene: &str, size: u32, spp: u32) {
+    use candela::layout::{METHOD_DEFAULT, METHOD_LIGHT_TREE};
+    let label = format!("{scene}/Cpu {size}×{size} light tree");
+    let r = reference(scene, size);
+    let b = render_method(
+        scene,
+        Which::Cpu,
+        size,
+        spp,
+        METHOD_DEFAULT | METHOD_LIGHT_TREE,
+    );
+    check_bias(&label, &b, &r);
+    check_rate(&label, &b, &r);
+}
+
+#[test]
+fn cpu_cornell_box_light_tree() {
+    accuracy_light_tree("cornell_box", 128, 32);
+}
+
+#[test]
+fn cpu_cornell_mirror_glass_light_tree() {
+    accuracy_light_tree("cornell_mirror_glass", 128, 64);
+}

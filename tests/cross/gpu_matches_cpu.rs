@@ -16,12 +16,18 @@
 //!   difference would be √2 times that noise.
 
 use candela::assets::{AssetRoot, SceneDesc, load_scene};
-use candela_tests::{Which, external, region_stat, render_batches, repo};
+use candela_tests::{Which, external, region_stat, render_batches_with, repo};
 
 /// Compares the tracers on `desc`; returns how many region channels had zero variance.
 fn compare(label: &str, desc: &SceneDesc, size: u32, spp: u32) -> usize {
-    let cpu = render_batches(Which::Cpu, desc, size, size, spp, 4, 5).expect("cpu render");
-    let gpu = render_batches(Which::Gpu, desc, size, size, spp, 4, 5).expect("gpu render");
+    compare_method(label, desc, size, spp, candela::layout::METHOD_DEFAULT)
+}
+
+/// [`compare`] with estimator `method` (`layout::METHOD_*` bits).
+fn compare_method(label: &str, desc: &SceneDesc, size: u32, spp: u32, method: u32) -> usize {
+    let render = |which| render_batches_with(which, desc, size, size, spp, 4, 5, method);
+    let cpu = render(Which::Cpu).expect("cpu render");
+    let gpu = render(Which::Gpu).expect("gpu render");
     let (cm, cv) = (cpu.mean(), cpu.variance_of_mean());
     let (gm, gv) = (gpu.mean(), gpu.variance_of_mean());
     let cell = size / 4;
@@ -136,4 +142,21 @@ fn textured_helmet_in_sunlight_agrees() {
         ground: [0.15, 0.12, 0.1],
     };
     let _ = compare("DamagedHelmet", &desc, 48, 4);
+}
+
+/// The light tree (`METHOD_LIGHT_TREE`: sampling, and its PMF for MIS at emitters hit by BSDF
+/// rays) on the many-room scene of 4,096 emitters, small.
+#[test]
+fn light_tree_agrees() {
+    use candela::layout::{METHOD_DEFAULT, METHOD_LIGHT_TREE};
+    let dir = repo().join("assets/test_scenes/many_lights");
+    let root = AssetRoot::new(&dir).expect("root");
+    let desc = load_scene(&dir.join("rooms.ron"), &root).expect("level");
+    let _ = compare_method(
+        "many rooms, light tree",
+        &desc,
+        32,
+        4,
+        METHOD_DEFAULT | METHOD_LIGHT_TREE,
+    );
 }

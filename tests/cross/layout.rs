@@ -92,6 +92,18 @@ fn rust_layouts() -> Vec<RustLayout> {
             alias_index,
             _padding
         }),
+        rust_layout!(GpuLightNode {
+            bounds_min,
+            phi,
+            bounds_max,
+            cos_theta_o,
+            axis,
+            cos_theta_e,
+            child,
+            parent,
+            flags,
+            _padding
+        }),
         rust_layout!(GpuFrameUniforms {
             camera_position,
             lens_radius,
@@ -221,6 +233,12 @@ fn rust_and_wgsl_constants_agree() {
         ("MAX_LEAF_BLOCKS", MAX_LEAF_BLOCKS),
         ("INSTANCE_FLAG_IDENTITY", INSTANCE_FLAG_IDENTITY),
         ("UNIT_ROWS", UNIT_ROWS),
+        ("METHOD_NEE", METHOD_NEE),
+        ("METHOD_MIS", METHOD_MIS),
+        ("METHOD_LIGHTS_BY_POWER", METHOD_LIGHTS_BY_POWER),
+        ("METHOD_LIGHT_TREE", METHOD_LIGHT_TREE),
+        ("LIGHT_NODE_LEAF", LIGHT_NODE_LEAF),
+        ("LIGHT_NODE_TWO_SIDED", LIGHT_NODE_TWO_SIDED),
     ] {
         assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
     }

@@ -16,6 +16,7 @@ mod furnace;
 mod gpu_matches_cpu;
 mod headless;
 mod layout;
+mod many_lights;
 mod present;
 mod reflect_kit;
 mod reflect_record;

@@ -117,8 +117,9 @@ pub fn render_scene_batches(
     )
 }
 
+/// [`render_scene_batches`] with an estimator other than the default (`layout::METHOD_*` bits).
 #[allow(clippy::too_many_arguments)]
-fn render_scene_batches_with(
+pub fn render_scene_batches_with(
     which: Which,
     desc: &SceneDesc,
     scene: &RenderScene,

@@ -370,8 +370,17 @@ impl Upkeep {
                 first: 0,
                 data: table.lights.clone(),
             });
+            self.push(SceneWrite::LightNodes {
+                first: 0,
+                data: table.tree.nodes.clone(),
+            });
+            self.push(SceneWrite::LightLookup {
+                first: 0,
+                data: table.tree.lookup.clone(),
+            });
             self.scene.lights = LightTable {
                 lights: std::mem::take(&mut self.scene.lights.lights),
+                tree: std::mem::take(&mut self.scene.lights.tree),
                 ..table
             };
             self.stats.light_table_builds += 1;

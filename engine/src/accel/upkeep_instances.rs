@@ -140,6 +140,10 @@ impl Upkeep {
             if index != last {
                 let moved = self.scene.instances[last];
                 let (owner, slot) = self.rows[last];
+                if self.meshes[slot].emissive {
+                    // Its lights name it by row: the table (and the tree's lookup) must follow.
+                    self.lights_dirty = true;
+                }
                 self.rows[index] = (owner, slot);
                 if let Some((owner_rows, _)) = self.entities.get_mut(&owner) {
                     for r in owner_rows.iter_mut().filter(|r| **r as usize == last) {

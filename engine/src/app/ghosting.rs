@@ -140,6 +140,7 @@ impl GhostSetup {
             render: RenderSettings {
                 max_bounces: 2,
                 roulette_start: 2,
+                ..Default::default()
             },
             default_camera: self.camera(),
         }
@@ -180,6 +181,7 @@ fn run_policy(
         converge: policy,
         scaling: None,
         denoise: false,
+        light_sampling: None,
     };
     let mut engine = Engine::new(config, setup.environment())?;
     let backdrop_material = Material {

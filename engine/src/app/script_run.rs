@@ -58,6 +58,8 @@ pub struct RunOptions {
     pub size: Option<(u32, u32)>,
     /// Replaces the script's samples per pixel per frame.
     pub spp: Option<u32>,
+    /// Replaces the level's light sampling.
+    pub light_sampling: Option<crate::assets::LightSampling>,
 }
 
 /// Where one frame's time went (seconds) and what its commit carried.
@@ -194,6 +196,7 @@ pub fn run_script(
         converge: ConvergePolicy::default(),
         scaling: None,
         denoise: false,
+        light_sampling: options.light_sampling,
     };
     let render_error = |source| ScriptError::Render {
         path: script.source.clone(),

@@ -246,6 +246,9 @@ pub struct RenderSettings {
     pub max_bounces: u32,
     /// Scattering events before Russian roulette may end a path.
     pub roulette_start: u32,
+    /// How next-event estimation picks an emissive triangle (`light_sampling: Tree`).
+    #[serde(skip_serializing_if = "LightSampling::is_power")]
+    pub light_sampling: LightSampling,
 }
 
 impl Default for RenderSettings {
@@ -253,6 +256,34 @@ impl Default for RenderSettings {
         Self {
             max_bounces: 7,
             roulette_start: 4,
+            light_sampling: LightSampling::Power,
+        }
+    }
+}
+
+/// How next-event estimation picks the emissive triangle it samples. Both are unbiased; they
+/// differ in noise (see `docs/ACCURACY.md`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+pub enum LightSampling {
+    /// In proportion to power (area × emitted luminance), from one table for the whole scene.
+    #[default]
+    Power,
+    /// By importance from the shading point: a walk down the light tree (PBRT-v4's BVH light
+    /// sampler), favouring near, bright emitters facing the point.
+    Tree,
+}
+
+impl LightSampling {
+    /// True for [`LightSampling::Power`] (the default, left out when levels are written).
+    pub fn is_power(&self) -> bool {
+        *self == LightSampling::Power
+    }
+
+    /// The name on command lines and in reports (`power`, `tree`).
+    pub fn name(&self) -> &'static str {
+        match self {
+            LightSampling::Power => "power",
+            LightSampling::Tree => "tree",
         }
     }
 }

@@ -41,8 +41,8 @@ pub use clip_desc::{
 };
 mod level;
 pub use level::{
-    CameraDesc, GridEntry, InstanceEntry, Level, LevelMaterial, ModelEntry, RenderSettings,
-    SkyDesc, SunDesc, TransformDesc, WaveDesc,
+    CameraDesc, GridEntry, InstanceEntry, Level, LevelMaterial, LightSampling, ModelEntry,
+    RenderSettings, SkyDesc, SunDesc, TransformDesc, WaveDesc,
 };
 
 mod scene_desc;

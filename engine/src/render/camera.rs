@@ -48,7 +48,7 @@ impl FrameSettings {
             roulette_start: render.roulette_start,
             roulette_scale: 1.0,
             film_blend: 1.0,
-            method: crate::layout::METHOD_DEFAULT,
+            method: method_of(render.light_sampling),
         }
     }
 
@@ -58,6 +58,17 @@ impl FrameSettings {
         self.sample_base = sample_base;
         self.film_blend = self.spp as f32 / (sample_base + self.spp).max(1) as f32;
         self
+    }
+}
+
+/// The default estimator (`layout::METHOD_DEFAULT`: NEE + MIS) with lights picked by
+/// `sampling`.
+pub fn method_of(sampling: crate::assets::LightSampling) -> u32 {
+    match sampling {
+        crate::assets::LightSampling::Power => crate::layout::METHOD_DEFAULT,
+        crate::assets::LightSampling::Tree => {
+            crate::layout::METHOD_DEFAULT | crate::layout::METHOD_LIGHT_TREE
+        }
     }
 }
 

@@ -45,7 +45,11 @@ fn trace(
     } else {
         converge.blend(&commit.motion)
     };
-    let mut settings = FrameSettings::new(size.0, size.1, work.spp, config.seed, &commit.render);
+    let mut render = commit.render;
+    if let Some(sampling) = config.light_sampling {
+        render.light_sampling = sampling;
+    }
+    let mut settings = FrameSettings::new(size.0, size.1, work.spp, config.seed, &render);
     settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
     // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.
     settings.film_blend = if denoiser.is_some() { 1.0 } else { blend };

@@ -17,6 +17,6 @@ pub mod scaling;
 pub mod thread;
 pub mod tracer;
 
-pub use camera::{FrameSettings, frame_uniforms};
+pub use camera::{FrameSettings, frame_uniforms, method_of};
 pub use thread::{OpenTracer, RenderConfig, RenderThread, Rendered, TracerChoice};
 pub use tracer::{FilmView, RenderError, RenderStats, Tracer};

@@ -60,6 +60,9 @@ pub struct RenderConfig {
     /// the denoiser's history accumulates them. Off for captures and references (biased), on
     /// in games.
     pub denoise: bool,
+    /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
+    /// level's; `capture --light-sampling`).
+    pub light_sampling: Option<crate::assets::LightSampling>,
 }
 
 impl RenderConfig {
@@ -75,6 +78,7 @@ impl RenderConfig {
             converge: ConvergePolicy::default(),
             scaling: None,
             denoise: false,
+            light_sampling: None,
         }
     }
 }

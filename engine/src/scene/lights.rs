@@ -1,19 +1,23 @@
-//! Lights: the emissive-triangle list with its alias table, and the sun and sky parameters.
+//! Lights: the emissive-triangle list with its alias table and its light tree, and the sun and
+//! sky parameters.
 //!
 //! Owns: finding every emissive triangle of every instance (in world space), the picking
 //! distribution (proportional to area × emitted luminance; Vose's alias method, so picking costs
-//! O(1)), and turning level sun/sky descriptions into frame uniforms.
+//! O(1)), the light tree over the same triangles (built in `light_tree.rs`, one method beside
+//! the table: `LightSampling`), and turning level sun/sky descriptions into frame uniforms.
 //! Must not: trace rays or sample directions (the tracers do, from these tables).
 
 use glam::Vec3;
 
+use super::light_tree::{LightTree, build_tree};
 use crate::assets::{SkyDesc, SunDesc};
 use crate::layout::{
     GpuFrameUniforms, GpuInstance, GpuLight, GpuMaterial, GpuTriangle, GpuVertex, INVALID,
-    SKY_CONSTANT, SKY_GRADIENT,
+    MATERIAL_FLAG_TWO_SIDED_EMISSION, SKY_CONSTANT, SKY_GRADIENT,
 };
 
-/// Emissive triangles and the alias table that picks them.
+/// Emissive triangles, the alias table that picks them by power and the light tree that picks
+/// them by importance from a shading point.
 #[derive(Clone, Debug, Default)]
 pub struct LightTable {
     /// Never empty: a scene without emitters holds one zero-weight placeholder (storage
@@ -22,6 +26,8 @@ pub struct LightTable {
     pub count: u32,
     /// Sum of `weight` over all lights.
     pub weight_total: f32,
+    /// The light tree over the first `count` lights (leaves name their index in `lights`).
+    pub tree: LightTree,
 }
 
 /// A point of an instance in world space.
@@ -45,6 +51,7 @@ pub fn build_lights(
     materials: &[GpuMaterial],
 ) -> LightTable {
     let mut lights = Vec::new();
+    let mut two_sided = Vec::new();
     for (instance_index, instance) in instances.iter().enumerate() {
         if instance.flags & crate::layout::INSTANCE_FLAG_EMISSION_OFF != 0 {
             continue;
@@ -78,6 +85,7 @@ pub fn build_lights(
             if !(weight > 0.0 && weight.is_finite()) {
                 continue;
             }
+            two_sided.push(material.flags & MATERIAL_FLAG_TWO_SIDED_EMISSION != 0);
             lights.push(GpuLight {
                 p0: v[0].to_array(),
                 instance: instance_index as u32,
@@ -93,6 +101,13 @@ pub fn build_lights(
     }
     let count = lights.len() as u32;
     let weight_total = build_alias(&mut lights);
+    // A two-sided emitter sends its power out of both faces (PBRT-v4's DiffuseAreaLight).
+    let phi: Vec<f32> = lights
+        .iter()
+        .zip(&two_sided)
+        .map(|(l, &two)| if two { 2.0 * l.weight } else { l.weight })
+        .collect();
+    let tree = build_tree(&lights, &phi, &two_sided, instances.len(), triangle_counts);
     if lights.is_empty() {
         lights.push(GpuLight {
             p0: [0.0; 3],
@@ -110,6 +125,7 @@ pub fn build_lights(
         lights,
         count,
         weight_total,
+        tree,
     }
 }
 

@@ -4,7 +4,7 @@
 //!
 //! Owns: [`RenderScene`] (the `layout` buffers of one scene), [`SceneWrite`] / [`SceneHeader`]
 //! (the deltas a commit carries, and applying them), the light table ([`lights`]: emissive
-//! triangles, alias table, light groups, sun and sky), material and texture packing
+//! triangles, alias table, light groups, sun and sky; [`light_tree`]: the light BVH), material and texture packing
 //! ([`materials`]), what a surface does to a laser ([`optics`]) and the box type [`Aabb`].
 //! Any thread (plain data and pure functions).
 //! Must not: build trees (`accel`), trace rays (`trace`), or know about the ECS, the commit or
@@ -12,6 +12,7 @@
 
 mod bounds;
 mod flattened;
+pub mod light_tree;
 pub mod lights;
 pub mod materials;
 pub mod optics;

@@ -10,7 +10,8 @@
 use super::flattened::RenderScene;
 use super::lights::LightTable;
 use crate::layout::{
-    GpuBvh8Node, GpuInstance, GpuLight, GpuMaterial, GpuTexture, GpuTri4, GpuTriangle, GpuVertex,
+    GpuBvh8Node, GpuInstance, GpuLight, GpuLightNode, GpuMaterial, GpuTexture, GpuTri4,
+    GpuTriangle, GpuVertex,
 };
 
 /// One delta to one flattened buffer: `data` replaces the elements from `first` on (the buffer
@@ -53,6 +54,16 @@ pub enum SceneWrite {
         first: u32,
         data: Vec<GpuLight>,
     },
+    /// The light tree's nodes (`LightTree::nodes`).
+    LightNodes {
+        first: u32,
+        data: Vec<GpuLightNode>,
+    },
+    /// The light tree's hit lookup (`LightTree::lookup`).
+    LightLookup {
+        first: u32,
+        data: Vec<u32>,
+    },
     /// Keep only the first `len` instances (despawned entities at the end of the table).
     TruncateInstances {
         len: u32,
@@ -75,6 +86,8 @@ impl SceneWrite {
             SceneWrite::Textures { data, .. } => n(data),
             SceneWrite::Texels { data, .. } => n(data),
             SceneWrite::Lights { data, .. } => n(data),
+            SceneWrite::LightNodes { data, .. } => n(data),
+            SceneWrite::LightLookup { data, .. } => n(data),
             SceneWrite::TruncateInstances { .. } => 0,
         }
     }
@@ -149,6 +162,12 @@ impl RenderScene {
                 SceneWrite::Lights { first, data } => {
                     write_range(&mut self.lights.lights, *first, data)
                 }
+                SceneWrite::LightNodes { first, data } => {
+                    write_range(&mut self.lights.tree.nodes, *first, data)
+                }
+                SceneWrite::LightLookup { first, data } => {
+                    write_range(&mut self.lights.tree.lookup, *first, data)
+                }
                 SceneWrite::TruncateInstances { len } => self.instances.truncate(*len as usize),
             }
         }
@@ -158,6 +177,7 @@ impl RenderScene {
             lights: std::mem::take(&mut self.lights.lights),
             count: header.light_count,
             weight_total: header.light_weight_total,
+            tree: std::mem::take(&mut self.lights.tree),
         };
     }
 }

@@ -35,6 +35,7 @@ fn skinned_character_deforms_through_the_frame_loop() -> anyhow::Result<()> {
         render: RenderSettings {
             max_bounces: 1,
             roulette_start: 1,
+            ..Default::default()
         },
         default_camera: CameraDesc {
             position: [0.0, 1.0, 3.0],

@@ -84,6 +84,7 @@ mod player_first_person;
 mod player_third_person;
 mod present_requests;
 mod refit_degradation;
+mod scene_light_tree;
 mod script_determinism;
 mod script_format;
 mod structure_layers;

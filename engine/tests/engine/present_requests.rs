@@ -21,6 +21,7 @@ fn engine() -> Engine {
         render: RenderSettings {
             max_bounces: 2,
             roulette_start: 1,
+            ..Default::default()
         },
         default_camera: CameraDesc {
             position: [0.0, 1.0, 3.0],

@@ -295,6 +295,7 @@ pub fn demo_level() -> Level {
         render: RenderSettings {
             max_bounces: 4,
             roulette_start: 2,
+            ..Default::default()
         },
         // What the demo shows off; loading refuses content that needs anything else.
         needs: Some(Needs {

@@ -229,6 +229,7 @@ mod tests {
         let level = RenderSettings {
             max_bounces: 7,
             roulette_start: 4,
+            ..Default::default()
         };
         let default = METHODS
             .iter()

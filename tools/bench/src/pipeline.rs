@@ -145,6 +145,7 @@ fn upkeep(script: &Script, level: &PlayableLevel, args: &PipelineArgs) -> anyhow
         tracer: Some(ScriptTracer::Cpu),
         size: Some((16, 9)),
         spp: Some(1),
+        ..Default::default()
     };
     let report = run_script(script, level, &options, &mut |_| {})?;
     // Frame 0 loads the level (every BLAS built once); the steady state is frames 1…

@@ -44,6 +44,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         converge: ConvergePolicy::default(),
         scaling: None,
         denoise: false,
+        light_sampling: None,
     };
     let mut engine = Engine::new(config, Environment::of(&desc.scene))?;
     engine.spawn_level(desc);

@@ -9,7 +9,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::Context;
-use candela::assets::{AssetRoot, load_scene};
+use candela::assets::{AssetRoot, LightSampling, load_scene};
 use candela::render::cpu::guides::trace_guides;
 use candela::render::denoise::Svgf;
 use candela::render::film::{TonemapSettings, write_exr, write_png};
@@ -90,6 +90,13 @@ pub struct CaptureArgs {
     /// of the denoiser's history, guides from the CPU guide pass. Biased: off by default.
     #[arg(long)]
     pub denoise: bool,
+    /// How lights are picked: `power` (one table by power) or `tree` (the light tree, by
+    /// importance from each point) [default: the level's `render.light_sampling`].
+    #[arg(long, value_parser = clap::builder::TypedValueParser::map(
+        clap::builder::PossibleValuesParser::new(["power", "tree"]),
+        |s: String| if s == "tree" { LightSampling::Tree } else { LightSampling::Power },
+    ))]
+    pub light_sampling: Option<LightSampling>,
 }
 
 /// What a capture did.
@@ -184,7 +191,10 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     }
     let root = level_root(level, args.asset_root.as_deref())?;
     let started = Instant::now();
-    let desc = load_scene(level, &root)?;
+    let mut desc = load_scene(level, &root)?;
+    if let Some(sampling) = args.light_sampling {
+        desc.render.light_sampling = sampling;
+    }
     let scene = RenderScene::build(&desc);
     let build_seconds = started.elapsed().as_secs_f64();
     let mut tracer = open_tracer(tracer_kind, &scene)

@@ -153,6 +153,7 @@ pub fn run_script_mode(args: &CaptureArgs) -> anyhow::Result<ScriptSummary> {
         }),
         size,
         spp: args.spp,
+        light_sampling: args.light_sampling,
     };
     let progress = if args.quiet {
         indicatif::ProgressBar::hidden()

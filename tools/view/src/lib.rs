@@ -209,6 +209,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             .filter(|f| *f > 0.0)
             .map(|f| ScalingTarget::new(1.0 / f)),
         denoise: args.denoise,
+        light_sampling: None,
     };
     let speed = args
         .speed

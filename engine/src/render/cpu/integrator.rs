@@ -1,8 +1,9 @@
 //! The path tracing integrator of the CPU tracer (twin: `shaders/trace.wgsl`).
 //!
 //! Owns: one camera sample → its radiance estimate: unidirectional path tracing (Brigade's
-//! Algorithm 1) with next-event estimation on emissive triangles (picked by power, point
-//! uniform on the triangle) and on the sun, combined with BSDF sampling by multiple importance
+//! Algorithm 1) with next-event estimation on emissive triangles (picked by power from the alias
+//! table, uniformly, or by importance from the light tree (`light_tree.rs`); point uniform on
+//! the triangle) and on the sun, combined with BSDF sampling by multiple importance
 //! sampling (power heuristic); Russian roulette after `roulette_start` scattering events;
 //! Beer–Lambert absorption inside dielectrics; sky radiance for escaping rays.
 //! Must not: write the film or know about tiles and threads.
@@ -16,7 +17,8 @@ use super::sampling::{
 };
 use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{
-    GpuFrameUniforms, INVALID, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE, SKY_GRADIENT,
+    GpuFrameUniforms, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE,
+    SKY_GRADIENT,
 };
 use crate::scene::RenderScene;
 use crate::trace::{Ray, TraceScene};
@@ -99,6 +101,9 @@ pub fn radiance(
     // Density of the direction just sampled (for MIS) and whether it was a delta lobe.
     let mut last_pdf = 0.0f32;
     let mut last_delta = true;
+    // The shading point and normal the direction was sampled at (the light tree's PMF there).
+    let mut last_position = Vec3::ZERO;
+    let mut last_normal = Vec3::ZERO;
     let sun_solid_angle = u.sun_solid_angle;
     let sun_direction = Vec3::from(u.sun_direction);
     let sun_radiance = Vec3::from(u.sun_radiance);
@@ -126,7 +131,13 @@ pub fn radiance(
                 1.0
             } else {
                 let cos_light = wo.dot(surface.geometric_normal).abs();
-                let select = if u.method & METHOD_LIGHTS_BY_POWER != 0 {
+                let select = if u.method & METHOD_LIGHT_TREE != 0 {
+                    let tree = &scene.lights.tree;
+                    let leaf =
+                        crate::scene::light_tree::leaf_of(&tree.lookup, hit.instance, hit.triangle);
+                    super::light_tree::pmf(&tree.nodes, leaf, last_position, last_normal)
+                        / hit_area(scene, &hit)
+                } else if u.method & METHOD_LIGHTS_BY_POWER != 0 {
                     // weight/total with weight = area · emission weight: the area cancels.
                     scene.materials[surface.material as usize].emission[3] / u.light_weight_total
                 } else {
@@ -197,6 +208,8 @@ pub fn radiance(
         }
         last_pdf = s.pdf;
         last_delta = s.delta;
+        last_position = surface.position;
+        last_normal = ns;
         let side = if transmitted { -ng } else { ng };
         ray = Ray {
             origin: offset_origin(surface.position, side),
@@ -288,45 +301,56 @@ fn next_event(
     if nee && u.light_count > 0 && u.light_weight_total > 0.0 {
         let n_lights = u.light_count;
         let by_power = u.method & METHOD_LIGHTS_BY_POWER != 0;
-        let pick = ((xi[0] * n_lights as f32) as u32).min(n_lights - 1);
-        let mut light = &scene.lights.lights[pick as usize];
-        if by_power && xi[1] >= light.alias_threshold {
-            light = &scene.lights.lights[light.alias_index as usize];
-        }
-        let (p0, p1, p2) = (
-            Vec3::from(light.p0),
-            Vec3::from(light.p1),
-            Vec3::from(light.p2),
-        );
-        let bary = uniform_triangle(Vec2::new(xi[2], xi[3]));
-        let p = p0 + (p1 - p0) * bary.x + (p2 - p0) * bary.y;
-        let cross = (p1 - p0).cross(p2 - p0);
-        let area = 0.5 * cross.length();
-        let to_light = p - x;
-        let dist2 = to_light.length_squared();
-        if area > 0.0 && dist2 > 0.0 {
-            let dist = dist2.sqrt();
-            let wi = to_light / dist;
-            let emitter = light_emission(scene, light.instance, light.triangle, bary);
-            let mut cos_light = -wi.dot(cross / (2.0 * area));
-            if emitter.1 {
-                cos_light = cos_light.abs();
+        let picked = if u.method & METHOD_LIGHT_TREE != 0 {
+            super::light_tree::sample(&scene.lights.tree.nodes, n_lights, x, n, xi[0])
+        } else {
+            let pick = ((xi[0] * n_lights as f32) as u32).min(n_lights - 1);
+            let mut light = &scene.lights.lights[pick as usize];
+            let mut index = pick;
+            if by_power && xi[1] >= light.alias_threshold {
+                index = light.alias_index;
+                light = &scene.lights.lights[index as usize];
             }
-            if cos_light > 0.0 && emitter.0 != Vec3::ZERO {
-                let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
-                let select = if by_power {
-                    light.weight / u.light_weight_total
-                } else {
-                    1.0 / n_lights as f32
-                };
-                let light_pdf = select * dist2 / (cos_light * area);
-                if f != Vec3::ZERO && shadow_to(p, cross / (2.0 * area), counts) {
-                    let w = if mis {
-                        power_heuristic(light_pdf, bsdf_pdf)
-                    } else {
-                        1.0
-                    };
-                    sum += f * emitter.0 * (w / light_pdf);
+            let select = if by_power {
+                light.weight / u.light_weight_total
+            } else {
+                1.0 / n_lights as f32
+            };
+            Some((index, select))
+        };
+        if let Some((index, select)) = picked
+            && let Some(light) = scene.lights.lights.get(index as usize)
+        {
+            let (p0, p1, p2) = (
+                Vec3::from(light.p0),
+                Vec3::from(light.p1),
+                Vec3::from(light.p2),
+            );
+            let bary = uniform_triangle(Vec2::new(xi[2], xi[3]));
+            let p = p0 + (p1 - p0) * bary.x + (p2 - p0) * bary.y;
+            let cross = (p1 - p0).cross(p2 - p0);
+            let area = 0.5 * cross.length();
+            let to_light = p - x;
+            let dist2 = to_light.length_squared();
+            if area > 0.0 && dist2 > 0.0 {
+                let dist = dist2.sqrt();
+                let wi = to_light / dist;
+                let emitter = light_emission(scene, light.instance, light.triangle, bary);
+                let mut cos_light = -wi.dot(cross / (2.0 * area));
+                if emitter.1 {
+                    cos_light = cos_light.abs();
+                }
+                if cos_light > 0.0 && emitter.0 != Vec3::ZERO {
+                    let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
+                    let light_pdf = select * dist2 / (cos_light * area);
+                    if f != Vec3::ZERO && shadow_to(p, cross / (2.0 * area), counts) {
+                        let w = if mis {
+                            power_heuristic(light_pdf, bsdf_pdf)
+                        } else {
+                            1.0
+                        };
+                        sum += f * emitter.0 * (w / light_pdf);
+                    }
                 }
             }
         }

@@ -26,6 +26,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/bindings.wgsl"),
     shader!("shared/rng.wgsl"),
     shader!("shared/sampling.wgsl"),
+    shader!("shared/light_tree.wgsl"),
     shader!("shared/microfacet.wgsl"),
     shader!("shared/bsdf.wgsl"),
     shader!("shared/texture.wgsl"),

@@ -26,7 +26,8 @@ pub struct GpuTracer {
     pub(super) context: Arc<GpuContext>,
     pub(super) pipeline: wgpu::ComputePipeline,
     pub(super) layout: wgpu::BindGroupLayout,
-    /// Uniforms, then the nine scene buffers, in binding order 0..=9.
+    /// Uniforms, then the nine scene buffers (bindings 0..=9), then the light tree's nodes and
+    /// lookup (bindings 13 and 14): binding [`scene_binding`]`(i)` of each index `i`.
     pub(super) scene_buffers: Vec<wgpu::Buffer>,
     pub(super) film: Option<FilmBuffers>,
     pub(super) samples: u32,
@@ -44,6 +45,15 @@ pub(super) struct FilmBuffers {
     pub(super) bind_group: wgpu::BindGroup,
 }
 
+/// The binding of `scene_buffers[index]`: 0..=9, then 13, 14 (10..=12 are the film's).
+pub(super) fn scene_binding(index: usize) -> u32 {
+    if index <= 9 {
+        index as u32
+    } else {
+        index as u32 + 3
+    }
+}
+
 /// Bytes of `data`, or one zeroed element when it is empty (bindings may not be empty).
 fn non_empty<T: bytemuck::Pod + bytemuck::Zeroable>(data: &[T]) -> Vec<u8> {
     if data.is_empty() {
@@ -58,7 +68,7 @@ impl GpuTracer {
     pub fn new(context: Arc<GpuContext>, scene: &RenderScene) -> Result<Self, RenderError> {
         let device = &context.device;
         let max_binding = context.limits.max_storage_buffer_binding_size as u64;
-        let contents: [(&str, Vec<u8>); 9] = [
+        let contents: [(&str, Vec<u8>); 11] = [
             ("nodes", non_empty(&scene.nodes)),
             ("blocks", non_empty::<GpuTri4>(&scene.blocks)),
             ("instances", non_empty(&scene.instances)),
@@ -68,6 +78,8 @@ impl GpuTracer {
             ("textures", non_empty::<GpuTexture>(&scene.textures)),
             ("texels", non_empty(&scene.texels)),
             ("lights", non_empty(&scene.lights.lights)),
+            ("light nodes", non_empty(&scene.lights.tree.nodes)),
+            ("light lookup", non_empty(&scene.lights.tree.lookup)),
         ];
         for (name, bytes) in &contents {
             if bytes.len() as u64 > max_binding {
@@ -119,6 +131,8 @@ impl GpuTracer {
         entries.push(storage(10, false));
         entries.push(storage(11, false));
         entries.push(storage(12, true));
+        entries.push(storage(13, true));
+        entries.push(storage(14, true));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("trace bindings"),
             entries: &entries,
@@ -221,7 +235,7 @@ impl GpuTracer {
             .iter()
             .enumerate()
             .map(|(i, b)| wgpu::BindGroupEntry {
-                binding: i as u32,
+                binding: scene_binding(i),
                 resource: b.as_entire_binding(),
             })
             .collect();

@@ -40,6 +40,8 @@ impl GpuTracer {
                 SceneWrite::Textures { first, data } => at(7, *first, data),
                 SceneWrite::Texels { first, data } => at(8, *first, data),
                 SceneWrite::Lights { first, data } => at(9, *first, data),
+                SceneWrite::LightNodes { first, data } => at(10, *first, data),
+                SceneWrite::LightLookup { first, data } => at(11, *first, data),
                 SceneWrite::TruncateInstances { .. } => continue,
             };
             if bytes.is_empty() {
@@ -84,6 +86,8 @@ impl GpuTracer {
                     "textures",
                     "texels",
                     "lights",
+                    "light nodes",
+                    "light lookup",
                 ][index],
             ),
             size: size.next_multiple_of(4),

@@ -50,6 +50,7 @@ pub fn environment() -> Environment {
         render: RenderSettings {
             max_bounces: 3,
             roulette_start: 2,
+            ..Default::default()
         },
         default_camera: CameraDesc {
             position: [0.0, 3.0, 6.0],
@@ -72,6 +73,7 @@ pub fn config(spp: u32, size: u32) -> RenderConfig {
         converge: ConvergePolicy::default(),
         scaling: None,
         denoise: false,
+        light_sampling: None,
     }
 }
 
