@@ -3,7 +3,7 @@
 //! recorder, one message; game time, the `played` log, volumes and ids carry over).
 //!
 //! Owns: opening with that fallback, the device messages, and the switch on a loss. Main
-//! (game) thread. Must not: retry a lost device more than once per loss or block.
+//! (game) thread. Must not: retry a lost device more than once per loss.
 
 use super::backend::{OutputSettings, SilentSettings};
 use super::history::Capped;

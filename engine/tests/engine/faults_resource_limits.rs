@@ -136,7 +136,7 @@ fn files_that_claim_huge_buffers_images_and_meshes_are_refused() -> TestResult {
     // A GLB whose binary chunk claims 4 GiB − 4 bytes.
     let json = gltf(16, r#"[{"mesh":0}]"#, "").replace(r#","uri":"t.bin""#, "");
     let mut json = json.into_bytes();
-    while json.len() % 4 != 0 {
+    while !json.len().is_multiple_of(4) {
         json.push(b' ');
     }
     let mut glb = b"glTF".to_vec();
