@@ -14,13 +14,11 @@
 
 use std::time::Instant;
 
-use glam::{Affine3A, Mat3A, Vec3A};
-
 use super::cpu::guides::trace_guides;
-use super::denoise::{ReprojectStats, Svgf, SvgfParams, View};
+use super::denoise::{ReprojectStats, Svgf, SvgfParams, View, world_from_object};
 use super::film::Film;
 use super::tracer::{FilmView, RenderError, Tracer};
-use crate::layout::{GpuFrameUniforms, GpuInstance};
+use crate::layout::GpuFrameUniforms;
 use crate::scene::RenderScene;
 
 /// The render thread's denoiser and its last output.
@@ -76,18 +74,5 @@ impl DenoiseStage {
     /// The last denoised film for the presenter (`None` before the first frame).
     pub fn film_view(&self) -> Option<FilmView<'_>> {
         (self.film.width > 0 && self.film.height > 0).then_some(FilmView::Host(&self.film))
-    }
-}
-
-/// An instance's world-from-object transform (its three packed rows).
-fn world_from_object(instance: &GpuInstance) -> Affine3A {
-    let [r0, r1, r2] = instance.world_from_object;
-    Affine3A {
-        matrix3: Mat3A::from_cols(
-            Vec3A::new(r0[0], r1[0], r2[0]),
-            Vec3A::new(r0[1], r1[1], r2[1]),
-            Vec3A::new(r0[2], r1[2], r2[2]),
-        ),
-        translation: Vec3A::new(r0[3], r1[3], r2[3]),
     }
 }

@@ -8,10 +8,12 @@ use candela::assets::CameraDesc;
 use candela::layout::GpuFrameUniforms;
 use candela::render::cpu::CpuTracer;
 use candela::render::cpu::guides::trace_guides;
-use candela::render::denoise::{Guides, History, PrevFrame, Svgf, SvgfParams, View, reproject};
+use candela::render::denoise::{
+    Guides, History, PrevFrame, Svgf, SvgfParams, View, reproject, world_from_object,
+};
 use candela::render::film::{Converge, ConvergePolicy};
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
-use glam::{Affine3A, Mat3A, Vec3, Vec3A, Vec4};
+use glam::{Affine3A, Vec3, Vec4};
 
 use super::denoise_common::{Cornell, away_from_lamps, rmse_where};
 
@@ -27,21 +29,7 @@ fn uniforms(c: &Cornell, camera: &CameraDesc, spp: u32, seed: u32) -> GpuFrameUn
 }
 
 fn transforms(c: &Cornell) -> Vec<Affine3A> {
-    c.scene
-        .instances
-        .iter()
-        .map(|i| {
-            let [r0, r1, r2] = i.world_from_object;
-            Affine3A {
-                matrix3: Mat3A::from_cols(
-                    Vec3A::new(r0[0], r1[0], r2[0]),
-                    Vec3A::new(r0[1], r1[1], r2[1]),
-                    Vec3A::new(r0[2], r1[2], r2[2]),
-                ),
-                translation: Vec3A::new(r0[3], r1[3], r2[3]),
-            }
-        })
-        .collect()
+    c.scene.instances.iter().map(world_from_object).collect()
 }
 
 /// The Cornell camera turned about the vertical through its position by `deg` degrees.

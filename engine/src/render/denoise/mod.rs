@@ -20,6 +20,7 @@ pub use atrous::{Pass, atrous_pixel};
 pub use guides::{Guides, NO_INSTANCE};
 pub use reproject::{
     DEPTH_TOLERANCE, NORMAL_COS, PrevFrame, ReprojectStats, SNAP_PIXELS, View, reproject,
+    world_from_object,
 };
 pub use svgf::{DenoiseError, Svgf, SvgfParams};
 pub use temporal::{History, Reprojection, temporal_pixel};

@@ -17,12 +17,12 @@
 //! origin is a cut). Render thread (rows on rayon's pool).
 //! Must not: trace rays or blend (see `temporal`).
 
-use glam::{Affine3A, Vec3, Vec4};
+use glam::{Affine3A, Mat3A, Vec3, Vec3A, Vec4};
 use rayon::prelude::*;
 
 use super::guides::{Guides, NO_INSTANCE};
 use super::temporal::History;
-use crate::layout::GpuFrameUniforms;
+use crate::layout::{GpuFrameUniforms, GpuInstance};
 
 /// Smallest cosine between a pixel's normal and a history tap's normal (about 25°).
 pub const NORMAL_COS: f32 = 0.9;
@@ -82,6 +82,20 @@ impl View {
         let x = (sx + 1.0) * 0.5 * self.width as f32;
         let y = (1.0 - sy) * 0.5 * self.height as f32;
         (x.is_finite() && y.is_finite()).then_some((x, y))
+    }
+}
+
+/// An instance's world-from-object transform (its three packed rows), as [`PrevFrame`] and
+/// [`reproject`] take them.
+pub fn world_from_object(instance: &GpuInstance) -> Affine3A {
+    let [r0, r1, r2] = instance.world_from_object;
+    Affine3A {
+        matrix3: Mat3A::from_cols(
+            Vec3A::new(r0[0], r1[0], r2[0]),
+            Vec3A::new(r0[1], r1[1], r2[1]),
+            Vec3A::new(r0[2], r1[2], r2[2]),
+        ),
+        translation: Vec3A::new(r0[3], r1[3], r2[3]),
     }
 }
 
