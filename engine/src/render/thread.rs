@@ -142,9 +142,7 @@ fn open(
             };
             Box::new(super::gpu::GpuTracer::new(context, scene)?)
         }
-        TracerChoice::Pool(spec) => {
-            Box::new(super::balance::PoolTracer::new(spec, context, scene)?)
-        }
+        TracerChoice::Pool(spec) => Box::new(super::balance::PoolTracer::new(spec, context, scene)?),
     };
     Ok((tracer, presenter))
 }

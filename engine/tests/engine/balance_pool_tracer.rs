@@ -6,8 +6,8 @@
 
 use std::path::Path;
 
-use candela::app::{Engine, Environment, Step};
 use candela::assets::{AssetRoot, SceneDesc, load_scene};
+use candela::app::{Engine, Environment, Step};
 use candela::layout::GpuFrameUniforms;
 use candela::level::load_level;
 use candela::render::balance::{PoolSpec, PoolTracer, SchemeKind, unit_count, unit_rows};
@@ -28,13 +28,7 @@ fn scene() -> anyhow::Result<(SceneDesc, RenderScene)> {
 
 fn uniforms(desc: &SceneDesc, scene: &RenderScene, frame: u32) -> GpuFrameUniforms {
     let s = FrameSettings::new(SIZE.0, SIZE.1, 2, 5, &desc.render).continuing(frame * 2);
-    frame_uniforms(
-        &desc.camera,
-        desc.sun.as_ref(),
-        &desc.sky,
-        &s,
-        &scene.header(),
-    )
+    frame_uniforms(&desc.camera, desc.sun.as_ref(), &desc.sky, &s, &scene.header())
 }
 
 #[test]

@@ -11,7 +11,9 @@ use std::path::Path;
 
 use anyhow::Context;
 use candela::assets::{AssetRoot, load_scene};
-use candela::render::balance::{CpuPool, PoolSpec, PoolTracer, SchemeKind, idle_share, unit_count};
+use candela::render::balance::{
+    CpuPool, PoolSpec, PoolTracer, SchemeKind, idle_share, unit_count,
+};
 use candela::render::film::Film;
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use candela::scene::RenderScene;

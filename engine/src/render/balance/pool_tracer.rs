@@ -69,9 +69,7 @@ impl PoolTracer {
         scene: &RenderScene,
     ) -> Result<Self, RenderError> {
         if spec.tracers() == 0 {
-            return Err(RenderError::Device(
-                "a tracer pool needs at least one tracer".into(),
-            ));
+            return Err(RenderError::Device("a tracer pool needs at least one tracer".into()));
         }
         let gpu = if spec.gpu {
             let context = match context {
