@@ -11,6 +11,7 @@
 use std::path::{Path, PathBuf};
 
 use super::action_set::ActionSet;
+use super::edit::EditTarget;
 use super::engine::{Engine, Environment};
 use super::game::{Game, LevelEvent, SetupError, Step};
 use super::level::SpawnedLevel;
@@ -50,12 +51,26 @@ pub struct FirstPersonGame {
     spawned: SpawnedLevel,
     log: Vec<(u64, Happened)>,
     start_input: Option<StepInput>,
+    /// What F1's editor edits (a level of one file, when loaded from one).
+    edit: Option<EditTarget>,
 }
 
 impl FirstPersonGame {
     /// Loads `level_path` (paths confined to `root`); the level is spawned by [`Game::setup`].
     pub fn load(level_path: &Path, root: &AssetRoot) -> AssetResult<Self> {
-        Ok(Self::of_level(level_path, load_level(level_path, root)?))
+        let mut game = Self::of_level(level_path, load_level(level_path, root)?);
+        game.edit = Some(EditTarget::single_file(level_path, root.clone()));
+        Ok(game)
+    }
+
+    /// What the editor (F1) edits: `None` gives the shell's placeholder.
+    pub fn set_edit_target(&mut self, target: Option<EditTarget>) {
+        self.edit = target;
+    }
+
+    /// The game was spawned again by the editor: `spawned` replaces the level's handles.
+    pub fn set_spawned(&mut self, spawned: SpawnedLevel) {
+        self.spawned = spawned;
     }
 
     /// A game of an already loaded `level` (a composed level, `level::load_composed`);
@@ -70,6 +85,7 @@ impl FirstPersonGame {
             spawned: SpawnedLevel::default(),
             log: Vec::new(),
             start_input: None,
+            edit: None,
         }
     }
 
@@ -206,6 +222,14 @@ impl Game for FirstPersonGame {
 
     fn has_ui(&self) -> bool {
         self.own_hud
+    }
+
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+        Some((self.edit.clone()?, self.spawned.clone()))
+    }
+
+    fn level_respawned(&mut self, _engine: &mut Engine, spawned: &SpawnedLevel) {
+        self.spawned = spawned.clone();
     }
 
     fn shell_info(&self) -> ShellInfo {

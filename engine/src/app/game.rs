@@ -21,7 +21,9 @@ use hecs::World;
 
 use super::action_frame::ActionFrame;
 use super::action_set::ActionSet;
+use super::edit::EditTarget;
 use super::input::InputState;
+use super::level::SpawnedLevel;
 use super::settings::Settings;
 use super::shell::{GameSummary, HudInfo, LevelStart, ShellInfo};
 use crate::query::Queries;
@@ -87,6 +89,16 @@ pub trait Game {
     fn summary(&self) -> GameSummary {
         GameSummary::default()
     }
+
+    /// Editor (F1, `app::edit`): the level file the editor edits and what of the world is
+    /// spawned now. `None` (the default): F1 shows no editor.
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+        None
+    }
+
+    /// Editor: the level was spawned again from the edited file (opening the editor, a
+    /// structural edit); `spawned` replaces the game's handles of the level's entities.
+    fn level_respawned(&mut self, _engine: &mut super::Engine, _spawned: &SpawnedLevel) {}
 }
 
 /// A [`Game`] that is one closure run every fixed step (tools, tests, scripts).

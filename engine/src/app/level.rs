@@ -65,15 +65,28 @@ impl Engine {
     /// instance (with its body, if it has one); sets the environment from the level; starts
     /// its gameplay; spawns its characters.
     pub fn spawn_level(&mut self, level: &PlayableLevel) -> SpawnedLevel {
+        self.spawn_level_models(level, None)
+    }
+
+    /// [`Engine::spawn_level`] with the level's models already registered (`models`, one
+    /// handle per `SceneDesc::models` entry) or, when `None`, registered now.
+    pub(super) fn spawn_level_models(
+        &mut self,
+        level: &PlayableLevel,
+        models: Option<Vec<ModelHandle>>,
+    ) -> SpawnedLevel {
         let desc = &level.scene;
         self.environment = Environment::of(desc);
         self.set_default_camera(desc.camera);
         self.upkeep.add_level_materials(&desc.level_materials);
-        let models: Vec<ModelHandle> = desc
-            .models
-            .iter()
-            .map(|m| self.upkeep.add_model(m))
-            .collect();
+        let models: Vec<ModelHandle> = match models {
+            Some(models) if models.len() == desc.models.len() => models,
+            _ => desc
+                .models
+                .iter()
+                .map(|m| self.upkeep.add_model(m))
+                .collect(),
+        };
         let mut spawned = SpawnedLevel {
             models,
             ..Default::default()

@@ -18,6 +18,7 @@ use std::time::{Duration, Instant};
 use winit::event_loop::ActiveEventLoop;
 use winit::window::{Fullscreen, Window};
 
+use super::edit::EditMode;
 use super::engine::{Engine, Environment};
 use super::frame_limiter::FrameLimiter;
 use super::game::Game;
@@ -46,6 +47,14 @@ pub(super) struct WindowApp<'g> {
     pub(super) shell: Option<ShellRun>,
     /// Screenshots the shell's cues asked for: (frame, where to write it).
     pub(super) shots: Vec<(u64, std::path::PathBuf)>,
+    /// The editor (F1), opened the first time it is asked for (`window_edit.rs`).
+    pub(super) edit: Option<EditMode>,
+    /// Without the shell: F1 was pressed (the editor toggles at the next frame).
+    pub(super) edit_toggle: bool,
+    /// Without the shell: the editor is wanted on.
+    pub(super) editing: bool,
+    /// The game has no level to edit, or it did not open (asked once).
+    pub(super) edit_unavailable: bool,
 }
 
 impl<'g> WindowApp<'g> {
@@ -69,6 +78,10 @@ impl<'g> WindowApp<'g> {
             shell_config,
             shell: None,
             shots: Vec::new(),
+            edit: None,
+            edit_toggle: false,
+            editing: false,
+            edit_unavailable: false,
         }
     }
 
@@ -242,6 +255,10 @@ impl<'g> WindowApp<'g> {
             };
             running.window.set_fullscreen(next);
         }
+        if self.edit.as_ref().is_some_and(EditMode::active) {
+            // The editor has the mouse; Escape does not leave.
+            return;
+        }
         let capture = input.pressed_this_frame(actions::CAPTURE_MOUSE);
         let release = input.pressed_this_frame(actions::RELEASE_MOUSE);
         if capture && !running.captured && !running.overlay.wants_pointer() {
@@ -290,6 +307,13 @@ impl<'g> WindowApp<'g> {
             }
             running.follow(wants);
         }
+        self.follow_edit_mode();
+        let Some(running) = self.running.as_mut() else {
+            return;
+        };
+        let editing = self.edit.as_ref().is_some_and(EditMode::active);
+        let edit = &mut self.edit;
+        let mut edit_frame = super::edit::EditFrame::default();
         let Running {
             window,
             engine,
@@ -312,14 +336,33 @@ impl<'g> WindowApp<'g> {
                             game.ui(ctx);
                         }
                         shell.ui(ctx);
+                        if editing && let Some(edit) = edit.as_mut() {
+                            edit_frame = edit.ui(ctx, engine);
+                        }
                     }),
                 );
                 shell.after_ui(engine, game);
                 overlay
             }
-            None if game.has_ui() => overlay.build(window, stats, Some(&mut |ctx| game.ui(ctx))),
+            None if game.has_ui() || editing => overlay.build(
+                window,
+                stats,
+                Some(&mut |ctx| {
+                    if game.has_ui() && !editing {
+                        game.ui(ctx);
+                    }
+                    if editing && let Some(edit) = edit.as_mut() {
+                        edit_frame = edit.ui(ctx, engine);
+                    }
+                }),
+            ),
             None => overlay.build(window, stats, None),
         };
+        if edit_frame.respawned
+            && let Some(edit) = self.edit.as_ref()
+        {
+            game.level_respawned(engine, edit.world.spawned());
+        }
         let shot = self.shell.as_mut().and_then(ShellRun::take_screenshot);
         if let Some(path) = shot.clone() {
             self.shots.push((engine.frames(), path));

@@ -69,11 +69,20 @@ impl ApplicationHandler for WindowApp<'_> {
         let Some(running) = self.running.as_mut() else {
             return;
         };
+        let editing = self.editing || self.edit.as_ref().is_some_and(|e| e.active());
         let egui_used = running.overlay.on_window_event(
             &running.window,
             &event,
-            self.game.has_ui() || self.shell.is_some(),
+            self.game.has_ui() || self.shell.is_some() || editing,
         );
+        if self.shell.is_none()
+            && let WindowEvent::KeyboardInput { event: key, .. } = &event
+            && key.state.is_pressed()
+            && !key.repeat
+            && key.physical_key == PhysicalKey::Code(winit::keyboard::KeyCode::F1)
+        {
+            self.edit_toggle = true;
+        }
         if let Some(shell) = self.shell.as_mut() {
             forward_to_shell(shell, running, &event, egui_used);
         }

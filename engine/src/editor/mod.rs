@@ -6,8 +6,9 @@
 //! Main thread. It edits the level description; the runner brings the world up to date
 //! (re-spawn, or [`Edit::touches`] for targeted transform updates). Must not: touch the
 //! renderer, the render thread or the GPU; it reads the scene only through `query`.
-//! First egui panels in `ui` (outliner, inspector, history, problems, keys), not yet called
-//! by any runner. Not built yet: the F1 hook, the editor camera, gizmos. See `docs/EDITOR.md`.
+//! The egui panels in `ui` (outliner, inspector, history, problems, keys). The editor in the
+//! running game (F1, camera, gizmos, highlight, the world in step) is `app::edit`, above this
+//! layer. See `docs/EDITOR.md`.
 
 mod check;
 mod check_gameplay;
@@ -40,7 +41,7 @@ pub use pick::{Picked, pick, pixel_ray};
 pub use recovery::{
     RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
 };
-pub use save::{SaveError, SaveReport, backup_path, save_document};
+pub use save::{SaveError, SaveReport, backup_path, save_document, write_document};
 pub use selection::{SelectMode, Selection};
 pub use snap::{Snap, snap_angle_deg, snap_scale, snap_value};
 pub use state::EditorState;

@@ -99,6 +99,13 @@ pub fn save_document(
     if !problems.is_empty() {
         return Err(SaveError::Problems(problems));
     }
+    write_document(path, doc)
+}
+
+/// Steps 2 to 5 of [`save_document`] (write, read back, back up, replace, drop the recovery
+/// file) for a document its caller has checked: a part of a composed world, which only checks
+/// merged with the other parts.
+pub fn write_document(path: &Path, doc: &Document) -> Result<SaveReport, SaveError> {
     let text = text_of(doc)?;
     let backup = if path.exists() {
         let old = std::fs::read(path).map_err(|source| SaveError::Backup {

@@ -17,7 +17,7 @@ use super::command::{Edit, EditError, InstanceField, Touch};
 use super::document::{Document, DocumentError};
 use super::history::History;
 use super::recovery::write_recovery;
-use super::save::{SaveError, SaveReport, save_document};
+use super::save::{SaveError, SaveReport, save_document, write_document};
 use super::selection::Selection;
 use super::snap::Snap;
 
@@ -165,6 +165,20 @@ impl EditorState {
             }
             Err(e) => Err(e),
         }
+    }
+
+    /// Saves a document whose check its caller ran (`problems`, empty when it passed; a part
+    /// of a composed world checks merged with the other parts): refused with them, else
+    /// written as [`EditorState::save`] writes.
+    pub fn save_checked(&mut self, problems: Vec<Problem>) -> Result<SaveReport, SaveError> {
+        if !problems.is_empty() {
+            self.problems = problems.clone();
+            return Err(SaveError::Problems(problems));
+        }
+        let report = write_document(&self.path, &self.doc)?;
+        self.problems.clear();
+        self.saved_state = self.history.state_id();
+        Ok(report)
     }
 
     /// Writes the recovery file (autosave; see `recovery`).

@@ -5,8 +5,9 @@
 //! Main thread, inside the engine's hooks (`candela::app::Game`). Must not: read devices (the
 //! step's actions come from the devices or a replay alike) or reach into the renderer.
 
+use candela::app::edit::EditTarget;
 use candela::app::{
-    FirstPersonGame, Game, LevelEvent, SetupError, Step, player_input,
+    FirstPersonGame, Game, LevelEvent, SetupError, SpawnedLevel, Step, player_input,
     shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellInfo},
 };
 use candela::ecs::{Renderable, Transform};
@@ -252,10 +253,10 @@ fn turn_held_cube(step: &mut Step<'_>, inner: &FirstPersonGame) {
     }
 }
 
-impl Game for ReflectGame {
-    fn setup(&mut self, engine: &mut candela::app::Engine) -> Result<(), SetupError> {
-        self.inner.setup(engine)?;
-        self.step_seconds = engine.clock().step_seconds;
+impl ReflectGame {
+    /// The mirror gun over the spawned level's mirrorable panels (at setup, and after the
+    /// editor spawned the level again).
+    fn arm_gun(&mut self, engine: &candela::app::Engine) {
         let world = engine.world();
         let spawned = self.inner.spawned();
         let panels: Vec<(Entity, Option<usize>, Option<u32>)> = self
@@ -276,7 +277,36 @@ impl Game for ReflectGame {
             })
             .collect();
         self.gun = MirrorGun::new(panels, self.world.mirror_material);
+    }
+}
+
+impl Game for ReflectGame {
+    fn setup(&mut self, engine: &mut candela::app::Engine) -> Result<(), SetupError> {
+        self.inner.setup(engine)?;
+        self.step_seconds = engine.clock().step_seconds;
+        self.arm_gun(engine);
         Ok(())
+    }
+
+    /// F1 edits the chamber the player is in (or starts in): a part of the composed world.
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+        let chamber = self.current.or(self.pending_start).unwrap_or(0);
+        let files = &self.world.files;
+        let target =
+            EditTarget::composed_part(&files[0], &files[1..], chamber, self.world.root.clone());
+        match target {
+            Ok(target) => Some((target, self.inner.spawned().clone())),
+            Err(e) => {
+                log::error!("the editor cannot open chamber {chamber}: {e}");
+                None
+            }
+        }
+    }
+
+    fn level_respawned(&mut self, engine: &mut candela::app::Engine, spawned: &SpawnedLevel) {
+        self.inner.set_spawned(spawned.clone());
+        self.aimed = None;
+        self.arm_gun(engine);
     }
 
     fn begin_level(

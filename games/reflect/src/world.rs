@@ -41,6 +41,8 @@ pub struct ReflectWorld {
     pub mirror_material: u32,
     /// Instances (by index) the mirror gun may turn into mirrors.
     pub mirrorable: Vec<usize>,
+    /// The folder every file of the world stays in (the editor saves through it).
+    pub root: AssetRoot,
 }
 
 impl ReflectWorld {
@@ -94,6 +96,7 @@ impl ReflectWorld {
             playable,
             mirror_material,
             mirrorable,
+            root: root.clone(),
         })
     }
 

@@ -12,9 +12,10 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Context;
+use candela::app::edit::EditTarget;
 use candela::app::{
-    Engine, Environment, FlyCamera, FrameInput, Game, InputMap, SetupError, WindowConfig,
-    WindowReport, fly_camera_system, run_window,
+    Engine, Environment, FlyCamera, FrameInput, Game, InputMap, SetupError, SpawnedLevel,
+    WindowConfig, WindowReport, fly_camera_system, run_window,
 };
 use candela::assets::{AssetRoot, SceneDesc};
 use candela::level::{PlayableLevel, load_level};
@@ -37,7 +38,8 @@ pub enum TracerKind {
 }
 
 /// Open a level in a window: fly with WASD/QE (shift: faster), click to look around with the
-/// mouse, Escape to release the mouse (again to leave), F3 stats, F4 vsync, F11 fullscreen.
+/// mouse, Escape to release the mouse (again to leave), F1 the level editor, F3 stats, F4
+/// vsync, F11 fullscreen.
 #[derive(Clone, Debug, Parser)]
 #[command(name = "view", version)]
 pub struct ViewArgs {
@@ -135,15 +137,25 @@ pub fn level_extent(desc: &SceneDesc) -> f32 {
     }
 }
 
-/// The game `view` plays: the level and a fly camera.
+/// The game `view` plays: the level and a fly camera; F1 edits the level file.
 struct ViewGame {
     level: PlayableLevel,
     speed: f32,
+    edit: EditTarget,
+    spawned: SpawnedLevel,
 }
 
 impl Game for ViewGame {
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+        Some((self.edit.clone(), self.spawned.clone()))
+    }
+
+    fn level_respawned(&mut self, _engine: &mut Engine, spawned: &SpawnedLevel) {
+        self.spawned = spawned.clone();
+    }
+
     fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {
-        engine.spawn_level(&self.level);
+        self.spawned = engine.spawn_level(&self.level);
         let (camera, transform, rig) = FlyCamera::from_view(&self.level.scene.camera, self.speed);
         engine.world_mut().spawn((camera, transform, rig));
         Ok(())
@@ -215,7 +227,12 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
         .speed
         .unwrap_or_else(|| (level_extent(desc) / 10.0).clamp(0.5, 100.0));
     let environment = Environment::of(desc);
-    let mut game = ViewGame { level, speed };
+    let mut game = ViewGame {
+        level,
+        speed,
+        edit: EditTarget::single_file(&args.level, root),
+        spawned: SpawnedLevel::default(),
+    };
     run_window(config, render, environment, &mut game)
         .with_context(|| format!("cannot view {}", args.level.display()))
 }

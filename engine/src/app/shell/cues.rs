@@ -1,6 +1,7 @@
 //! Scripted shell input for tests and demos: a list of [`Cue`]s, each run a number of frames
 //! after the previous one — a menu choice or action ([`ShellInput`]), a change to the settings
-//! draft as the settings screen's widgets would make it, or a screenshot of the window (menus
+//! draft as the settings screen's widgets would make it, a change to the level editor's state
+//! (a selection, snapping) as its panels would make it, or a screenshot of the window (menus
 //! and HUD included).
 //!
 //! Data; the runner plays them. Main thread. Must not: reach the engine or the window.
@@ -9,6 +10,7 @@ use std::path::PathBuf;
 
 use super::settings_edit::SettingsEditor;
 use super::state::ShellInput;
+use crate::editor::EditorState;
 
 /// What a cue does.
 pub enum CueAction {
@@ -18,7 +20,13 @@ pub enum CueAction {
     Edit(Box<dyn FnMut(&mut SettingsEditor) + Send>),
     /// Writes what the window shows this frame to this PNG (windowed runs only).
     Screenshot(PathBuf),
+    /// Changes the level editor's state (a selection, snapping; not the document) while the
+    /// editor is open (windowed runs with an editor only; dropped otherwise).
+    Editor(EditorCue),
 }
+
+/// A change to the level editor's state, for [`CueAction::Editor`].
+pub type EditorCue = Box<dyn FnMut(&mut EditorState) + Send>;
 
 impl std::fmt::Debug for CueAction {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -26,6 +34,7 @@ impl std::fmt::Debug for CueAction {
             CueAction::Input(i) => write!(f, "Input({i:?})"),
             CueAction::Edit(_) => write!(f, "Edit(..)"),
             CueAction::Screenshot(p) => write!(f, "Screenshot({})", p.display()),
+            CueAction::Editor(_) => write!(f, "Editor(..)"),
         }
     }
 }
@@ -50,6 +59,13 @@ impl Cue {
         Self {
             wait_frames,
             action: CueAction::Edit(Box::new(edit)),
+        }
+    }
+
+    pub fn editor(wait_frames: u32, cue: impl FnMut(&mut EditorState) + Send + 'static) -> Self {
+        Self {
+            wait_frames,
+            action: CueAction::Editor(Box::new(cue)),
         }
     }
 

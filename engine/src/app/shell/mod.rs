@@ -24,7 +24,7 @@ mod state;
 mod theme;
 mod title;
 
-pub use cues::{Cue, CueAction};
+pub use cues::{Cue, CueAction, EditorCue};
 pub use ending::clock_text;
 pub use files::{Notice, PlayerFiles};
 pub use headless::run_headless;

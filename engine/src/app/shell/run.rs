@@ -17,7 +17,7 @@
 use std::collections::VecDeque;
 use std::path::PathBuf;
 
-use super::cues::{Cue, CueAction};
+use super::cues::{Cue, CueAction, EditorCue};
 use super::files::{Notice, PlayerFiles};
 use super::info::{GameSummary, HudInfo, ProgressEvent, ShellInfo};
 use super::settings_edit::SettingsEditor;
@@ -75,6 +75,10 @@ pub struct ShellRun {
     dragging: bool,
     hud: HudInfo,
     summary: GameSummary,
+    /// The runner draws the editor on the Editor screen (else the placeholder shows).
+    editor_drawn: bool,
+    /// Editor cues played and not yet taken by the runner.
+    editor_cues: Vec<EditorCue>,
 }
 
 impl ShellRun {
@@ -107,6 +111,8 @@ impl ShellRun {
             dragging: false,
             hud: HudInfo::default(),
             summary: GameSummary::default(),
+            editor_drawn: false,
+            editor_cues: Vec::new(),
         };
         run.apply_settings(engine);
         engine.set_paused(true);
@@ -129,6 +135,17 @@ impl ShellRun {
     /// The settings screen's model.
     pub fn editor_mut(&mut self) -> &mut SettingsEditor {
         &mut self.editor
+    }
+
+    /// Whether the runner draws the level editor on the Editor screen (`app::edit`); if not,
+    /// the screen shows the placeholder.
+    pub fn set_editor_drawn(&mut self, drawn: bool) {
+        self.editor_drawn = drawn;
+    }
+
+    /// The editor cues played since the last call, for the runner's editor.
+    pub fn take_editor_cues(&mut self) -> Vec<EditorCue> {
+        std::mem::take(&mut self.editor_cues)
     }
 
     /// Queues an input (carried out in the next `before_frame` or `after_ui`).
@@ -186,6 +203,7 @@ impl ShellRun {
             }
             Screen::Paused => pause::show(ctx, &self.level_name()),
             Screen::Settings => settings_screen::show(ctx, &mut self.editor, true),
+            Screen::Editor if self.editor_drawn => None,
             Screen::Editor => pause::editor(ctx),
             Screen::Ending => ending::show(
                 ctx,
@@ -297,6 +315,7 @@ impl ShellRun {
                 CueAction::Input(input) => self.pending.push(input),
                 CueAction::Edit(mut edit) => edit(&mut self.editor),
                 CueAction::Screenshot(path) => self.screenshot = Some(path),
+                CueAction::Editor(cue) => self.editor_cues.push(cue),
             }
         }
     }

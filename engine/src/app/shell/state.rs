@@ -1,7 +1,7 @@
 //! The runner's screens as a state machine: Title → Playing ⇄ Paused → Ending → Title, the
 //! Settings screen reached from Title and Paused (it returns where it came from), and the
-//! Editor hook (F1 from Playing or Paused): for now it holds the game like Paused and shows
-//! "Editor (coming)"; the editor issue fills it.
+//! Editor (F1 from Playing or Paused): it holds the game like Paused while the window runner
+//! draws the level editor (`app::edit`), or a placeholder for a game with no level to edit.
 //!
 //! Pure logic: [`ShellState::handle`] takes a [`ShellInput`] (a menu choice, the pause or editor
 //! action, the level's end, focus lost) and returns the [`ShellEffect`]s for the runner to carry
@@ -18,7 +18,7 @@ pub enum Screen {
     Playing,
     Paused,
     Settings,
-    /// The editor hook (F1): the game is held; a later issue puts the editor here.
+    /// The level editor (F1): the game is held while the runner's editor is drawn.
     Editor,
     Ending,
 }

@@ -5,7 +5,7 @@
 //! last refused save; plus the editor's keys (Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y, Ctrl+D,
 //! Delete, Ctrl+S), which are ignored while a text field has the keyboard.
 //!
-//! [`panels`] is called once per egui pass by the window runner (not wired yet). Widgets only
+//! [`panels`] is called once per egui pass by `app::edit::EditMode`. Widgets only
 //! collect [`Pending`] edits; they are applied through [`EditorState`] after the pass draws, so
 //! every change is a command. A change made while the primary pointer button is held (a
 //! `DragValue` drag, a slider, a colour picker) belongs to one drag: one command.
@@ -18,7 +18,7 @@ pub mod outliner;
 
 use super::command::{Edit, Touch};
 use super::item::ItemRef;
-use super::selection::SelectMode;
+pub use super::selection::SelectMode;
 use super::state::EditorState;
 
 /// What the panels did this pass, for the runner.
@@ -42,7 +42,7 @@ pub(super) struct Pending {
 }
 
 /// How a click changes the selection, from the held modifiers (Shift adds, Ctrl toggles).
-pub(super) fn mode_of(modifiers: egui::Modifiers) -> SelectMode {
+pub fn mode_of(modifiers: egui::Modifiers) -> SelectMode {
     if modifiers.command || modifiers.ctrl {
         SelectMode::Toggle
     } else if modifiers.shift {

@@ -1,0 +1,29 @@
+//! The level editor in a running game or tool (issue 12, `docs/EDITOR.md`): F1 toggles
+//! [`EditMode`] over the level being played. It builds on the window-free core in
+//! `crate::editor` (documents, edits with undo, selection, picking, snapping, saves, recovery,
+//! panels) and adds what needs the world and the view: keeping the world in step with the
+//! document ([`EditWorld`]), the free editor camera ([`EditorCamera`]), the transform
+//! [`Gizmo`], the selection highlight and the toolbar.
+//!
+//! One file per job: `target` (what a game hands the editor), `world` (the world in step),
+//! `camera`, `gizmo`, `mode` (entering, leaving, one pass), `view_input` (pointer and keys
+//! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
+//! game's hooks (the runner holds the game while editing).
+
+mod camera;
+mod draw;
+mod gizmo;
+mod mode;
+mod target;
+mod view_input;
+mod world;
+
+pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
+pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};
+pub use gizmo::{
+    DEGREES_PER_POINT, GRAB_POINTS, Gizmo, Handles, POINTS_PER_SCALE, Space, Tool, degrees_of,
+    rotation_of,
+};
+pub use mode::{AUTOSAVE_SECONDS, EditFrame, EditMode};
+pub use target::{BuildWorld, CheckWorld, EditTarget};
+pub use world::{Bounds, EditWorld, Followed};

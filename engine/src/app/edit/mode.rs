@@ -1,0 +1,365 @@
+//! [`EditMode`]: the editor over a running level (F1). Entering it spawns the level again from
+//! the document (what was played is discarded: "edits made while playing are discarded on
+//! return"), takes over the view with the [`EditorCamera`] and holds the game (the runner
+//! pauses the engine; the path tracer keeps converging). Each egui pass it draws the panels
+//! (`editor::ui`), the toolbar, the selection highlight and the gizmo, reads the view's
+//! pointer and keys (`view_input.rs`), and brings the world up to date after every edit
+//! ([`EditWorld::follow`]). Leaving gives the view back: the game plays the edited level
+//! ("play from here").
+//!
+//! Main thread, inside the runner's egui pass. Must not: render, or run the game's hooks.
+
+use glam::Vec3;
+use hecs::Entity;
+
+use super::camera::EditorCamera;
+use super::gizmo::Gizmo;
+use super::target::EditTarget;
+use super::world::{EditWorld, Followed};
+use crate::app::engine::Engine;
+use crate::app::level::SpawnedLevel;
+use crate::ecs::{CameraRig, Transform};
+use crate::editor::{
+    DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, Touch, discard_recovery,
+    find_recovery, restore_recovery,
+};
+
+/// Seconds between two recovery files while there are unsaved changes.
+pub const AUTOSAVE_SECONDS: f64 = 60.0;
+/// Messages kept for the toolbar.
+const MESSAGES: usize = 5;
+
+/// What one pass of the editor did, for the runner.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct EditFrame {
+    /// The level was spawned again: the game's handles are stale (`Game::level_respawned`).
+    pub respawned: bool,
+    /// A save was written this pass.
+    pub saved: bool,
+}
+
+/// The editor over a running level.
+pub struct EditMode {
+    pub state: EditorState,
+    pub world: EditWorld,
+    pub camera: Option<EditorCamera>,
+    pub gizmo: Gizmo,
+    /// The camera entity the editor drives and its transform before it took it.
+    taken: Option<(Entity, Transform)>,
+    /// A camera the editor spawned because the world had none.
+    own_camera: Option<Entity>,
+    active: bool,
+    pub(super) messages: Vec<String>,
+    /// A recovery file newer than the level, offered on opening.
+    pub(super) recovery: Option<RecoveryInfo>,
+    last_autosave: Option<f64>,
+    /// The last pick (instance under the click), for tools and tests.
+    pub last_pick: Option<Picked>,
+    /// The toolbar's Restore was clicked (carried out after the pass's drawing).
+    pub(super) pending_restore: bool,
+}
+
+impl EditMode {
+    /// Opens `target`'s level file for editing over the world the game spawned (`spawned`).
+    pub fn open(target: EditTarget, spawned: SpawnedLevel) -> Result<Self, DocumentError> {
+        let state = EditorState::open(&target.path)?;
+        let recovery = find_recovery(&target.path);
+        Ok(Self {
+            state,
+            world: EditWorld::new(target, spawned),
+            camera: None,
+            gizmo: Gizmo::default(),
+            taken: None,
+            own_camera: None,
+            active: false,
+            messages: Vec::new(),
+            recovery,
+            last_autosave: None,
+            last_pick: None,
+            pending_restore: false,
+        })
+    }
+
+    /// Whether edit mode is on.
+    pub fn active(&self) -> bool {
+        self.active
+    }
+
+    pub(super) fn say(&mut self, message: impl Into<String>) {
+        let message = message.into();
+        log::info!("editor: {message}");
+        self.messages.push(message);
+        if self.messages.len() > MESSAGES {
+            self.messages.remove(0);
+        }
+    }
+
+    /// Turns edit mode on: the level spawned again from the document, the view taken over.
+    /// Returns what happened to the world (the runner tells the game when it was respawned).
+    pub fn enter(&mut self, engine: &mut Engine) -> EditFrame {
+        let mut frame = EditFrame::default();
+        if self.active {
+            return frame;
+        }
+        self.active = true;
+        match self.world.respawn(engine, &self.state.doc.level) {
+            Ok(()) => frame.respawned = true,
+            Err(e) => self.say(format!("the level does not load: {e}")),
+        }
+        self.take_camera(engine);
+        frame
+    }
+
+    /// Turns edit mode off: the game's camera back where it was; the world stays as edited.
+    /// A recovery file is written when there are unsaved changes.
+    pub fn leave(&mut self, engine: &mut Engine) {
+        if !self.active {
+            return;
+        }
+        self.active = false;
+        self.gizmo.end();
+        self.state.end_drag();
+        if let Some((entity, transform)) = self.taken.take() {
+            let _ = engine.world.insert_one(entity, transform);
+        }
+        if let Some(entity) = self.own_camera.take() {
+            let _ = engine.world.despawn(entity);
+        }
+        if self.state.dirty() {
+            self.autosave();
+        }
+        engine.cut();
+    }
+
+    fn take_camera(&mut self, engine: &mut Engine) {
+        let found = engine
+            .world
+            .query::<(Entity, &CameraRig, &Transform)>()
+            .iter()
+            .next()
+            .map(|(e, rig, t)| (e, *rig, *t));
+        let (entity, rig, transform) = match found {
+            Some(found) => found,
+            None => {
+                let desc = engine.environment().default_camera;
+                let (_, transform, rig) = crate::app::FlyCamera::from_view(&desc, 4.0);
+                let entity = engine.world.spawn((transform, rig));
+                self.own_camera = Some(entity);
+                (entity, rig, transform)
+            }
+        };
+        self.taken = Some((entity, transform));
+        let camera = self.camera.get_or_insert_with(|| {
+            EditorCamera::from_transform(&transform, rig, level_speed(&self.world, &self.state))
+        });
+        camera.rig = rig;
+        let _ = engine.world.insert_one(entity, camera.transform());
+    }
+
+    /// The camera entity's transform follows the editor camera.
+    pub(super) fn place_camera(&mut self, engine: &mut Engine) {
+        if let (Some((entity, _)), Some(camera)) = (self.taken, self.camera) {
+            let transform = camera.transform();
+            let moved = engine
+                .world
+                .get::<&Transform>(entity)
+                .map_or(true, |t| *t != transform);
+            if moved {
+                let _ = engine.world.insert_one(entity, transform);
+            }
+        }
+    }
+
+    /// One egui pass of the editor (nothing while it is off).
+    pub fn ui(&mut self, ctx: &egui::Context, engine: &mut Engine) -> EditFrame {
+        let mut frame = EditFrame::default();
+        if !self.active {
+            return frame;
+        }
+        let out = crate::editor::ui::panels(ctx, &mut self.state);
+        for e in &out.errors {
+            self.say(e.clone());
+        }
+        let mut touched = out.touched;
+        let mut save = out.save;
+        save |= self.toolbar(ctx);
+        touched.extend(self.view_input(ctx, engine));
+        self.place_camera(engine);
+        frame.respawned = self.follow(engine, touched);
+        if std::mem::take(&mut self.pending_restore) {
+            frame.respawned |= self.restore(engine);
+        }
+        self.draw_overlay(ctx);
+        if save {
+            frame.saved = self.save();
+        }
+        let now = ctx.input(|i| i.time);
+        let due = self
+            .last_autosave
+            .is_none_or(|t| now - t >= AUTOSAVE_SECONDS);
+        if self.state.dirty() && due {
+            if self.last_autosave.is_some() {
+                self.autosave();
+            }
+            self.last_autosave = Some(now);
+        }
+        frame
+    }
+
+    /// Applies `edit` as a panel's typed field does (one command) and brings the world up to
+    /// date.
+    pub fn apply(&mut self, engine: &mut Engine, edit: Edit) -> Result<EditFrame, EditError> {
+        let touch = self.state.apply(edit)?;
+        Ok(EditFrame {
+            respawned: self.follow(engine, vec![touch]),
+            saved: false,
+        })
+    }
+
+    /// Undoes the last command and brings the world up to date (`false`: nothing to undo).
+    pub fn undo(&mut self, engine: &mut Engine) -> Result<bool, EditError> {
+        let Some(touch) = self.state.undo()? else {
+            return Ok(false);
+        };
+        self.follow(engine, vec![touch]);
+        Ok(true)
+    }
+
+    /// Redoes the last undone command and brings the world up to date.
+    pub fn redo(&mut self, engine: &mut Engine) -> Result<bool, EditError> {
+        let Some(touch) = self.state.redo()? else {
+            return Ok(false);
+        };
+        self.follow(engine, vec![touch]);
+        Ok(true)
+    }
+
+    /// Brings the world up to date after `touched` (one respawn at most per pass).
+    pub(super) fn follow(&mut self, engine: &mut Engine, touched: Vec<Touch>) -> bool {
+        let mut moved = Vec::new();
+        let mut level = false;
+        for touch in touched {
+            match touch {
+                Touch::Transforms(indices) => moved.extend(indices),
+                Touch::Level => level = true,
+            }
+        }
+        moved.sort_unstable();
+        moved.dedup();
+        let touch = if level {
+            Touch::Level
+        } else if moved.is_empty() {
+            return false;
+        } else {
+            Touch::Transforms(moved)
+        };
+        match self.world.follow(engine, &self.state.doc.level, &touch) {
+            Ok(Followed::Respawned) => true,
+            Ok(Followed::Moved(_)) => false,
+            Err(e) => {
+                self.say(format!("the world keeps its last good state: {e}"));
+                false
+            }
+        }
+    }
+
+    /// Saves through the target's asset root; says what happened.
+    pub fn save(&mut self) -> bool {
+        let root = self.world.target.root.clone();
+        let saved = match self.world.target.check.clone() {
+            Some(check) => {
+                let problems = check(&self.state.doc.level);
+                self.state.save_checked(problems)
+            }
+            None => self.state.save(Some(&root)),
+        };
+        match saved {
+            Ok(report) => {
+                self.say(format!(
+                    "saved {} ({} bytes)",
+                    report.path.display(),
+                    report.bytes
+                ));
+                true
+            }
+            Err(e) => {
+                self.say(format!("not saved: {e}"));
+                false
+            }
+        }
+    }
+
+    /// Writes the recovery file; says where, or why not.
+    pub fn autosave(&mut self) {
+        match self.state.write_recovery() {
+            Ok(path) => log::info!("editor: recovery file {}", path.display()),
+            Err(e) => self.say(format!("no recovery file: {e}")),
+        }
+    }
+
+    /// Replaces the document by the recovery file offered on opening (unsaved).
+    pub(super) fn restore(&mut self, engine: &mut Engine) -> bool {
+        let path = self.state.path.clone();
+        self.recovery = None;
+        match restore_recovery(&path) {
+            Ok(doc) => {
+                let selection = std::mem::take(&mut self.state.selection);
+                self.state = EditorState::new(&path, doc);
+                self.state.selection = selection;
+                self.state
+                    .selection
+                    .retain_below(self.state.doc.level.instances.len());
+                self.say("restored the recovery file (not saved yet)");
+                self.follow(engine, vec![Touch::Level])
+            }
+            Err(e) => {
+                self.say(format!("cannot restore: {e}"));
+                false
+            }
+        }
+    }
+
+    pub(super) fn discard_offer(&mut self) {
+        self.recovery = None;
+        if let Err(e) = discard_recovery(&self.state.path) {
+            self.say(format!("cannot remove the recovery file: {e}"));
+        }
+    }
+
+    /// Centre and radius (metres) of the selected instances' bounds, or of the whole level
+    /// when nothing is selected.
+    pub fn focus_sphere(&self) -> Option<(Vec3, f32)> {
+        let level = &self.state.doc.level;
+        let selected = self.state.selection.instances();
+        let indices: Vec<usize> = if selected.is_empty() {
+            (0..level.instances.len()).collect()
+        } else {
+            selected.to_vec()
+        };
+        let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+        for i in indices {
+            for p in self.world.world_box(level, i).into_iter().flatten() {
+                lo = lo.min(p);
+                hi = hi.max(p);
+            }
+        }
+        (lo.x <= hi.x).then(|| ((lo + hi) * 0.5, (hi - lo).length() * 0.5))
+    }
+}
+
+/// A fly speed for the level: its size crossed in about ten seconds.
+fn level_speed(world: &EditWorld, state: &EditorState) -> f32 {
+    let level = &state.doc.level;
+    let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+    for i in 0..level.instances.len() {
+        for p in world.world_box(level, i).into_iter().flatten() {
+            lo = lo.min(p);
+            hi = hi.max(p);
+        }
+    }
+    if lo.x <= hi.x {
+        ((hi - lo).length() / 10.0).clamp(0.5, 50.0)
+    } else {
+        4.0
+    }
+}

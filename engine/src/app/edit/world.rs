@@ -1,0 +1,272 @@
+//! [`EditWorld`]: keeping the running world in step with the editor's document (issue 12,
+//! `docs/EDITOR.md` "Keeping the world in step"), so that an edit is seen lit at once.
+//!
+//! After each applied edit, undo or redo the editor hands its [`Touch`] here:
+//! - `Touch::Transforms`: each moved instance's entity gets its new `Transform` in place
+//!   (static entities are marked `Restyled` so the extractor looks at them again) and its
+//!   body, if it has one, is teleported there; a body whose scale changed is rebuilt with the
+//!   whole level, since its collider was built at the old scale.
+//! - `Touch::Level` (models, materials, gameplay, inserted or deleted instances): the world is
+//!   built again from the document ([`EditTarget::build`]) and the level spawned again in place
+//!   of the old one — its entities, characters and their children despawned, light groups
+//!   back on, the level's logic restarted. Models are registered again only when the
+//!   document's model sections changed. A document that does not load keeps the old world and
+//!   returns the error (the editor shows it; the save check names it too).
+//!
+//! Main thread, outside the engine's frame. Must not: touch the renderer (everything reaches it
+//! through the next commit) or the document.
+
+use std::collections::HashSet;
+
+use glam::{Vec3, Vec4Swizzles};
+use hecs::Entity;
+
+use super::target::EditTarget;
+use crate::app::engine::Engine;
+use crate::app::level::SpawnedLevel;
+use crate::assets::{AssetError, Level, SceneDesc};
+use crate::ecs::{ModelHandle, Parent, Restyled, Static, Transform};
+use crate::editor::Touch;
+use crate::level::PlayableLevel;
+use crate::sim::physics::RigidBody;
+
+/// What following an edit did to the world.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Followed {
+    /// Entities moved in place (this many).
+    Moved(usize),
+    /// The level was spawned again: the game's handles of its entities are stale.
+    Respawned,
+}
+
+/// Model-space bounds (metres, min and max corners).
+pub type Bounds = (Vec3, Vec3);
+
+/// The world of a level being edited: the target, what is spawned of it, and the bounds of
+/// each document instance's model (for the selection highlight and framing).
+pub struct EditWorld {
+    pub target: EditTarget,
+    spawned: SpawnedLevel,
+    /// Model-space bounds of each world instance's model, in world instance order.
+    bounds: Vec<Option<Bounds>>,
+    /// The model sections the registered models were built from.
+    sections: Option<ModelSections>,
+}
+
+/// The parts of a level its models are built from.
+#[derive(Clone, PartialEq)]
+struct ModelSections {
+    models: Vec<crate::assets::ModelEntry>,
+    grids: Vec<crate::assets::GridEntry>,
+    boxes: Vec<crate::assets::BoxEntry>,
+    terrains: Vec<crate::assets::TerrainEntry>,
+    cities: Vec<crate::assets::CityEntry>,
+}
+
+impl ModelSections {
+    fn of(level: &Level) -> Self {
+        Self {
+            models: level.models.clone(),
+            grids: level.grids.clone(),
+            boxes: level.boxes.clone(),
+            terrains: level.terrains.clone(),
+            cities: level.cities.clone(),
+        }
+    }
+}
+
+impl EditWorld {
+    /// The world as the game spawned it (`spawned`); nothing is known of its models until the
+    /// first [`EditWorld::respawn`].
+    pub fn new(target: EditTarget, spawned: SpawnedLevel) -> Self {
+        Self {
+            target,
+            spawned,
+            bounds: Vec::new(),
+            sections: None,
+        }
+    }
+
+    /// What is spawned now.
+    pub fn spawned(&self) -> &SpawnedLevel {
+        &self.spawned
+    }
+
+    /// The entity of each of the document's instances, in document order (those the world
+    /// does not have are left out at the end).
+    pub fn entities(&self, level: &Level) -> &[Entity] {
+        let all = &self.spawned.entities;
+        let first = self.target.first_instance.min(all.len());
+        let end = (first + level.instances.len()).min(all.len());
+        &all[first..end]
+    }
+
+    /// World-space corners of document instance `index`'s model bounds, if known.
+    pub fn world_box(&self, level: &Level, index: usize) -> Option<[Vec3; 8]> {
+        let (lo, hi) = (*self.bounds.get(self.target.first_instance + index)?)?;
+        let m = level.instances.get(index)?.transform.world_from_model();
+        let mut out = [Vec3::ZERO; 8];
+        for (k, corner) in out.iter_mut().enumerate() {
+            let p = Vec3::new(
+                if k & 1 == 0 { lo.x } else { hi.x },
+                if k & 2 == 0 { lo.y } else { hi.y },
+                if k & 4 == 0 { lo.z } else { hi.z },
+            );
+            *corner = m.transform_point3(p);
+        }
+        Some(out)
+    }
+
+    /// Brings the world up to date after an edit of `level` (the edited document) that
+    /// changed `touch`.
+    pub fn follow(
+        &mut self,
+        engine: &mut Engine,
+        level: &Level,
+        touch: &Touch,
+    ) -> Result<Followed, AssetError> {
+        match touch {
+            Touch::Transforms(indices) => match self.move_in_place(engine, level, indices) {
+                Some(moved) => Ok(Followed::Moved(moved)),
+                None => self.respawn(engine, level).map(|()| Followed::Respawned),
+            },
+            Touch::Level => self.respawn(engine, level).map(|()| Followed::Respawned),
+        }
+    }
+
+    /// Moves the entities of `indices` to their document transforms; `None` when one of them
+    /// cannot be moved in place (a body whose scale changed, an instance the world lacks).
+    fn move_in_place(
+        &mut self,
+        engine: &mut Engine,
+        level: &Level,
+        indices: &[usize],
+    ) -> Option<usize> {
+        let mut moves = Vec::with_capacity(indices.len());
+        for &index in indices {
+            let entry = level.instances.get(index)?;
+            let entity = *self.entities(level).get(index)?;
+            let transform = Transform::from_matrix(entry.transform.world_from_model());
+            let world = &engine.world;
+            let old_scale = world.get::<&Transform>(entity).ok()?.scale;
+            let has_body = world.satisfies::<&RigidBody>(entity);
+            if has_body && !old_scale.abs_diff_eq(transform.scale, 1e-6) {
+                return None;
+            }
+            moves.push((entity, transform, has_body));
+        }
+        for &(entity, transform, has_body) in &moves {
+            let is_static = engine.world.satisfies::<&Static>(entity);
+            let _ = engine.world.insert_one(entity, transform);
+            if is_static {
+                let _ = engine.world.insert_one(entity, Restyled);
+            }
+            if has_body {
+                engine
+                    .physics
+                    .set_pose(entity, transform.translation, transform.rotation);
+            }
+        }
+        Some(moves.len())
+    }
+
+    /// Builds the world from `level` and spawns it in place of the old one (also what the
+    /// editor does when it opens, so that what was played is discarded).
+    pub fn respawn(&mut self, engine: &mut Engine, level: &Level) -> Result<(), AssetError> {
+        let playable = (self.target.build)(level)?;
+        let sections = ModelSections::of(level);
+        let reuse = (self.sections.as_ref() == Some(&sections)
+            && self.spawned.models.len() == playable.scene.models.len())
+        .then(|| self.spawned.models.clone());
+        engine.despawn_level(&self.spawned, &playable);
+        self.spawned = engine.spawn_level_with(&playable, reuse);
+        self.bounds = model_bounds(&playable);
+        self.sections = Some(sections);
+        engine.cut();
+        Ok(())
+    }
+}
+
+/// The bounds of each instance's model (model space, over its placed meshes).
+fn model_bounds(level: &PlayableLevel) -> Vec<Option<Bounds>> {
+    let desc: &SceneDesc = &level.scene;
+    let per_model: Vec<Option<Bounds>> = desc
+        .models
+        .iter()
+        .map(|model| {
+            let (mut lo, mut hi) = (Vec3::INFINITY, Vec3::NEG_INFINITY);
+            for placement in &model.placements {
+                let Some(mesh) = model.meshes.get(placement.mesh) else {
+                    continue;
+                };
+                for p in &mesh.positions {
+                    let w = (placement.model_from_mesh * p.extend(1.0)).xyz();
+                    lo = lo.min(w);
+                    hi = hi.max(w);
+                }
+            }
+            (lo.x <= hi.x).then_some((lo, hi))
+        })
+        .collect();
+    desc.instances
+        .iter()
+        .map(|i| per_model.get(i.model).copied().flatten())
+        .collect()
+}
+
+impl Engine {
+    /// Despawns what [`Engine::spawn_level`] spawned (`spawned`): the instances' entities, the
+    /// characters, and every entity parented to one of them (laser beam prisms, characters'
+    /// models); stops the level's logic; turns back on the light groups that `next` (the level
+    /// about to be spawned) or the old entities use, so the next spawn starts from the level's
+    /// own `lights_off`.
+    pub fn despawn_level(&mut self, spawned: &SpawnedLevel, next: &PlayableLevel) {
+        let mut doomed: HashSet<Entity> = spawned.entities.iter().copied().collect();
+        for c in spawned.characters.values() {
+            doomed.insert(c.body);
+            doomed.insert(c.visual);
+        }
+        loop {
+            let children: Vec<Entity> = self
+                .world
+                .query::<(Entity, &Parent)>()
+                .iter()
+                .filter(|(e, p)| doomed.contains(&p.0) && !doomed.contains(e))
+                .map(|(e, _)| e)
+                .collect();
+            if children.is_empty() {
+                break;
+            }
+            doomed.extend(children);
+        }
+        let mut groups: HashSet<u32> = next
+            .scene
+            .instances
+            .iter()
+            .filter_map(|i| i.light_group)
+            .collect();
+        groups.extend(next.gameplay.lights_off.iter().copied());
+        for e in &doomed {
+            if let Ok(g) = self.world.get::<&crate::ecs::LightGroup>(*e) {
+                groups.insert(g.0);
+            }
+        }
+        for e in doomed {
+            let _ = self.world.despawn(e);
+        }
+        for group in groups {
+            self.upkeep.set_light_group(group, true);
+        }
+        self.logic = Default::default();
+    }
+
+    /// [`Engine::spawn_level`], reusing `models` (the handles a previous spawn registered for
+    /// the same model list) instead of registering the level's models again.
+    pub fn spawn_level_with(
+        &mut self,
+        level: &PlayableLevel,
+        models: Option<Vec<ModelHandle>>,
+    ) -> SpawnedLevel {
+        self.spawn_level_models(level, models)
+    }
+}
