@@ -10,7 +10,7 @@
 //! kilobytes of text.
 //! Also [`sounds`]: the games' sounds (`assets/common/sounds/*.wav`), synthesised; and
 //! [`reflect_kit`]: the game Reflect's art kit (`assets/reflect/kit/`, glTF + PNG, written by
-//! [`gltf_writer`]). Must not: depend on third-party data.
+//! [`gltf_writer`]); [`gltf_skin`] writes skinned, animated GLBs. Must not: depend on third-party data.
 
 use candela::assets::{
     BoxEntry, CameraDesc, CityEntry, GridEntry, InstanceEntry, Level, LevelMaterial, MaterialKind,
@@ -18,6 +18,8 @@ use candela::assets::{
 };
 
 mod gltf_json;
+pub mod gltf_skin;
+mod gltf_skin_json;
 pub mod gltf_writer;
 pub mod reflect_kit;
 mod reflect_sounds;
