@@ -200,9 +200,14 @@ pub fn rest_world(joints: &[JointSpec]) -> anyhow::Result<Vec<Mat4>> {
 fn check_part(p: usize, part: &SkinnedPart, joints: usize, materials: usize) -> anyhow::Result<()> {
     let n = part.positions.len();
     anyhow::ensure!(
-        [part.normals.len(), part.uvs.len(), part.joints.len(), part.weights.len()]
-            .iter()
-            .all(|&len| len == n),
+        [
+            part.normals.len(),
+            part.uvs.len(),
+            part.joints.len(),
+            part.weights.len()
+        ]
+        .iter()
+        .all(|&len| len == n),
         "part {p}: attribute lengths differ"
     );
     anyhow::ensure!(part.material < materials, "part {p}: no such material");
@@ -215,7 +220,10 @@ fn check_part(p: usize, part: &SkinnedPart, joints: usize, materials: usize) -> 
         "part {p}: an index out of range"
     );
     anyhow::ensure!(
-        part.joints.iter().flatten().all(|&j| usize::from(j) < joints),
+        part.joints
+            .iter()
+            .flatten()
+            .all(|&j| usize::from(j) < joints),
         "part {p}: a joint index out of range"
     );
     Ok(())
@@ -254,7 +262,12 @@ pub fn write_skinned_glb(
             let bytes = part.joints.iter().flatten().flat_map(|j| j.to_le_bytes());
             (bytes.collect(), UNSIGNED_SHORT)
         };
-        let joints_0 = bin.push(joint_bytes, Some(ARRAY_BUFFER), (joint_type, n, "VEC4"), None);
+        let joints_0 = bin.push(
+            joint_bytes,
+            Some(ARRAY_BUFFER),
+            (joint_type, n, "VEC4"),
+            None,
+        );
         let weights = floats(part.weights.iter().flatten().copied());
         let weights_0 = bin.push(weights, Some(ARRAY_BUFFER), (FLOAT, n, "VEC4"), None);
         let index_bytes = part.indices.iter().flat_map(|i| i.to_le_bytes()).collect();
@@ -356,7 +369,11 @@ pub fn write_skinned_glb(
         });
     }
     let mut scene_nodes = vec![0];
-    scene_nodes.extend((0..joints.len()).filter(|&j| joints[j].parent.is_none()).map(|j| 1 + j));
+    scene_nodes.extend(
+        (0..joints.len())
+            .filter(|&j| joints[j].parent.is_none())
+            .map(|j| 1 + j),
+    );
     let root = SkinRoot {
         asset: Asset {
             version: "2.0",
@@ -369,7 +386,10 @@ pub fn write_skinned_glb(
             name: name.to_string(),
             primitives,
         }],
-        materials: materials.iter().map(material_json).collect::<Result<_, _>>()?,
+        materials: materials
+            .iter()
+            .map(material_json)
+            .collect::<Result<_, _>>()?,
         skins: vec![SkinJson {
             name: name.to_string(),
             inverse_bind_matrices,
