@@ -14,8 +14,7 @@
 //! joints. JOINTS_0 is `u8` when there are at most 256 joints, else `u16`; WEIGHTS_0 is
 //! `f32`. The buffer holds, in order: each part's positions, normals, texture coordinates,
 //! joints, weights and indices, then the inverse bind matrices, then each clip's key times
-//! and each channel's values. The JSON chunk is padded with spaces and the binary chunk with
-//! zeros to four bytes (glTF 2.0 §4.4).
+//! and each channel's values; `gltf_skin_bin` packs it and the GLB container.
 //!
 //! Deterministic bytes: the JSON comes from the `derive(Serialize)` structs of
 //! `gltf_skin_json`, written compact by `serde_json`; the buffer is little-endian. Must not:
@@ -24,10 +23,14 @@
 
 use glam::{Mat4, Quat, Vec3};
 
-use crate::gltf_json::{Accessor, Asset, Material, MaterialExtensions, Pbr, Scene};
+use crate::gltf_json::{Asset, Material, MaterialExtensions, Pbr, Scene};
+use crate::gltf_skin_bin::{
+    ARRAY_BUFFER, Bin, ELEMENT_ARRAY_BUFFER, FLOAT, UNSIGNED_BYTE, UNSIGNED_INT, UNSIGNED_SHORT,
+    bounds, floats, glb,
+};
 use crate::gltf_skin_json::{
     AnimationJson, ChannelJson, GlbBuffer, SamplerJson, SkinAttributes, SkinJson, SkinMesh,
-    SkinNode, SkinPrimitive, SkinRoot, TargetJson, View,
+    SkinNode, SkinPrimitive, SkinRoot, TargetJson,
 };
 use crate::gltf_writer::MaterialSpec;
 
@@ -84,72 +87,6 @@ pub struct ClipSpec {
     pub name: String,
     pub times: Vec<f32>,
     pub channels: Vec<ChannelSpec>,
-}
-
-const ARRAY_BUFFER: u32 = 34962;
-const ELEMENT_ARRAY_BUFFER: u32 = 34963;
-const UNSIGNED_BYTE: u32 = 5121;
-const UNSIGNED_SHORT: u32 = 5123;
-const UNSIGNED_INT: u32 = 5125;
-const FLOAT: u32 = 5126;
-
-/// The binary buffer and its views and accessors, as they are written.
-#[derive(Default)]
-struct Bin {
-    bytes: Vec<u8>,
-    views: Vec<View>,
-    accessors: Vec<Accessor>,
-}
-
-impl Bin {
-    /// Appends `bytes` (padded to 4) as a view and an accessor over it; returns the accessor.
-    fn push(
-        &mut self,
-        bytes: Vec<u8>,
-        target: Option<u32>,
-        accessor: (u32, usize, &'static str),
-        bounds: Option<(Vec<f32>, Vec<f32>)>,
-    ) -> usize {
-        let offset = self.bytes.len();
-        self.bytes.extend_from_slice(&bytes);
-        while !self.bytes.len().is_multiple_of(4) {
-            self.bytes.push(0);
-        }
-        self.views.push(View {
-            buffer: 0,
-            byte_offset: offset,
-            byte_length: bytes.len(),
-            target,
-        });
-        let (component_type, count, kind) = accessor;
-        let (min, max) = bounds.unzip();
-        self.accessors.push(Accessor {
-            buffer_view: self.views.len() - 1,
-            component_type,
-            count,
-            kind,
-            min,
-            max,
-        });
-        self.accessors.len() - 1
-    }
-}
-
-fn floats(values: impl IntoIterator<Item = f32>) -> Vec<u8> {
-    values.into_iter().flat_map(f32::to_le_bytes).collect()
-}
-
-/// Per-component bounds of `values` taken `width` at a time.
-fn bounds(values: &[f32], width: usize) -> (Vec<f32>, Vec<f32>) {
-    let mut min = vec![f32::INFINITY; width];
-    let mut max = vec![f32::NEG_INFINITY; width];
-    for chunk in values.chunks_exact(width) {
-        for k in 0..width {
-            min[k] = min[k].min(chunk[k]);
-            max[k] = max[k].max(chunk[k]);
-        }
-    }
-    (min, max)
 }
 
 fn material_json(m: &MaterialSpec) -> anyhow::Result<Material> {
@@ -403,26 +340,4 @@ pub fn write_skinned_glb(
         }],
     };
     Ok(glb(serde_json::to_vec(&root)?, bin.bytes))
-}
-
-/// The GLB container: header, JSON chunk (space-padded), BIN chunk (zero-padded).
-fn glb(mut json: Vec<u8>, mut bin: Vec<u8>) -> Vec<u8> {
-    while !json.len().is_multiple_of(4) {
-        json.push(b' ');
-    }
-    while !bin.len().is_multiple_of(4) {
-        bin.push(0);
-    }
-    let total = 12 + 8 + json.len() + 8 + bin.len();
-    let mut out = Vec::with_capacity(total);
-    out.extend_from_slice(b"glTF");
-    out.extend_from_slice(&2u32.to_le_bytes());
-    out.extend_from_slice(&(total as u32).to_le_bytes());
-    out.extend_from_slice(&(json.len() as u32).to_le_bytes());
-    out.extend_from_slice(b"JSON");
-    out.extend_from_slice(&json);
-    out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
-    out.extend_from_slice(b"BIN\0");
-    out.extend_from_slice(&bin);
-    out
 }

@@ -20,6 +20,7 @@ use candela::assets::{
 
 mod gltf_json;
 pub mod gltf_skin;
+mod gltf_skin_bin;
 mod gltf_skin_json;
 pub mod gltf_writer;
 pub mod hero;
