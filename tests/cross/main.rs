@@ -15,6 +15,7 @@ mod far_from_origin;
 mod furnace;
 mod gpu_matches_cpu;
 mod headless;
+mod hero;
 mod layout;
 mod many_lights;
 mod present;

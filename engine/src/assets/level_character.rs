@@ -11,14 +11,14 @@
 //! ```ron
 //! characters: [(
 //!     name: "hero",
-//!     model: "shared/external/gltf/Fox/glTF-Binary/Fox.glb",
-//!     scale: 0.01, model_yaw_deg: 180, spawn: (0, 0, 6),
-//!     capsule: (height: 0.9, radius: 0.3),
+//!     model: "common/hero/hero.glb",
+//!     scale: 1, model_yaw_deg: 180, spawn: (0, 0, 6),
+//!     capsule: (height: 1.8, radius: 0.3),
 //!     controller: (walk_speed: 2, run_speed: 5),
 //!     states: [
-//!         (name: "idle", clip: "Survey", contact: Grounded, max_speed_mps: 0.2),
-//!         (name: "walk", clip: "Walk", contact: Grounded, min_speed_mps: 0.2,
-//!          max_speed_mps: 3.5, reference_speed_mps: 2.0),
+//!         (name: "idle", clip: "idle", contact: Grounded, max_speed_mps: 0.2),
+//!         (name: "walk", clip: "walk", contact: Grounded, min_speed_mps: 0.2,
+//!          max_speed_mps: 3.5, reference_speed_mps: 1.45),
 //!     ],
 //! )]
 //! ```
@@ -52,7 +52,8 @@ pub struct CharacterEntry {
     pub name: String,
     /// The glTF file (`.gltf` or `.glb`), relative to the asset root.
     pub model: String,
-    /// Uniform scale of the model (Fox.glb is in centimetres: 0.01).
+    /// Uniform scale of the model (1 for the hero, which is in metres; a model in centimetres
+    /// takes 0.01).
     #[serde(default = "one")]
     pub scale: f32,
     /// Turns the model about +Y so that it faces −Z, the engine's forward (glTF characters

@@ -1,5 +1,5 @@
 //! Skinned characters declared in level files: the committed third-person courtyard loads
-//! its Fox with the states' clips resolved, and `Engine::spawn_level` makes a capsule body
+//! its hero (`assets/common/hero/hero.glb`) with the states' clips resolved, and `Engine::spawn_level` makes a capsule body
 //! with the controller and the state machine plus a child entity drawing the skinned model,
 //! which stands idle on the ground; bad data — a missing model file, a clip the model does not
 //! have, bad numbers, a model that is not a single skinned mesh — fails at load time with a
@@ -19,18 +19,20 @@ fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-/// The folder holding the repository and `shared/`: the courtyard's asset root.
+/// The folder holding the repository and `shared/` (the bad-data cases below read the glTF
+/// samples from ../shared/external).
 fn workspace_parent() -> PathBuf {
     repo().join("..")
 }
 
+/// The courtyard, with the repository's `assets/` folder as its asset root.
 fn courtyard() -> anyhow::Result<PlayableLevel> {
     let level = repo().join("assets/test_scenes/platform/third_person.ron");
-    Ok(load_level(&level, &AssetRoot::new(workspace_parent())?)?)
+    Ok(load_level(&level, &AssetRoot::new(repo().join("assets"))?)?)
 }
 
 #[test]
-fn the_courtyard_loads_its_fox_with_resolved_states() -> anyhow::Result<()> {
+fn the_courtyard_loads_its_hero_with_resolved_states() -> anyhow::Result<()> {
     let level = courtyard()?;
     assert_eq!(level.characters.len(), 1);
     let hero = &level.characters[0];
@@ -46,9 +48,16 @@ fn the_courtyard_loads_its_fox_with_resolved_states() -> anyhow::Result<()> {
         let s = hero.machine.states().iter().find(|s| s.name == state);
         s.map(|s| hero.animated.clips[s.clip].name.as_str())
     };
-    assert_eq!(clip_of("idle"), Some("Survey"));
-    assert_eq!(clip_of("walk"), Some("Walk"));
-    assert_eq!(clip_of("run"), Some("Run"));
+    for state in ["jump", "fall", "idle", "walk", "run"] {
+        assert_eq!(
+            clip_of(state),
+            Some(state),
+            "the hero's clips are named as the states"
+        );
+    }
+    assert_eq!(hero.model_path, "common/hero/hero.glb");
+    assert_eq!((hero.scale, hero.height, hero.radius), (1.0, 1.8, 0.3));
+    assert_eq!(hero.animated.skins[0].joints.len(), 17);
     assert_eq!(hero.controller.walk_speed, 2.0);
     assert_eq!(hero.controller.run_speed, 5.0);
     assert_eq!(
@@ -85,7 +94,7 @@ fn spawning_makes_a_body_and_a_drawn_child_that_stand_idle() -> anyhow::Result<(
         .pose(hero.body)
         .ok_or_else(|| anyhow::anyhow!("no body"))?;
     assert!(
-        (centre - glam::Vec3::new(0.0, 0.45, 6.0)).length() < 0.05,
+        (centre - glam::Vec3::new(0.0, 0.9, 6.0)).length() < 0.05,
         "{centre}"
     );
     let feet = world

@@ -211,14 +211,14 @@ fn unknown_shape_is_refused() {
 
 /// The asset root a repository level is loaded with: the reference scenes and the bench hall
 /// name files in `shared/external` (their headers say which folder); the gameplay levels name
-/// sounds under `assets/common/`; the third-person courtyard names the Fox as
-/// `shared/external/...` from the folder holding the repository; the others are engine-made or
-/// name files under `assets/test_scenes/`.
+/// sounds under `assets/common/`; the third-person courtyard names its hero as
+/// `common/hero/hero.glb` under `assets/`; the others are engine-made or name files under
+/// `assets/test_scenes/`.
 fn root_of(level: &Path, assets: &Path) -> PathBuf {
     let external = assets.join("../../shared/external");
     let relative = level.strip_prefix(assets).unwrap_or(level);
     if relative == Path::new("test_scenes/platform/third_person.ron") {
-        return assets.join("../..");
+        return assets.to_path_buf();
     }
     match relative.parent().and_then(|p| p.to_str()) {
         Some("test_scenes/reference") => external

@@ -1,8 +1,9 @@
 //! The third-person player end to end, headless on the CPU tracer: the committed replay
 //! (`assets/test_scenes/platform/third_person.replay`, written by the example
-//! `record_third_person_replay`) drives the Fox of the courtyard level through the doorway —
-//! the character moves relative to the camera, the follow camera pulls in under the lintel
-//! (ray queries on the last commit, skipping the Fox's own mesh) and eases back out without a
+//! `record_third_person_replay`) drives the hero of the courtyard level
+//! (`assets/common/hero/hero.glb`, asset root `assets/`) through the doorway — the character
+//! moves relative to the camera, the follow camera pulls in under the lintel (ray queries on
+//! the last commit, skipping the hero's own mesh) and eases back out without a
 //! jump, and the animation goes idle → walk → run → idle. Two runs give the same state hash at
 //! every step.
 
@@ -127,7 +128,7 @@ impl Game for ThirdPerson {
 fn play() -> anyhow::Result<Vec<Sample>> {
     let folder = repo().join("assets/test_scenes/platform");
     let level_path = folder.join("third_person.ron");
-    let level = load_level(&level_path, &AssetRoot::new(repo().join(".."))?)?;
+    let level = load_level(&level_path, &AssetRoot::new(repo().join("assets"))?)?;
     let mut engine = Engine::new(RenderConfig::cpu(8, 8), Environment::of(&level.scene))?;
     let set = ActionSet::standard();
     engine.set_actions(set.clone());
@@ -166,17 +167,19 @@ fn play() -> anyhow::Result<Vec<Sample>> {
 }
 
 #[test]
-fn the_replay_walks_the_fox_through_the_doorway_with_the_camera_pulling_in() -> anyhow::Result<()> {
+fn the_replay_walks_the_hero_through_the_doorway_with_the_camera_pulling_in() -> anyhow::Result<()>
+{
     let samples = play()?;
     let last = samples.last().ok_or_else(|| anyhow::anyhow!("no steps"))?;
-    // The wall stands at z = 0 (0.4 m thick), the doorway is x in (−0.8, 0.8): the Fox started
-    // at z = 6 and ends well beyond it, on the ground, having kept to the doorway's middle.
+    // The wall stands at z = 0 (0.4 m thick), the doorway is x in (−0.8, 0.8), 2.2 m tall: the
+    // hero started at z = 6 and ends well beyond it, on the ground (the 1.8 m capsule's centre
+    // 0.9 m up), having kept to the doorway's middle.
     assert!(last.centre.z < -8.0, "{}", last.centre);
-    assert!((last.centre.y - 0.45).abs() < 0.05, "{}", last.centre);
+    assert!((last.centre.y - 0.9).abs() < 0.05, "{}", last.centre);
     let widest = samples.iter().map(|s| s.centre.x.abs()).fold(0.0, f32::max);
     assert!(widest < 0.3, "strayed {widest} m sideways");
 
-    // The camera: 4.5 m out at the start; pulled in below 3 m while the Fox passes under the
+    // The camera: 4.5 m out at the start; pulled in below 3 m while the hero passes under the
     // lintel (its boom then crosses the wall), back out to the full distance at the end.
     let follow = FollowCamera::default();
     assert!((samples[0].distance - follow.distance_m).abs() < 1e-3);

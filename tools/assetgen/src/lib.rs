@@ -10,7 +10,8 @@
 //! kilobytes of text.
 //! Also [`sounds`]: the games' sounds (`assets/common/sounds/*.wav`), synthesised; and
 //! [`reflect_kit`]: the game Reflect's art kit (`assets/reflect/kit/`, glTF + PNG, written by
-//! [`gltf_writer`]). Must not: depend on third-party data.
+//! [`gltf_writer`]); and [`hero`]: the skinned, animated hero (`assets/common/hero/hero.glb`,
+//! written by [`gltf_skin`]). Must not: depend on third-party data.
 
 use candela::assets::{
     BoxEntry, CameraDesc, CityEntry, GridEntry, InstanceEntry, Level, LevelMaterial, MaterialKind,
@@ -18,7 +19,11 @@ use candela::assets::{
 };
 
 mod gltf_json;
+pub mod gltf_skin;
+mod gltf_skin_bin;
+mod gltf_skin_json;
 pub mod gltf_writer;
+pub mod hero;
 pub mod reflect_kit;
 mod reflect_sounds;
 pub mod sounds;

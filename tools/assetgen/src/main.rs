@@ -4,6 +4,8 @@
 //! `assets/common/sounds`). See `assetgen::sounds`.
 //! `assetgen reflect-kit [--out DIR]`: writes the Reflect art kit (default
 //! `assets/reflect/kit`), glTF + PNG. See `assetgen::reflect_kit`.
+//! `assetgen hero [--out DIR]`: writes the skinned hero (default `assets/common/hero`),
+//! `hero.glb`. See `assetgen::hero`.
 
 use std::path::PathBuf;
 
@@ -32,6 +34,11 @@ enum Command {
     /// The Reflect art kit (glTF pieces and their PNG textures).
     ReflectKit {
         #[arg(long, default_value = "assets/reflect/kit")]
+        out: PathBuf,
+    },
+    /// The skinned, animated hero (one GLB).
+    Hero {
+        #[arg(long, default_value = "assets/common/hero")]
         out: PathBuf,
     },
 }
@@ -85,6 +92,18 @@ fn main() -> anyhow::Result<()> {
                     piece.emissive_triangle_count()
                 );
             }
+            Ok(())
+        }
+        Command::Hero { out } => {
+            std::fs::create_dir_all(&out)
+                .with_context(|| format!("cannot create {}", out.display()))?;
+            for (file, bytes) in assetgen::hero::hero_files()? {
+                let path = out.join(file);
+                std::fs::write(&path, &bytes)
+                    .with_context(|| format!("cannot write {}", path.display()))?;
+                println!("wrote {} ({} bytes)", path.display(), bytes.len());
+            }
+            println!("  {} triangles", assetgen::hero::triangle_count());
             Ok(())
         }
     }

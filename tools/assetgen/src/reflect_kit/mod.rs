@@ -12,7 +12,7 @@
 
 mod devices;
 pub mod materials;
-mod mesh;
+pub(crate) mod mesh;
 mod panels;
 mod props;
 pub mod signs;
