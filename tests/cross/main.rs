@@ -11,6 +11,7 @@ mod analytic;
 mod bvh;
 mod capture_budget;
 mod demo;
+mod editor_window;
 mod far_from_origin;
 mod furnace;
 mod gpu_matches_cpu;

@@ -67,6 +67,7 @@ pub mod tlas;
 mod upkeep;
 mod upkeep_deform;
 mod upkeep_instances;
+mod upkeep_materials;
 mod upkeep_report;
 
 pub use crate::scene::Aabb;

@@ -11,7 +11,8 @@
 //! is written. Main thread. Must not: talk to the GPU or the render thread (the commit carries
 //! the writes).
 //!
-//! Instance operations live in `upkeep_instances.rs`.
+//! Instance operations live in `upkeep_instances.rs`, level materials in
+//! `upkeep_materials.rs`.
 
 use std::collections::{HashMap, HashSet};
 
@@ -94,6 +95,9 @@ pub struct Upkeep {
     pub(super) entities: HashMap<hecs::Entity, (Vec<u32>, Option<u32>)>,
     pub(super) groups_off: HashSet<u32>,
     pub(super) level_material_base: u32,
+    /// Table rows reserved for level materials at `level_material_base` (`None`: no level
+    /// has registered any yet; see `upkeep_materials.rs`).
+    pub(super) level_material_slots: Option<u32>,
     /// End of the BLAS part of the node buffer; the TLAS follows.
     pub(super) blas_node_end: u32,
     pub(super) pending: Vec<SceneWrite>,
@@ -129,6 +133,7 @@ impl Upkeep {
             entities: HashMap::new(),
             groups_off: HashSet::new(),
             level_material_base: 0,
+            level_material_slots: None,
             blas_node_end: 0,
             pending: vec![SceneWrite::Nodes {
                 first: 0,
@@ -155,22 +160,6 @@ impl Upkeep {
     /// The scene as of the last [`Upkeep::finish_frame`] (what ray queries read).
     pub fn scene(&self) -> &RenderScene {
         &self.scene
-    }
-
-    /// Appends materials the level defines (instance overrides index them); returns the first
-    /// one's index in the material table. Call once, before any instance uses an override.
-    pub fn add_level_materials(&mut self, materials: &[Material]) -> u32 {
-        let base = self.scene.materials.len() as u32;
-        let gpu: Vec<_> = materials
-            .iter()
-            .map(|m| to_gpu_material(m, 0, &[]))
-            .collect();
-        self.push(SceneWrite::Materials {
-            first: base,
-            data: gpu,
-        });
-        self.level_material_base = base;
-        base
     }
 
     /// Registers `model`: builds every mesh's BLAS (in parallel) and appends its geometry,

@@ -37,7 +37,7 @@ pub use comments::{Anchored, Comments};
 pub use document::{Document, DocumentError};
 pub use history::{History, HistoryEntry};
 pub use item::ItemRef;
-pub use pick::{Picked, pick, pixel_ray};
+pub use pick::{Picked, ViewBasis, pick, pixel_ray};
 pub use recovery::{
     RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
 };

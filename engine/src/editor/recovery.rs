@@ -1,6 +1,7 @@
 //! Recovery files: `<name>.ron.recovery` beside a level, written atomically whenever the UI
-//! asks (every minute, and from a panic hook), without any check, so that nothing a designer
-//! did is lost even while the level has problems. On open, a recovery file newer than its
+//! asks (`app::edit` writes one after every finished command, so a crash or a killed process
+//! loses at most a drag in progress), without any check, so that nothing a designer did is
+//! lost even while the level has problems. On open, a recovery file newer than its
 //! level is reported ([`find_recovery`]) so that the UI can offer to restore it; restoring
 //! opens it as a document; a successful save removes it.
 //!

@@ -44,6 +44,22 @@ impl Selection {
         }
     }
 
+    /// Applies a box select of `instances` with `mode`: `Replace` selects exactly them (an
+    /// empty box clears), `Add` adds them, `Toggle` flips each.
+    pub fn boxed(&mut self, instances: &[usize], mode: SelectMode) {
+        if mode == SelectMode::Replace {
+            self.instances.clear();
+        }
+        for &i in instances {
+            let mode = if mode == SelectMode::Toggle {
+                SelectMode::Toggle
+            } else {
+                SelectMode::Add
+            };
+            self.click(Some(i), mode);
+        }
+    }
+
     /// Selects exactly `instances` (duplicates dropped, order kept).
     pub fn set(&mut self, instances: impl IntoIterator<Item = usize>) {
         self.instances.clear();

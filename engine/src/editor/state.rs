@@ -42,7 +42,7 @@ impl EditorState {
         Ok(Self::new(path, Document::open(path)?))
     }
 
-    /// Edits `doc`, which saves to `path` (a restored recovery file counts as unsaved).
+    /// Edits `doc`, which saves to `path` as it is.
     pub fn new(path: &Path, doc: Document) -> Self {
         Self {
             path: path.to_path_buf(),
@@ -52,6 +52,15 @@ impl EditorState {
             snap: Snap::default(),
             problems: Vec::new(),
             saved_state: 0,
+        }
+    }
+
+    /// Edits `doc` restored from a recovery file of `path`: unsaved until it is saved, even
+    /// after undoing back to where it was restored.
+    pub fn restored(path: &Path, doc: Document) -> Self {
+        Self {
+            saved_state: u64::MAX,
+            ..Self::new(path, doc)
         }
     }
 
@@ -181,7 +190,7 @@ impl EditorState {
         Ok(report)
     }
 
-    /// Writes the recovery file (autosave; see `recovery`).
+    /// Writes the recovery file (after each command; see `recovery` and `app::edit`).
     pub fn write_recovery(&self) -> Result<PathBuf, SaveError> {
         write_recovery(&self.path, &self.doc)
     }

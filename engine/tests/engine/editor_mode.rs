@@ -4,172 +4,16 @@
 //! gizmo's X handle moves the cube so that it stays under the pointer, as one command, and
 //! the world follows (picked where it went); with grid snapping the move is whole steps;
 //! the rotate tool (E) turns it by the snapped angle; a typed value moves it; Ctrl+Z and
-//! Ctrl+Shift+Z go back and forth, the world with them.
+//! Ctrl+Shift+Z go back and forth, the world with them. (Box select and the recovery file:
+//! `editor_mode_box.rs`.)
 
 use crate::editor_common;
 
-use candela::app::edit::{EditMode, EditTarget, Gizmo, Handles, project};
-use candela::app::{Engine, Environment, Step};
-use candela::assets::{AssetRoot, TransformDesc};
-use candela::editor::{Edit, InstanceField, pick, pixel_ray};
-use candela::level::load_level;
-use candela::render::RenderConfig;
-use editor_common::Scratch;
+use candela::app::edit::Gizmo;
+use candela::assets::TransformDesc;
+use candela::editor::{Edit, InstanceField};
+use editor_common::mode_run::*;
 use glam::{Vec2, Vec3};
-
-const LEVEL: &str = r#"Level(
-    materials: [(name: "grey", kind: Diffuse)],
-    boxes: [
-        (name: "floor", size: (20, 0.2, 20), material: "grey"),
-        (name: "cube", size: (1, 1, 1), material: "grey"),
-        (name: "wall", size: (20, 3, 0.2), material: "grey"),
-    ],
-    instances: [
-        (model: "floor", transform: (translation: (0, -0.1, 0))),
-        (model: "cube", name: "left", transform: (translation: (-1.5, 1, 0))),
-        (model: "cube", name: "right", transform: (translation: (1.5, 1, 0))),
-        (model: "wall", name: "wall", transform: (translation: (0, 1.5, -3))),
-    ],
-    camera: (position: (0, 1, 5), look_at: (0, 1, 0), vertical_fov_deg: 50),
-    sky: Constant((0.2, 0.2, 0.2)),
-)"#;
-
-const SIZE: Vec2 = Vec2::new(2560.0, 1440.0);
-
-struct Run {
-    _scratch: Scratch,
-    engine: Engine,
-    mode: EditMode,
-    ctx: egui::Context,
-    time: f64,
-    /// The keyboard's modifiers held during the passes.
-    modifiers: egui::Modifiers,
-}
-
-fn start(name: &str) -> anyhow::Result<Run> {
-    let scratch = Scratch::new(name);
-    let path = scratch.path().join("level.ron");
-    std::fs::write(&path, LEVEL)?;
-    let root = AssetRoot::new(scratch.path())?;
-    let level = load_level(&path, &root)?;
-    let mut engine = Engine::new(RenderConfig::cpu(64, 36), Environment::of(&level.scene))?;
-    let spawned = engine.spawn_level(&level);
-    let mut mode = EditMode::open(EditTarget::single_file(&path, root), spawned)?;
-    assert!(
-        mode.enter(&mut engine).respawned,
-        "entering spawns the document"
-    );
-    let mut run = Run {
-        _scratch: scratch,
-        engine,
-        mode,
-        ctx: egui::Context::default(),
-        time: 0.0,
-        modifiers: egui::Modifiers::NONE,
-    };
-    pass(&mut run, Vec::new())?;
-    pass(&mut run, Vec::new())?;
-    Ok(run)
-}
-
-/// One egui pass of the editor with `events`, then one engine frame.
-fn pass(run: &mut Run, events: Vec<egui::Event>) -> anyhow::Result<()> {
-    run.time += 1.0 / 30.0;
-    let input = egui::RawInput {
-        screen_rect: Some(egui::Rect::from_min_size(
-            egui::Pos2::ZERO,
-            egui::vec2(SIZE.x, SIZE.y),
-        )),
-        time: Some(run.time),
-        events: std::iter::once(egui::Event::ModifiersChanged(run.modifiers))
-            .chain(events)
-            .collect(),
-        ..Default::default()
-    };
-    let (mode, engine) = (&mut run.mode, &mut run.engine);
-    let _ = run.ctx.run_pass(input, |ctx| {
-        mode.ui(ctx, engine);
-    });
-    run.engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
-    let _ = run.engine.rendered();
-    Ok(())
-}
-
-fn moved_to(p: Vec2) -> egui::Event {
-    egui::Event::PointerMoved(egui::pos2(p.x, p.y))
-}
-
-fn button(p: Vec2, pressed: bool, modifiers: egui::Modifiers) -> egui::Event {
-    egui::Event::PointerButton {
-        pos: egui::pos2(p.x, p.y),
-        button: egui::PointerButton::Primary,
-        pressed,
-        modifiers,
-    }
-}
-
-fn key(key: egui::Key, modifiers: egui::Modifiers) -> egui::Event {
-    egui::Event::Key {
-        key,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers,
-    }
-}
-
-fn click(run: &mut Run, p: Vec2, modifiers: egui::Modifiers) -> anyhow::Result<()> {
-    run.modifiers = modifiers;
-    pass(run, vec![moved_to(p)])?;
-    pass(run, vec![button(p, true, modifiers)])?;
-    pass(run, vec![button(p, false, modifiers)])?;
-    run.modifiers = egui::Modifiers::NONE;
-    Ok(())
-}
-
-/// Presses at `from`, moves to `to` in `steps` passes, releases.
-fn drag(run: &mut Run, from: Vec2, to: Vec2, steps: u32) -> anyhow::Result<()> {
-    pass(run, vec![moved_to(from)])?;
-    pass(run, vec![button(from, true, egui::Modifiers::NONE)])?;
-    for k in 1..=steps {
-        let p = from.lerp(to, k as f32 / steps as f32);
-        pass(run, vec![moved_to(p)])?;
-    }
-    pass(run, vec![button(to, false, egui::Modifiers::NONE)])?;
-    pass(run, Vec::new())
-}
-
-/// Where world point `p` is on the screen, through the editor's camera.
-fn screen(run: &Run, p: Vec3) -> Vec2 {
-    let camera = run.mode.camera.expect("the editor camera").desc();
-    project(&camera, SIZE, p).expect("in front of the camera")
-}
-
-/// The instance the world draws at world point `p` (a ray query on the last commit).
-fn drawn_at(run: &Run, p: Vec3) -> Option<usize> {
-    let camera = run.mode.camera.expect("the editor camera").desc();
-    let px = project(&camera, SIZE, p)?;
-    let ray = pixel_ray(&camera, SIZE.x as u32, SIZE.y as u32, px.x, px.y);
-    let entities = run.mode.world.entities(&run.mode.state.doc.level);
-    pick(&run.engine.queries(), entities, &ray).map(|p| p.instance)
-}
-
-fn translation(run: &Run, index: usize) -> Vec3 {
-    Vec3::from(
-        run.mode.state.doc.level.instances[index]
-            .transform
-            .translation,
-    )
-}
-
-fn handles(run: &Run, index: usize) -> Handles {
-    let camera = run.mode.camera.expect("the editor camera").desc();
-    let entry = &run.mode.state.doc.level.instances[index];
-    run.mode
-        .gizmo
-        .handles(&camera, SIZE, entry)
-        .expect("the gizmo is in view")
-}
 
 #[test]
 fn clicks_select_with_shift_adding_ctrl_toggling_and_the_sky_clearing() -> anyhow::Result<()> {
@@ -182,8 +26,8 @@ fn clicks_select_with_shift_adding_ctrl_toggling_and_the_sky_clearing() -> anyho
     assert_eq!(run.mode.state.selection.instances(), &[2, 1]);
     click(&mut run, right, egui::Modifiers::CTRL)?;
     assert_eq!(run.mode.state.selection.instances(), &[1]);
-    // High above the wall, right of every panel: the sky.
-    click(&mut run, Vec2::new(2400.0, 40.0), egui::Modifiers::NONE)?;
+    // High above the wall, between the outliner and the inspector: the sky.
+    click(&mut run, Vec2::new(1280.0, 40.0), egui::Modifiers::NONE)?;
     assert!(run.mode.state.selection.is_empty());
     assert!(run.mode.last_pick.is_none());
     assert!(!run.mode.state.history.can_undo(), "selecting is no edit");

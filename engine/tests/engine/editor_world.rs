@@ -177,6 +177,42 @@ fn a_material_edit_spawns_the_level_again_with_the_new_look() -> anyhow::Result<
     Ok(())
 }
 
+/// Regression: every respawn appended the level's materials to the table again.
+#[test]
+fn respawns_write_the_level_materials_in_place_and_the_table_does_not_grow() -> anyhow::Result<()> {
+    let mut s = setup("world_materials_reused")?;
+    // The first respawn registers the models (as entering the editor does); later ones reuse
+    // them.
+    let level = s.state.doc.level.clone();
+    s.world.respawn(&mut s.engine, &level)?;
+    frame(&mut s)?;
+    let table = s.engine.scene().materials.len();
+    let rows_of = |s: &Setup, colour: [f32; 3]| {
+        s.engine
+            .scene()
+            .materials
+            .iter()
+            .filter(|m| m.base_color[..3] == colour)
+            .count()
+    };
+    let mut old = [0.8, 0.1, 0.1];
+    assert_eq!(rows_of(&s, old), 1, "red, once");
+    for k in 0..5 {
+        let colour = [0.1, 0.2 + 0.1 * k as f32, 0.1];
+        let edit = Edit::Material {
+            index: 1,
+            field: MaterialField::BaseColor(colour),
+        };
+        assert_eq!(apply(&mut s, edit)?, Followed::Respawned);
+        frame(&mut s)?;
+        assert_eq!(s.engine.scene().materials.len(), table, "respawn {k}");
+        assert_eq!(rows_of(&s, colour), 1, "the new colour, once");
+        assert_eq!(rows_of(&s, old), 0, "written over the old one");
+        old = colour;
+    }
+    Ok(())
+}
+
 #[test]
 fn deleting_an_instance_sees_through_it_and_undo_brings_it_back() -> anyhow::Result<()> {
     let mut s = setup("world_delete")?;
@@ -220,5 +256,29 @@ fn an_edit_that_does_not_load_keeps_the_last_good_world() -> anyhow::Result<()> 
     frame(&mut s)?;
     assert_eq!(s.world.entities(&s.state.doc.level), &before[..]);
     assert_eq!(picked_at(&s, Vec3::new(1.5, 1.0, 0.5)), Some(2));
+    Ok(())
+}
+
+/// A room the level darkens until the player walks in is lit while it is edited, and dark
+/// again when play resumes (the level's rules light it as at its start).
+#[test]
+fn rooms_the_level_starts_dark_are_lit_while_editing() -> anyhow::Result<()> {
+    let path = editor_common::assets().join("test_scenes/platform/first_person.ron");
+    let root = AssetRoot::new(editor_common::assets())?;
+    let level = load_level(&path, &root)?;
+    assert_eq!(
+        level.gameplay.lights_off,
+        vec![2],
+        "the test level's dark room"
+    );
+    let mut engine = Engine::new(RenderConfig::cpu(W, H), Environment::of(&level.scene))?;
+    let spawned = engine.spawn_level(&level);
+    assert!(!engine.light_group_on(2), "dark as the level starts");
+    let mut world = EditWorld::new(EditTarget::single_file(&path, root), spawned);
+    let doc = EditorState::open(&path)?.doc;
+    world.respawn(&mut engine, &doc.level)?;
+    assert!(engine.light_group_on(2), "lit while editing");
+    world.leave_lights(&mut engine);
+    assert!(!engine.light_group_on(2), "dark again for play");
     Ok(())
 }

@@ -63,6 +63,10 @@ pub struct Args {
     /// chamber to the ending).
     #[arg(long, default_value = FULL_GAME)]
     pub record_chamber: String,
+    /// Headless: measure the level editor over the first chamber (pick latency, the
+    /// overlay's cost per frame) and print a Markdown table (see `reflect::bench_editor`).
+    #[arg(long)]
+    pub bench_editor: bool,
     /// With --bench: most seconds per chamber.
     #[arg(long, default_value_t = 20.0)]
     pub bench_seconds: f64,
@@ -121,6 +125,9 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         };
         let results = crate::soak::soak_chambers(&world, &chambers, frames, args.seed)?;
         return Ok(crate::soak::table(&results, args.seed));
+    }
+    if args.bench_editor {
+        return crate::bench_editor::bench_editor(&world);
     }
     if args.bench {
         let replays = root.path().join("reflect/replays");

@@ -255,24 +255,32 @@ fn turn_held_cube(step: &mut Step<'_>, inner: &FirstPersonGame) {
 
 impl ReflectGame {
     /// The mirror gun over the spawned level's mirrorable panels (at setup, and after the
-    /// editor spawned the level again).
+    /// editor spawned the level again). Gives the gun the panels of the world as spawned: every instance of a mirrorable
+    /// model, so that instances the editor inserted, removed or duplicated are counted right.
     fn arm_gun(&mut self, engine: &candela::app::Engine) {
         let world = engine.world();
         let spawned = self.inner.spawned();
-        let panels: Vec<(Entity, Option<usize>, Option<u32>)> = self
+        let models: Vec<_> = self
             .world
-            .mirrorable
+            .mirrorable_models
             .iter()
-            .filter_map(|&i| spawned.entities.get(i).copied())
-            .map(|e| {
+            .filter_map(|&k| spawned.models.get(k).copied())
+            .collect();
+        let panels: Vec<(Entity, Option<usize>, Option<u32>)> = spawned
+            .entities
+            .iter()
+            .copied()
+            .filter_map(|e| {
+                let r = world.get::<&Renderable>(e).ok()?;
+                models
+                    .contains(&r.model)
+                    .then_some((e, r.material_override))
+            })
+            .map(|(e, original)| {
                 let at = world
                     .get::<&Transform>(e)
                     .map_or(glam::Vec3::NAN, |t| t.translation);
                 let chamber = self.world.chambers.iter().position(|c| c.contains(at));
-                let original = world
-                    .get::<&Renderable>(e)
-                    .ok()
-                    .and_then(|r| r.material_override);
                 (e, chamber, original)
             })
             .collect();

@@ -9,6 +9,7 @@
 //! Main thread throughout. Must not: reach into the renderer.
 
 pub mod bench;
+pub mod bench_editor;
 pub mod bot;
 pub mod bot_tasks;
 pub mod capture;

@@ -76,6 +76,11 @@ impl MirrorGun {
         }
     }
 
+    /// How many mirrorable panels it knows.
+    pub fn panel_count(&self) -> usize {
+        self.panels.len()
+    }
+
     /// Whether `entity` is a mirrorable panel.
     pub fn is_panel(&self, entity: Entity) -> bool {
         self.panels.contains_key(&entity.to_bits().get())

@@ -41,6 +41,9 @@ pub struct ReflectWorld {
     pub mirror_material: u32,
     /// Instances (by index) the mirror gun may turn into mirrors.
     pub mirrorable: Vec<usize>,
+    /// The models (by index in the composed scene's models) whose instances are mirrorable:
+    /// how the gun finds its panels after the editor inserted or removed instances.
+    pub mirrorable_models: Vec<usize>,
     /// The folder every file of the world stays in (the editor saves through it).
     pub root: AssetRoot,
 }
@@ -79,13 +82,19 @@ impl ReflectWorld {
                 )));
             }
         }
-        let mirrorable = level
+        let mirrorable: Vec<usize> = level
             .instances
             .iter()
             .enumerate()
             .filter(|(_, i)| game.mirrorable_models.contains(&i.model))
             .map(|(index, _)| index)
             .collect();
+        let mut mirrorable_models: Vec<usize> = mirrorable
+            .iter()
+            .filter_map(|&i| playable.scene.instances.get(i).map(|s| s.model))
+            .collect();
+        mirrorable_models.sort_unstable();
+        mirrorable_models.dedup();
         let mut files = vec![base];
         files.extend(parts);
         Ok(Self {
@@ -96,6 +105,7 @@ impl ReflectWorld {
             playable,
             mirror_material,
             mirrorable,
+            mirrorable_models,
             root: root.clone(),
         })
     }

@@ -102,3 +102,60 @@ fn reverting_a_mirror_frees_the_cap() {
     );
     assert_eq!(game.gun().made, 2);
 }
+
+/// Regression: the gun found its panels by instance index, so instances inserted by the
+/// editor before the panels shifted the gun onto the wrong entities.
+#[test]
+fn the_gun_knows_the_panels_after_the_editor_inserts_instances() -> anyhow::Result<()> {
+    use candela::app::edit::EditMode;
+    use candela::editor::Edit;
+    let world = world();
+    let panels = world.mirrorable.len();
+    let models: Vec<String> = world
+        .mirrorable
+        .iter()
+        .map(|&k| world.level.instances[k].model.clone())
+        .collect();
+    // Chamber 2 (the first mirror) is the one the editor opens.
+    let mut game = ReflectGame::new(world.clone(), 1);
+    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
+    game.setup(&mut engine)
+        .map_err(|e| anyhow::anyhow!("{e}"))?;
+    assert_eq!(game.gun().panel_count(), panels);
+    let (target, spawned) = game.edit_target().expect("the editor opens chamber 2");
+    // The committed chamber is edited in memory only: no recovery file beside it.
+    let mut mode = EditMode::open(target, spawned)?.without_recovery_files();
+    assert!(mode.enter(&mut engine).respawned);
+    let level = &mode.state.doc.level;
+    let panel = level
+        .instances
+        .iter()
+        .position(|i| models.contains(&i.model))
+        .expect("chamber 2 has a mirrorable panel");
+    // A copy of the chamber's first instance moves every later one a place on; a copy of a
+    // panel is one panel more.
+    assert!(
+        mode.apply(&mut engine, Edit::DuplicateInstance { index: 0 })?
+            .respawned
+    );
+    mode.apply(&mut engine, Edit::DuplicateInstance { index: panel + 1 })?;
+    let spawned = mode.world.spawned().clone();
+    game.level_respawned(&mut engine, &spawned);
+    assert_eq!(game.gun().panel_count(), panels + 1);
+    let handles: Vec<_> = world
+        .mirrorable_models
+        .iter()
+        .map(|&k| spawned.models[k])
+        .collect();
+    let ecs = engine.world();
+    let mut found = 0;
+    for &e in &spawned.entities {
+        let mirrorable = ecs
+            .get::<&Renderable>(e)
+            .is_ok_and(|r| handles.contains(&r.model));
+        assert_eq!(game.gun().is_panel(e), mirrorable, "{e:?}");
+        found += usize::from(mirrorable);
+    }
+    assert_eq!(found, panels + 1);
+    Ok(())
+}

@@ -11,6 +11,7 @@ use glam::{EulerRot, Quat, Vec2, Vec3};
 
 use crate::assets::CameraDesc;
 use crate::ecs::{CameraRig, Transform};
+use crate::editor::ViewBasis;
 
 const MAX_PITCH: f32 = 89.0 * std::f32::consts::PI / 180.0;
 
@@ -126,17 +127,9 @@ impl EditorCamera {
 /// `editor::pixel_ray`, in the same units as `size` (from the top-left corner, y down); `None`
 /// behind the eye or nearer than a millimetre.
 pub fn project(camera: &CameraDesc, size: Vec2, p: Vec3) -> Option<Vec2> {
-    let position = Vec3::from(camera.position);
-    let forward = (Vec3::from(camera.look_at) - position)
-        .try_normalize()
-        .unwrap_or(Vec3::NEG_Z);
-    let right = forward
-        .cross(Vec3::from(camera.up))
-        .try_normalize()
-        .unwrap_or_else(|| forward.any_orthonormal_vector());
-    let up = right.cross(forward);
-    let tan_half = (camera.vertical_fov_deg.clamp(1e-3, 179.0).to_radians() * 0.5).tan();
-    let aspect = size.x.max(1e-3) / size.y.max(1e-3);
+    let b = ViewBasis::new(camera, size.x, size.y);
+    let (position, forward, right, up) = (b.position, b.forward, b.right, b.up);
+    let (tan_half, aspect) = (b.tan_half, b.aspect);
     let d = p - position;
     let z = d.dot(forward);
     if z < 1e-3 {

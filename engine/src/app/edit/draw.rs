@@ -1,7 +1,7 @@
 //! What the editor draws besides the `editor::ui` panels: the toolbar (tool, space, snapping,
 //! save, the recovery offer, messages) and, under every window, the selection highlight (each
-//! selected instance's bounds projected as a wire box, the primary one brighter) and the
-//! gizmo. All of it is egui shapes over the picture: the path tracer never sees it.
+//! selected instance's bounds projected as a wire box, the primary one brighter), the box
+//! select band and the gizmo. All of it is egui shapes over the picture: the path tracer never sees it.
 //!
 //! Main thread, inside the editor's egui pass. Must not: touch the world or the document
 //! except through the toolbar's snapping settings and the mode's operations.
@@ -31,6 +31,11 @@ const EDGES: [(usize, usize); 12] = [
 /// The highlight's colours: the primary selected instance, the others.
 pub const PRIMARY_COLOUR: egui::Color32 = egui::Color32::from_rgb(255, 200, 40);
 pub const OTHER_COLOUR: egui::Color32 = egui::Color32::from_rgb(255, 140, 30);
+/// The editor's view keys, in the toolbar's tooltip.
+const KEYS: &str = "F1: play from here · right drag: look, WASD QE fly · middle drag or \
+                    Alt+left: orbit · wheel: dolly · F: frame · left drag: box select";
+/// The box select band's fill (premultiplied, faint).
+const BAND_FILL: egui::Color32 = egui::Color32::from_rgba_premultiplied(40, 32, 6, 40);
 
 fn snap_row(ui: &mut egui::Ui, label: &str, step: &mut Option<f32>, default: f32, unit: &str) {
     ui.horizontal(|ui| {
@@ -55,9 +60,12 @@ impl EditMode {
         let mut save = false;
         let mut restore = false;
         let mut discard = false;
+        // A toolbar without a title bar docked at the bottom centre, under the picture's
+        // middle; the keys in the tooltip of its "Keys" label.
         egui::Window::new("Editor")
-            .default_pos([560.0, 8.0])
-            .default_width(260.0)
+            .title_bar(false)
+            .resizable(false)
+            .anchor(egui::Align2::CENTER_BOTTOM, [0.0, -8.0])
             .show(ctx, |ui| {
                 ui.horizontal(|ui| {
                     for (tool, label) in [
@@ -72,10 +80,8 @@ impl EditMode {
                             self.gizmo.tool = tool;
                         }
                     }
-                });
-                ui.horizontal(|ui| {
-                    ui.label("Axes (X):");
-                    for (space, label) in [(Space::World, "world"), (Space::Local, "local")] {
+                    ui.separator();
+                    for (space, label) in [(Space::World, "world"), (Space::Local, "local (X)")] {
                         if ui
                             .selectable_label(self.gizmo.space == space, label)
                             .clicked()
@@ -84,33 +90,31 @@ impl EditMode {
                         }
                     }
                 });
-                let snap = &mut self.state.snap;
-                snap_row(ui, "grid", &mut snap.grid, 0.25, " m");
-                snap_row(ui, "angle", &mut snap.angle_deg, 15.0, "°");
-                snap_row(ui, "scale", &mut snap.scale, 0.1, "×");
                 ui.horizontal(|ui| {
-                    save = ui.button("Save (Ctrl+S)").clicked();
-                    if self.state.dirty() {
-                        ui.label("unsaved changes");
-                    }
-                });
-                if let Some(info) = &self.recovery {
+                    ui.label("snap:");
+                    let snap = &mut self.state.snap;
+                    snap_row(ui, "grid", &mut snap.grid, 0.25, " m");
+                    snap_row(ui, "angle", &mut snap.angle_deg, 15.0, "°");
+                    snap_row(ui, "scale", &mut snap.scale, 0.1, "×");
                     ui.separator();
+                    save = ui.button("Save (Ctrl+S)").clicked();
+                    ui.label("Keys").on_hover_text(KEYS);
+                });
+                if self.state.dirty() {
+                    ui.label("unsaved changes");
+                }
+                if let Some(info) = &self.recovery {
+                    let name = info.path.file_name().unwrap_or(info.path.as_os_str());
                     ui.label(format!(
-                        "A recovery file newer than the level exists: {}",
-                        info.path.display()
+                        "Unsaved edits from an earlier session: {}",
+                        name.to_string_lossy()
                     ));
                     ui.horizontal(|ui| {
                         restore = ui.button("Restore it").clicked();
                         discard = ui.button("Discard it").clicked();
                     });
                 }
-                ui.separator();
-                ui.label(
-                    "F1: play from here · right drag: look, WASD QE fly · middle drag or \
-                     Alt+left: orbit · wheel: dolly · F: frame",
-                );
-                for message in &self.messages {
+                for message in self.messages.iter().rev().take(2).rev() {
                     ui.label(egui::RichText::new(message).small());
                 }
             });
@@ -154,6 +158,17 @@ impl EditMode {
                     painter.line_segment([at(a), at(b)], stroke);
                 }
             }
+        }
+        if let Some(band) = self.box_drag.filter(|b| b.is_box()) {
+            let (lo, hi) = band.rect();
+            let r = egui::Rect::from_min_max(at(lo), at(hi));
+            painter.rect_filled(r, 0.0, BAND_FILL);
+            painter.rect_stroke(
+                r,
+                0.0,
+                egui::Stroke::new(1.0, PRIMARY_COLOUR),
+                egui::StrokeKind::Inside,
+            );
         }
         let handles = primary
             .and_then(|p| level.instances.get(p))

@@ -6,24 +6,28 @@
 //! [`Gizmo`], the selection highlight and the toolbar.
 //!
 //! One file per job: `target` (what a game hands the editor), `world` (the world in step),
-//! `camera`, `gizmo`, `mode` (entering, leaving, one pass), `view_input` (pointer and keys
+//! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass), `recover` (the recovery file), `view_input` (pointer and keys
 //! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
 //! game's hooks (the runner holds the game while editing).
 
+mod box_select;
 mod camera;
 mod draw;
 mod gizmo;
 mod mode;
+mod recover;
 mod target;
 mod view_input;
 mod world;
 
+pub use box_select::{BoxDrag, MIN_BOX_POINTS, instances_in};
 pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
 pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};
 pub use gizmo::{
     DEGREES_PER_POINT, GRAB_POINTS, Gizmo, Handles, POINTS_PER_SCALE, Space, Tool, degrees_of,
     rotation_of,
 };
-pub use mode::{AUTOSAVE_SECONDS, EditFrame, EditMode};
+pub use mode::{EditFrame, EditMode};
+pub use recover::older_recovery_path;
 pub use target::{BuildWorld, CheckWorld, EditTarget};
 pub use world::{Bounds, EditWorld, Followed};

@@ -4,7 +4,7 @@
 //! pauses the engine; the path tracer keeps converging). Each egui pass it draws the panels
 //! (`editor::ui`), the toolbar, the selection highlight and the gizmo, reads the view's
 //! pointer and keys (`view_input.rs`), and brings the world up to date after every edit
-//! ([`EditWorld::follow`]). Leaving gives the view back: the game plays the edited level
+//! ([`EditWorld::follow`]) and keeps the recovery file (`recover.rs`). Leaving gives the view back: the game plays the edited level
 //! ("play from here").
 //!
 //! Main thread, inside the runner's egui pass. Must not: render, or run the game's hooks.
@@ -12,6 +12,7 @@
 use glam::Vec3;
 use hecs::Entity;
 
+use super::box_select::BoxDrag;
 use super::camera::EditorCamera;
 use super::gizmo::Gizmo;
 use super::target::EditTarget;
@@ -20,12 +21,9 @@ use crate::app::engine::Engine;
 use crate::app::level::SpawnedLevel;
 use crate::ecs::{CameraRig, Transform};
 use crate::editor::{
-    DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, Touch, discard_recovery,
-    find_recovery, restore_recovery,
+    DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, Touch, find_recovery,
 };
 
-/// Seconds between two recovery files while there are unsaved changes.
-pub const AUTOSAVE_SECONDS: f64 = 60.0;
 /// Messages kept for the toolbar.
 const MESSAGES: usize = 5;
 
@@ -52,11 +50,17 @@ pub struct EditMode {
     pub(super) messages: Vec<String>,
     /// A recovery file newer than the level, offered on opening.
     pub(super) recovery: Option<RecoveryInfo>,
-    last_autosave: Option<f64>,
+    /// `History::state_id` the recovery file on disk holds (or that needs none).
+    pub(super) recovered_state: u64,
     /// The last pick (instance under the click), for tools and tests.
     pub last_pick: Option<Picked>,
     /// The toolbar's Restore was clicked (carried out after the pass's drawing).
     pub(super) pending_restore: bool,
+    /// The rubber band of a box select being dragged.
+    pub(super) box_drag: Option<BoxDrag>,
+    /// Whether recovery files are written (tools and tests that edit committed levels they
+    /// must not write beside turn it off).
+    pub(super) recovery_files: bool,
 }
 
 impl EditMode {
@@ -74,10 +78,23 @@ impl EditMode {
             active: false,
             messages: Vec::new(),
             recovery,
-            last_autosave: None,
+            recovered_state: 0,
             last_pick: None,
             pending_restore: false,
+            box_drag: None,
+            recovery_files: true,
         })
+    }
+
+    /// The rubber band of a box select being dragged (points from the view's corner).
+    pub fn box_drag(&self) -> Option<BoxDrag> {
+        self.box_drag
+    }
+
+    /// Writes no recovery files from now on (for tools and tests over committed levels).
+    pub fn without_recovery_files(mut self) -> Self {
+        self.recovery_files = false;
+        self
     }
 
     /// Whether edit mode is on.
@@ -118,6 +135,7 @@ impl EditMode {
         }
         self.active = false;
         self.gizmo.end();
+        self.box_drag = None;
         self.state.end_drag();
         if let Some((entity, transform)) = self.taken.take() {
             let _ = engine.world.insert_one(entity, transform);
@@ -125,9 +143,8 @@ impl EditMode {
         if let Some(entity) = self.own_camera.take() {
             let _ = engine.world.despawn(entity);
         }
-        if self.state.dirty() {
-            self.autosave();
-        }
+        self.keep_recovery();
+        self.world.leave_lights(engine);
         engine.cut();
     }
 
@@ -193,16 +210,7 @@ impl EditMode {
         if save {
             frame.saved = self.save();
         }
-        let now = ctx.input(|i| i.time);
-        let due = self
-            .last_autosave
-            .is_none_or(|t| now - t >= AUTOSAVE_SECONDS);
-        if self.state.dirty() && due {
-            if self.last_autosave.is_some() {
-                self.autosave();
-            }
-            self.last_autosave = Some(now);
-        }
+        self.keep_recovery();
         frame
     }
 
@@ -210,8 +218,10 @@ impl EditMode {
     /// date.
     pub fn apply(&mut self, engine: &mut Engine, edit: Edit) -> Result<EditFrame, EditError> {
         let touch = self.state.apply(edit)?;
+        let respawned = self.follow(engine, vec![touch]);
+        self.keep_recovery();
         Ok(EditFrame {
-            respawned: self.follow(engine, vec![touch]),
+            respawned,
             saved: false,
         })
     }
@@ -222,6 +232,7 @@ impl EditMode {
             return Ok(false);
         };
         self.follow(engine, vec![touch]);
+        self.keep_recovery();
         Ok(true)
     }
 
@@ -231,6 +242,7 @@ impl EditMode {
             return Ok(false);
         };
         self.follow(engine, vec![touch]);
+        self.keep_recovery();
         Ok(true)
     }
 
@@ -286,43 +298,6 @@ impl EditMode {
                 self.say(format!("not saved: {e}"));
                 false
             }
-        }
-    }
-
-    /// Writes the recovery file; says where, or why not.
-    pub fn autosave(&mut self) {
-        match self.state.write_recovery() {
-            Ok(path) => log::info!("editor: recovery file {}", path.display()),
-            Err(e) => self.say(format!("no recovery file: {e}")),
-        }
-    }
-
-    /// Replaces the document by the recovery file offered on opening (unsaved).
-    pub(super) fn restore(&mut self, engine: &mut Engine) -> bool {
-        let path = self.state.path.clone();
-        self.recovery = None;
-        match restore_recovery(&path) {
-            Ok(doc) => {
-                let selection = std::mem::take(&mut self.state.selection);
-                self.state = EditorState::new(&path, doc);
-                self.state.selection = selection;
-                self.state
-                    .selection
-                    .retain_below(self.state.doc.level.instances.len());
-                self.say("restored the recovery file (not saved yet)");
-                self.follow(engine, vec![Touch::Level])
-            }
-            Err(e) => {
-                self.say(format!("cannot restore: {e}"));
-                false
-            }
-        }
-    }
-
-    pub(super) fn discard_offer(&mut self) {
-        self.recovery = None;
-        if let Err(e) = discard_recovery(&self.state.path) {
-            self.say(format!("cannot remove the recovery file: {e}"));
         }
     }
 

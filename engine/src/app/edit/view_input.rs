@@ -3,7 +3,8 @@
 //! - Middle button, or Alt with the left: orbit about the pivot. Wheel: dolly.
 //! - Left click: pick the instance under the pointer (`editor::pick`, a ray query on the last
 //!   commit) — Shift adds, Ctrl toggles, the sky clears.
-//! - Left drag on a gizmo handle: move, rotate or scale the selection (one command).
+//! - Left drag on a gizmo handle: move, rotate or scale the selection (one command); elsewhere:
+//!   box select (`box_select.rs`), with the same Shift and Ctrl.
 //! - Keys, unless a text field has the keyboard or the right button flies: W, E, R pick the
 //!   tool, X switches world/local, F frames the selection.
 //!
@@ -12,9 +13,11 @@
 
 use glam::{Vec2, Vec3};
 
+use super::box_select::{BoxDrag, instances_in};
 use super::gizmo::{Gizmo, Space, Tool};
 use super::mode::EditMode;
 use crate::app::engine::Engine;
+use crate::assets::CameraDesc;
 use crate::editor::{Touch, pick, pixel_ray};
 
 /// Points of wheel scrolling that make one dolly step.
@@ -124,6 +127,29 @@ impl EditMode {
                 }
             }
         }
+        // Box select: a left drag the gizmo did not take.
+        if self.gizmo.dragging().is_none()
+            && self.box_drag.is_none()
+            && !modifiers.alt
+            && response.drag_started_by(egui::PointerButton::Primary)
+            && let Some(origin) = press_origin
+        {
+            let start = v2(origin);
+            self.box_drag = Some(BoxDrag { start, end: start });
+        }
+        if let Some(mut band) = self.box_drag {
+            if let Some(p) = pointer {
+                band.end = p;
+            }
+            if primary_down {
+                self.box_drag = Some(band);
+            } else {
+                self.box_drag = None;
+                if band.is_box() {
+                    self.select_box(&desc, size, band, modifiers);
+                }
+            }
+        }
         // Picking.
         let on_handle = handles
             .zip(pointer)
@@ -139,6 +165,22 @@ impl EditMode {
             self.state.selection.click(picked.map(|p| p.instance), mode);
         }
         touched
+    }
+
+    /// Selects what `band` holds (see `box_select`), as `modifiers` say.
+    pub(super) fn select_box(
+        &mut self,
+        camera: &CameraDesc,
+        size: Vec2,
+        band: BoxDrag,
+        modifiers: egui::Modifiers,
+    ) {
+        let level = &self.state.doc.level;
+        let boxes = (0..level.instances.len())
+            .filter_map(|i| self.world.world_box(level, i).map(|corners| (i, corners)));
+        let inside = instances_in(camera, size, band.rect(), boxes);
+        let mode = crate::editor::ui::mode_of(modifiers);
+        self.state.selection.boxed(&inside, mode);
     }
 
     fn tool_keys(&mut self, ctx: &egui::Context, camera: &mut super::camera::EditorCamera) {

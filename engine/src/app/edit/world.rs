@@ -51,6 +51,8 @@ pub struct EditWorld {
     bounds: Vec<Option<Bounds>>,
     /// The model sections the registered models were built from.
     sections: Option<ModelSections>,
+    /// The light groups the spawned world's level switches off at its start (`lights_off`).
+    lights_off: Vec<u32>,
 }
 
 /// The parts of a level its models are built from.
@@ -84,6 +86,7 @@ impl EditWorld {
             spawned,
             bounds: Vec::new(),
             sections: None,
+            lights_off: Vec::new(),
         }
     }
 
@@ -180,10 +183,26 @@ impl EditWorld {
         .then(|| self.spawned.models.clone());
         engine.despawn_level(&self.spawned, &playable);
         self.spawned = engine.spawn_level_with(&playable, reuse);
+        // Everything lit while editing: a room that the game darkens until the player walks
+        // in is edited as it will be played, lit (`leave_lights` darkens them again).
+        self.lights_off = playable.gameplay.lights_off.clone();
+        for &group in &self.lights_off {
+            engine.set_light_group(group, true);
+        }
         self.bounds = model_bounds(&playable);
         self.sections = Some(sections);
         engine.cut();
         Ok(())
+    }
+}
+
+impl EditWorld {
+    /// Switches off again the light groups the level starts with off (leaving edit mode: the
+    /// level's rules light the rooms the player is in, as at the level's start).
+    pub fn leave_lights(&self, engine: &mut Engine) {
+        for &group in &self.lights_off {
+            engine.set_light_group(group, false);
+        }
     }
 }
 

@@ -52,28 +52,39 @@ pub fn mode_of(modifiers: egui::Modifiers) -> SelectMode {
     }
 }
 
+/// The inspector's width, points.
+const INSPECTOR_WIDTH: f32 = 420.0;
+
 /// Draws the editor's panels over `ctx` for `state` and applies what they and the keys asked.
 pub fn panels(ctx: &egui::Context, state: &mut EditorState) -> PanelOutput {
     let mut pending = Pending::default();
     let mut out = PanelOutput::default();
     keys(ctx, state, &mut pending, &mut out);
+    // Outliner top left, inspector top right (both can be moved), history bottom left and
+    // problems bottom right (docked), the toolbar bottom centre: the picture's middle free.
+    let view = ctx.content_rect();
+    let (left, right) = (view.min.x + 8.0, view.max.x - 8.0);
+    let top = view.min.y + 8.0;
     egui::Window::new("Outliner")
-        .default_pos([8.0, 8.0])
-        .default_width(220.0)
+        .default_pos([left, top])
+        .default_width(260.0)
+        // Down to the history window, docked under it.
+        .default_height((view.height() - 260.0).max(160.0))
         .show(ctx, |ui| outliner::show(ui, state, &mut pending));
     egui::Window::new("Inspector")
-        .default_pos([240.0, 8.0])
-        .default_width(300.0)
+        .default_pos([right - INSPECTOR_WIDTH - 16.0, top])
+        .default_width(INSPECTOR_WIDTH)
         .show(ctx, |ui| {
             inspector::show(ui, state, &mut pending);
             ui.collapsing("Gameplay", |ui| gameplay::show(ui, state, &mut pending));
         });
     egui::Window::new("History")
-        .default_pos([8.0, 420.0])
+        .anchor(egui::Align2::LEFT_BOTTOM, [8.0, -8.0])
+        .default_width(260.0)
         .show(ctx, |ui| history(ui, state, &mut pending));
     if !state.problems.is_empty() {
         egui::Window::new("Problems")
-            .default_pos([240.0, 420.0])
+            .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
             .show(ctx, |ui| problems(ui, state, &mut pending));
     }
     apply(ctx, state, pending, &mut out);

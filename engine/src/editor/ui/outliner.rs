@@ -25,7 +25,7 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     let level = &state.doc.level;
     let modifiers = ui.input(|i| i.modifiers);
     egui::ScrollArea::vertical()
-        .max_height(300.0)
+        .auto_shrink([false, false])
         .show(ui, |ui| {
             ui.label(egui::RichText::new("Instances").strong());
             for (i, entry) in level.instances.iter().enumerate() {

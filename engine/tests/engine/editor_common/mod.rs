@@ -3,6 +3,8 @@
 
 #![allow(dead_code)]
 
+pub mod mode_run;
+
 use std::path::{Path, PathBuf};
 
 use candela::assets::{
