@@ -324,9 +324,12 @@ impl Engine {
 
     /// Holds the game (`true`): frames still render and converge, but the game's `frame` and
     /// `fixed_step` hooks, physics and the level's logic do not run and game time stands
-    /// still. The shell holds it outside the Playing screen.
+    /// still; effect sounds are held (`Audio::set_effects_paused`), music plays on. The shell
+    /// holds it outside the Playing screen.
     pub fn set_paused(&mut self, paused: bool) {
         self.paused = paused;
+        // Laser hums and footsteps stop with the game; the music plays on.
+        self.audio.set_effects_paused(paused);
     }
 
     /// Whether the game is held ([`Engine::set_paused`]).

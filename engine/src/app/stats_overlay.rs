@@ -71,18 +71,24 @@ impl StatsOverlay {
             if !visible {
                 return;
             }
+            // Bottom right, in a small fixed font: clear of the games' HUD (objective top left,
+            // counters top right, crosshair in the middle).
             egui::Window::new("Candela stats (F3)")
-                .default_pos([8.0, 8.0])
+                .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
                 .resizable(false)
+                .title_bar(false)
                 .show(context, |ui| {
-                    ui.style_mut().override_text_style = Some(egui::TextStyle::Small);
+                    ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
+                    ui.spacing_mut().interact_size.y = 13.0;
+                    ui.spacing_mut().item_spacing.y = 1.0;
+                    ui.label(egui::RichText::new("Candela stats (F3)").strong());
                     egui::Grid::new("stats")
                         .num_columns(2)
                         .spacing([8.0, 1.0])
                         .show(ui, |ui| {
                             for (label, value) in stats.lines() {
                                 ui.label(label);
-                                ui.label(egui::RichText::new(value).monospace().small());
+                                ui.label(egui::RichText::new(value).monospace().size(11.0));
                                 ui.end_row();
                             }
                         });

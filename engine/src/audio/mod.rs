@@ -23,6 +23,7 @@ mod error;
 mod history;
 mod limits;
 mod options;
+mod pause;
 mod playback;
 mod riff;
 mod sounds;
@@ -37,6 +38,7 @@ pub use limits::{
     SPATIAL_SOUND_CAPACITY, VOLUME_RAMP_SECONDS,
 };
 pub use options::{Bus, PlayOptions, PlayedSound, PlayingId, decibels_of};
+pub use pause::PAUSE_FADE_SECONDS;
 pub use playback::Audio;
 pub use sounds::{Sound, decode_sound, decode_sound_bytes};
 pub use test_device::TestDevice;

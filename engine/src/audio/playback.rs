@@ -33,7 +33,7 @@ use super::{AudioError, Bus, PlayOptions, PlayedSound, PlayingId, Sound};
 /// (kira's default; 2.9 ms at 44.1 kHz), so a new sound starts within one block.
 const INTERNAL_BUFFER_FRAMES: usize = 128;
 
-fn tween_seconds(seconds: f64) -> Tween {
+pub(super) fn tween_seconds(seconds: f64) -> Tween {
     let seconds = if seconds.is_finite() {
         seconds.max(0.0)
     } else {
@@ -79,6 +79,8 @@ pub struct Audio {
     pub(super) test_rate_hz: Option<u32>,
     /// What went wrong with the sound device, one message per failure (also logged).
     pub(super) device_messages: Vec<String>,
+    /// Effect sounds are held (the game is paused; see `pause.rs`).
+    pub(super) effects_paused: bool,
 }
 
 impl Audio {
@@ -149,6 +151,7 @@ impl Audio {
             output,
             test_rate_hz,
             device_messages: Vec::new(),
+            effects_paused: false,
             silent_rate_hz,
             manager,
             listener,

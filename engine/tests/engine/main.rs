@@ -42,6 +42,7 @@ mod assets_tga;
 mod audio_decode;
 mod audio_device;
 mod audio_mix;
+mod audio_pause;
 mod audio_spatial;
 mod balance_parts;
 mod balance_pool;
