@@ -133,7 +133,11 @@ pub(super) fn render_one(
             attempt(tracer, converge)?
         }
     };
-    scaling.observe(traced.render_seconds + apply_seconds + traced.denoise_seconds);
+    let view_moving = commit.motion.cut || commit.motion.camera > converge.policy.camera_reset;
+    scaling.observe(
+        traced.render_seconds + apply_seconds + traced.denoise_seconds,
+        view_moving,
+    );
     Ok(Rendered {
         frame: commit.frame,
         tracer: tracer.name(),

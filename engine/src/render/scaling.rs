@@ -4,8 +4,10 @@
 //! Owns: a small controller over the measured frame time (exponential average). Too slow by
 //! more than 10 %: first fewer samples per pixel, then a lower roulette scale (shorter paths; no
 //! bias, more noise), then a lower resolution (presented upscaled). Fast by more than 25 %: the
-//! reverse order. One step per three frames, so that each step's effect is measured before the
-//! next; more than twice too slow, samples and roulette drop at once and then the resolution in
+//! reverse order, except that the resolution rises only while the view moves: a resolution
+//! change restarts the converging image, and a still view that stepped up, found itself too
+//! slow and stepped back down restarted every few frames and never converged (issue 37). One
+//! step per three frames, so that each step's effect is measured before the next; more than twice too slow, samples and roulette drop at once and then the resolution in
 //! proportion, so a first frame of seconds is followed by a playable one within a few frames. Render thread. Must not: change anything but the workload numbers.
 
 /// What to hold and within which bounds.
@@ -130,8 +132,10 @@ impl Scaling {
         std::mem::take(&mut self.resized)
     }
 
-    /// Feeds the measured seconds of the frame just rendered.
-    pub fn observe(&mut self, seconds: f64) {
+    /// Feeds the measured seconds of the frame just rendered; `view_moving`: the camera moved
+    /// or cut in that frame (its image restarted or reprojects anyway). While the view is still
+    /// the resolution only goes down, so a still view restarts a bounded number of times.
+    pub fn observe(&mut self, seconds: f64, view_moving: bool) {
         let Some(t) = self.target else {
             return;
         };
@@ -165,7 +169,7 @@ impl Scaling {
                 w.resolution = (w.resolution - 0.125).max(t.min_resolution);
             }
         } else if s < 0.75 * t.frame_seconds {
-            if w.resolution < self.max_resolution - 1e-6 {
+            if w.resolution < self.max_resolution - 1e-6 && view_moving {
                 w.resolution = (w.resolution + 0.125).min(self.max_resolution);
             } else if w.roulette_scale < 1.0 {
                 w.roulette_scale = (w.roulette_scale + 0.1).min(1.0);
@@ -203,7 +207,7 @@ mod tests {
             let mut s = Scaling::new(start, Some(ScalingTarget::new(0.02)));
             for _ in 0..400 {
                 let w = s.current();
-                s.observe(cost(&w));
+                s.observe(cost(&w), true);
             }
             let t = cost(&s.current());
             assert!(
@@ -225,7 +229,7 @@ mod tests {
         let mut frames = 0;
         while full(&s.current()) > 2.0 * target {
             let w = s.current();
-            s.observe(full(&w));
+            s.observe(full(&w), true);
             frames += 1;
             assert!(frames < 12, "still {:?} after {frames} frames", s.current());
         }
@@ -252,7 +256,7 @@ mod tests {
             max_resolution: 0.75,
         });
         for _ in 0..100 {
-            s.observe(0.0001);
+            s.observe(0.0001, true);
         }
         assert_eq!(s.current().resolution, 0.75);
     }
@@ -266,7 +270,7 @@ mod tests {
             if w.resolution < 1.0 && (w.spp > 1 || w.roulette_scale > 0.5 + 1e-6) {
                 seen_low_res_with_spp = true;
             }
-            s.observe(1.0);
+            s.observe(1.0, true);
         }
         assert!(!seen_low_res_with_spp);
         assert_eq!(
@@ -277,5 +281,36 @@ mod tests {
                 resolution: 0.25
             }
         );
+    }
+
+    #[test]
+    fn a_still_view_never_raises_the_resolution_so_it_stops_restarting() {
+        // A cost that sits between two resolution steps: stepping up is too slow, stepping
+        // down is fast enough. Moving, the controller may swing; still, it must settle.
+        let swinging = |w: &Workload| 0.2 * (w.resolution * w.resolution) as f64;
+        let mut s = Scaling::new(1, Some(ScalingTarget::new(0.02)));
+        let mut restarts = 0;
+        for _ in 0..300 {
+            let w = s.current();
+            s.observe(swinging(&w), false);
+            if s.resized() {
+                restarts += 1;
+            }
+        }
+        assert!(restarts <= 8, "{restarts} restarts of a still view");
+        let settled = s.current();
+        for _ in 0..100 {
+            let w = s.current();
+            s.observe(swinging(&w), false);
+            assert!(!s.resized(), "the resolution changed on a still view: {:?}", s.current());
+        }
+        assert_eq!(s.current(), settled);
+        // Moving, it climbs again when fast.
+        let mut climbed = false;
+        for _ in 0..20 {
+            s.observe(0.001, true);
+            climbed |= s.current().resolution > settled.resolution;
+        }
+        assert!(climbed);
     }
 }
