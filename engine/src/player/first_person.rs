@@ -46,6 +46,15 @@ pub struct FirstPersonConfig {
     pub reach: f32,
     /// Where a held body floats, metres along the view.
     pub hold_distance: f32,
+    /// How far a held body floats to the right (+x) and up (+y) of the view's centre,
+    /// metres: low and to the side, so the crosshair and the way ahead stay in sight.
+    pub hold_offset: Vec2,
+    /// Lowest pitch the hold point follows, radians (looking at one's feet does not pull the
+    /// body into them).
+    pub hold_pitch_min: f32,
+    /// A drop places the held body on the surface under the crosshair within this many
+    /// metres (`sim::physics::Placement`); farther, it falls from where it is held.
+    pub place_reach: f32,
     /// Speed a throw gives the held body, m/s.
     pub throw_speed: f32,
     /// Vertical field of view, radians.
@@ -62,6 +71,9 @@ impl Default for FirstPersonConfig {
             max_pitch: 89f32.to_radians(),
             reach: 2.5,
             hold_distance: 1.3,
+            hold_offset: Vec2::new(0.4, -0.35),
+            hold_pitch_min: -40f32.to_radians(),
+            place_reach: 3.5,
             throw_speed: 6.0,
             vertical_fov: 70f32.to_radians(),
             controller: CharacterController::default(),
@@ -126,6 +138,9 @@ impl FirstPersonPlayer {
         };
         let carrier = Carrier {
             hold_distance: config.hold_distance,
+            hold_offset: config.hold_offset,
+            hold_pitch_min: config.hold_pitch_min,
+            place_reach: config.place_reach,
             reach: config.reach,
             ignore: Some(body),
             ..Carrier::default()

@@ -23,8 +23,9 @@ pub enum Task {
     Walk { to: Vec2, within: f32 },
     /// Walk up to the named body and pick it up.
     Pick { body: String },
-    /// Carry what is held until it is over `over` (x, z within `within`), facing `yaw`
-    /// (radians) when given, then drop it and wait for it to settle.
+    /// Carry what is held to `over` (a point on the surface it is to rest on), facing `yaw`
+    /// (radians) when given, put the crosshair on it and drop it once the drop's preview lies
+    /// within `within` metres of it (x, z); then wait for it to settle.
     Carry {
         over: Vec3,
         within: f32,
@@ -48,6 +49,9 @@ pub enum Task {
     /// Wait this many steps.
     Wait { steps: u32 },
 }
+
+/// How far short of a drop spot the bot stands, metres (horizontally).
+const STAND_BACK: f32 = 1.1;
 
 /// What the bot does this step: keys held, buttons pressed, mouse counts.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -175,24 +179,26 @@ impl Bot {
                 }
             }
             Task::Carry { over, within, yaw } => {
-                let Some(h) = held else {
+                if held.is_none() {
                     // Dropped: let it settle.
                     self.waited += 1;
                     if self.waited > 60 {
                         self.advance();
                     }
                     return act;
-                };
-                let pitch = -30f32.to_radians();
-                let ahead = player.config.hold_distance * pitch.cos();
+                }
+                // Stand 1.1 m short of the spot, facing it (or `yaw`), put the crosshair on
+                // it and drop once the drop's preview lies on it, as a player would.
                 let facing = yaw.unwrap_or_else(|| yaw_to(feet, over));
-                let back = Vec2::new(-facing.sin(), -facing.cos()) * ahead;
+                let back = Vec2::new(-facing.sin(), -facing.cos()) * STAND_BACK;
                 let stand = over.xz() - back;
+                let pitch = pitch_to(eye, over);
                 if walk_to(player, feet, stand, pitch, 0.04, &mut act) {
-                    aim(player, facing, pitch, &mut act);
-                    let off = (position(h) - over).with_y(0.0).length();
+                    let (dy, dp) = aim(player, facing, pitch, &mut act);
+                    let spot = engine.physics().placement(world, player.camera);
+                    let off = spot.map_or(f32::INFINITY, |p| (p.position - over).xz().length());
                     self.waited += 1;
-                    if off < within && self.waited > 40 {
+                    if dy.abs() < 0.01 && dp.abs() < 0.01 && off < within && self.waited > 20 {
                         act.use_key = true;
                         self.waited = 0;
                     }

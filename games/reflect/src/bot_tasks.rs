@@ -60,7 +60,7 @@ pub fn chamber_tasks(index: usize) -> Vec<Task> {
             Task::Wait { steps: 100 },
             pick("cube_3"),
             Task::Carry {
-                over: Vec3::new(-6.75, 1.3, -40.0),
+                over: Vec3::new(-6.75, 1.05, -40.0),
                 within: 0.1,
                 yaw: Some(std::f32::consts::FRAC_PI_2),
             },

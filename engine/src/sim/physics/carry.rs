@@ -15,7 +15,7 @@ use hecs::{Entity, World};
 use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, Ray};
 
 use super::bodies::{BodyHandle, entity_of};
-use super::convert::{vec_from_rapier, vec_to_rapier};
+use super::convert::{pose_to_rapier, vec_from_rapier, vec_to_rapier};
 use crate::ecs::Transform;
 
 /// What the game asks of a [`Carrier`] this step.
@@ -33,8 +33,18 @@ pub enum CarryRequest {
 /// Carries at most one body at a point in front of its entity's view.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Carrier {
-    /// Hold point: this many metres along the view (local −Z).
+    /// Hold point: this many metres along the hold direction (the view, its pitch limited to
+    /// `hold_pitch_min`).
     pub hold_distance: f32,
+    /// Hold point offset across the hold direction, metres: +X to the view's right, +Y up
+    /// (a first-person hold low and to the side keeps the crosshair clear).
+    pub hold_offset: glam::Vec2,
+    /// Lowest pitch of the hold direction, radians (looking further down does not pull the
+    /// held body into the carrier's own feet).
+    pub hold_pitch_min: f32,
+    /// A drop places the body upright on the surface under the view's centre within this
+    /// many metres (`place::find`); 0, or no such surface, lets go where it is held.
+    pub place_reach: f32,
     /// Longest pick ray, metres.
     pub reach: f32,
     /// Heaviest body it lifts, kg.
@@ -56,6 +66,9 @@ impl Default for Carrier {
     fn default() -> Self {
         Self {
             hold_distance: 1.5,
+            hold_offset: glam::Vec2::ZERO,
+            hold_pitch_min: -std::f32::consts::FRAC_PI_2,
+            place_reach: 0.0,
             reach: 3.0,
             max_mass_kg: 60.0,
             max_speed: 12.0,
@@ -93,7 +106,16 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
             (carrier.held.is_some(), carrier.reach, carrier.max_mass_kg);
         match request {
             Some(CarryRequest::Drop) => {
-                let _ = release(rapier, world, entity);
+                let place_reach = carrier.place_reach;
+                if let Some(handle) = release(rapier, world, entity)
+                    && let Some(spot) =
+                        super::place::find(rapier, eye, view, place_reach, handle, ignore_body)
+                    && let Some(body) = rapier.bodies.get_mut(handle)
+                {
+                    body.set_position(pose_to_rapier(spot.position, spot.rotation), true);
+                    body.set_linvel(vec_to_rapier(Vec3::ZERO), true);
+                    body.set_angvel(vec_to_rapier(Vec3::ZERO), true);
+                }
             }
             Some(CarryRequest::Throw { speed }) => {
                 if let Some(handle) = release(rapier, world, entity)
@@ -130,7 +152,7 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
             let _ = release(rapier, world, entity);
             continue;
         };
-        let target = eye + view * carrier.hold_distance;
+        let target = hold_point(&carrier, eye, view);
         let Some(body) = rapier.bodies.get_mut(handle) else {
             let _ = release(rapier, world, entity);
             continue;
@@ -147,8 +169,23 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
     }
 }
 
+/// Where `carrier` holds its body, for an eye at `eye` looking along unit `view`.
+fn hold_point(carrier: &Carrier, eye: Vec3, view: Vec3) -> Vec3 {
+    let flat = Vec3::new(view.x, 0.0, view.z);
+    let Some(flat) = flat.try_normalize() else {
+        return eye + view * carrier.hold_distance;
+    };
+    let pitch = view.y.clamp(-1.0, 1.0).asin().max(carrier.hold_pitch_min);
+    let forward = flat * pitch.cos() + Vec3::Y * pitch.sin();
+    let right = flat.cross(Vec3::Y);
+    let up = right.cross(forward);
+    eye + forward * carrier.hold_distance
+        + right * carrier.hold_offset.x
+        + up * carrier.hold_offset.y
+}
+
 /// Eye position, unit view direction, and the body the pick ray must ignore.
-fn carrier_view(
+pub(super) fn carrier_view(
     world: &World,
     entity: Entity,
 ) -> Option<(Vec3, Vec3, Option<rapier3d::prelude::RigidBodyHandle>)> {

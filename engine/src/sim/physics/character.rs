@@ -15,7 +15,10 @@ use hecs::{Entity, World};
 use rapier3d::control::{
     CharacterAutostep, CharacterCollision, CharacterLength, KinematicCharacterController,
 };
-use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, RigidBodySet};
+use rapier3d::prelude::{
+    Collider as RapierCollider, ColliderHandle, PhysicsWorld as RapierWorld, QueryFilter,
+    RigidBodyHandle, RigidBodySet,
+};
 
 use super::bodies::{BodyHandle, Collider, RigidBody};
 use super::convert::{vec_from_rapier, vec_to_rapier};
@@ -158,6 +161,15 @@ pub(super) fn move_characters(
         .map(|(e, ..)| e)
         .collect();
     characters.sort_by_key(|e| e.to_bits());
+    // What each character carries: its own held body never blocks its walk.
+    let carried: Vec<(Entity, RigidBodyHandle)> = world
+        .query::<&super::Carrier>()
+        .iter()
+        .filter_map(|c| {
+            let held = world.get::<&BodyHandle>(c.held?).ok()?.0;
+            Some((c.ignore?, held))
+        })
+        .collect();
     let no_bodies = RigidBodySet::new();
     for entity in characters {
         let Ok((controller, input, state, handle)) = world.query_one_mut::<(
@@ -206,9 +218,16 @@ pub(super) fn move_characters(
 
         let kcc = rapier_controller(controller);
         let mut collisions: Vec<CharacterCollision> = Vec::new();
+        let holding = carried
+            .iter()
+            .find(|(carrier, _)| *carrier == entity)
+            .map(|&(_, held)| held);
+        let not_held =
+            |_: ColliderHandle, c: &RapierCollider| holding.is_none() || c.parent() != holding;
         let filter = QueryFilter::default()
             .exclude_rigid_body(handle.0)
-            .exclude_sensors();
+            .exclude_sensors()
+            .predicate(&not_held);
         let movement = {
             let queries = walk_queries(rapier, &no_bodies, filter);
             kcc.move_shape(dt, &queries, &*shape, &pose, vec_to_rapier(desired), |c| {

@@ -11,6 +11,7 @@ mod bodies;
 mod carry;
 mod character;
 mod convert;
+mod place;
 mod ride;
 mod sensors;
 mod shapes;
@@ -20,6 +21,7 @@ pub use bodies::{
     BodyHandle, BodyKind, Collider, DEFAULT_DENSITY_KG_PER_M3, PhysicsPose, RigidBody,
 };
 pub use carry::{Carrier, CarryRequest};
+pub use place::Placement;
 pub use character::{CharacterController, CharacterInput, CharacterState, character_bundle};
 pub use sensors::SensorContacts;
 pub use shapes::{ColliderShape, ShapeError};

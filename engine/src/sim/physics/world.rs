@@ -165,6 +165,16 @@ impl PhysicsWorld {
         true
     }
 
+    /// Where the body held by `carrier` (an entity with a [`super::Carrier`]) would rest if
+    /// it were dropped now (`place::find`), for a preview; `None` when nothing is held, the
+    /// carrier places nothing, or no surface under its view takes the body.
+    pub fn placement(&self, world: &World, carrier: Entity) -> Option<super::Placement> {
+        let (eye, view, ignore) = super::carry::carrier_view(world, carrier)?;
+        let c = *world.get::<&super::Carrier>(carrier).ok()?;
+        let held = world.get::<&BodyHandle>(c.held?).ok()?.0;
+        super::place::find(&self.rapier, eye, view, c.place_reach, held, ignore)
+    }
+
     /// The first body hit by a ray from `origin` along `direction` (need not be unit length)
     /// within `max_distance` metres, and the distance to it; sensors are ignored.
     pub fn cast_ray(
