@@ -255,6 +255,10 @@ impl Game for FirstPersonGame {
                 FocusKind::Surface => None,
             }),
             counters: Vec::new(),
+            outline: self
+                .player
+                .as_ref()
+                .map_or_else(Vec::new, FirstPersonPlayer::drop_outline),
         }
     }
 

@@ -257,7 +257,10 @@ mod tests {
         }
         let moves: Vec<f32> = reported.iter().copied().filter(|&m| m > 0.0).collect();
         assert!(moves.len() >= 3, "{reported:?}");
-        assert!(moves.iter().all(|&m| m > CAMERA_STILL_TOLERANCE), "{reported:?}");
+        assert!(
+            moves.iter().all(|&m| m > CAMERA_STILL_TOLERANCE),
+            "{reported:?}"
+        );
         // A real step is reported at once, at its size.
         place(&mut world, camera, Vec3::new(0.0, 1.0, 0.5));
         let m = x.extract(&mut world).camera_motion;

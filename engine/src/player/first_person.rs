@@ -27,8 +27,8 @@ use crate::assets::CameraDesc;
 use crate::ecs::{CameraRig, Transform};
 use crate::query::Queries;
 use crate::sim::physics::{
-    Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, ShapeError,
-    character_bundle,
+    Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, Placement,
+    ShapeError, character_bundle,
 };
 
 /// How a first-person player is built and moves.
@@ -101,6 +101,9 @@ pub struct FirstPersonPlayer {
     pub pitch: f32,
     pub config: FirstPersonConfig,
     focus: Option<Focus>,
+    /// Where the held body would land if dropped now, and the eye it was seen from (as of
+    /// the last step).
+    drop_preview: Option<(Placement, Vec3)>,
 }
 
 impl FirstPersonPlayer {
@@ -125,6 +128,7 @@ impl FirstPersonPlayer {
             pitch: 0.0,
             config,
             focus: None,
+            drop_preview: None,
         };
         let eye = Transform {
             translation: centre + player.eye_offset(),
@@ -203,6 +207,21 @@ impl FirstPersonPlayer {
         world.get::<&Carrier>(self.camera).ok().and_then(|c| c.held)
     }
 
+    /// Where the held body would land if dropped now (as of the last step), for a preview.
+    pub fn drop_preview(&self) -> Option<&Placement> {
+        self.drop_preview.as_ref().map(|(p, _)| p)
+    }
+
+    /// The drop preview's outline in view-plane units for the HUD ([`super::drop_outline`]),
+    /// seen from the last step's eye; empty when nothing would be placed.
+    pub fn drop_outline(&self) -> Vec<[[f32; 2]; 2]> {
+        self.drop_preview
+            .as_ref()
+            .map_or_else(Vec::new, |(placement, eye)| {
+                super::drop_outline(placement, *eye, self.rotation(), self.config.vertical_fov)
+            })
+    }
+
     /// What was under the crosshair at the last step.
     pub fn focus(&self) -> Option<&Focus> {
         self.focus.as_ref()
@@ -264,6 +283,7 @@ impl FirstPersonPlayer {
             t.rotation = rotation;
         }
         self.focus = focus(world, queries, eye, self.view(), self.config.reach);
+        self.drop_preview = physics.placement(world, self.camera).map(|p| (p, eye));
 
         let held = self.held(world);
         let mut out = PlayerStep::default();

@@ -8,12 +8,14 @@
 //! instances) and below `app`. Main thread, fixed step, before physics. Must not: read
 //! devices, clocks or the engine's runner.
 
+mod drop_preview;
 mod first_person;
 mod follow_camera;
 mod input;
 mod interact;
 mod third_person;
 
+pub use drop_preview::outline as drop_outline;
 pub use first_person::{FirstPersonConfig, FirstPersonPlayer, PlayerStep};
 pub use follow_camera::{CameraPose, FollowCamera, ease_distance};
 pub use input::PlayerInput;

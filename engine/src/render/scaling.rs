@@ -302,7 +302,11 @@ mod tests {
         for _ in 0..100 {
             let w = s.current();
             s.observe(swinging(&w), false);
-            assert!(!s.resized(), "the resolution changed on a still view: {:?}", s.current());
+            assert!(
+                !s.resized(),
+                "the resolution changed on a still view: {:?}",
+                s.current()
+            );
         }
         assert_eq!(s.current(), settled);
         // Moving, it climbs again when fast.

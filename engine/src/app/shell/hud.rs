@@ -1,6 +1,7 @@
 //! The HUD while playing: a crosshair at the centre (white with a dark outline and an amber
 //! dot, readable on any picture), the objective top left, counters top right and the
-//! interaction prompt under the crosshair — all from the game's [`HudInfo`].
+//! interaction prompt under the crosshair, the outline of where a held body will land — all
+//! from the game's [`HudInfo`].
 //!
 //! Draws with egui. Main thread. Must not: read the world (the game fills `HudInfo`).
 
@@ -36,6 +37,21 @@ pub fn show(ctx: &egui::Context, hud: &HudInfo) {
             }
         }
         painter.circle_filled(c, 2.5, theme::ACCENT);
+    }
+    if !hud.outline.is_empty() {
+        // The drop preview: a dark underlay and a light line, readable on any picture.
+        let painter = ctx.layer_painter(egui::LayerId::background());
+        let c = screen.center();
+        let scale = screen.height() * 0.5;
+        let at = |p: [f32; 2]| c + Vec2::new(p[0], -p[1]) * scale;
+        for (width, colour) in [
+            (3.5, Color32::from_black_alpha(120)),
+            (1.5, Color32::from_rgba_unmultiplied(180, 235, 255, 200)),
+        ] {
+            for [a, b] in &hud.outline {
+                painter.line_segment([at(*a), at(*b)], Stroke::new(width, colour));
+            }
+        }
     }
     if let Some(objective) = &hud.objective {
         egui::Area::new(egui::Id::unique("shell_hud_objective"))

@@ -65,6 +65,10 @@ pub struct HudInfo {
     pub prompt: Option<String>,
     /// Counters, top right: (label, value), e.g. ("Lights", "2 / 3").
     pub counters: Vec<(String, String)>,
+    /// Lines drawn over the picture (the outline of where a held body will land), each end
+    /// in view-plane units: x right, y up, 1 = from the centre to the top edge
+    /// (`player::drop_outline`).
+    pub outline: Vec<[[f32; 2]; 2]>,
 }
 
 impl Default for HudInfo {
@@ -74,6 +78,7 @@ impl Default for HudInfo {
             objective: None,
             prompt: None,
             counters: Vec::new(),
+            outline: Vec::new(),
         }
     }
 }

@@ -21,8 +21,8 @@ pub use bodies::{
     BodyHandle, BodyKind, Collider, DEFAULT_DENSITY_KG_PER_M3, PhysicsPose, RigidBody,
 };
 pub use carry::{Carrier, CarryRequest};
-pub use place::Placement;
 pub use character::{CharacterController, CharacterInput, CharacterState, character_bundle};
+pub use place::Placement;
 pub use sensors::SensorContacts;
 pub use shapes::{ColliderShape, ShapeError};
 pub use world::{GRAVITY, PhysicsWorld, StepReport};

@@ -72,9 +72,8 @@ pub(super) fn find(
         let parent = c.parent();
         parent != Some(held) && (ignore.is_none() || parent != ignore)
     };
-    let queries = rapier.query_pipeline_with_filter(
-        QueryFilter::default().exclude_sensors().predicate(&keep),
-    );
+    let queries = rapier
+        .query_pipeline_with_filter(QueryFilter::default().exclude_sensors().predicate(&keep));
     let ray = Ray::new(vec_to_rapier(eye), vec_to_rapier(view));
     let (_, hit) = queries.cast_ray_and_get_normal(&ray, reach, true)?;
     if hit.normal.y < FLOOR_NORMAL_Y {

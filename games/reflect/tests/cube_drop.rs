@@ -1,0 +1,168 @@
+//! Carrying chamber 1's cube as a new player does (issue 37): a drop lands where the crosshair
+//! points, the cube rests upright on the plate and presses it, from 1, 2 and 3 m; the drop's
+//! preview shows that spot before the key is pressed; and walking with the cube held while
+//! looking down at the plate never stops the player. Driven through the keys (E) and the
+//! player's view, on the game's own frame loop (headless, CPU tracer, one step a frame).
+
+use candela::app::{Engine, Game, KeyCode};
+use candela::assets::CameraDesc;
+use candela::render::RenderConfig;
+use glam::{Vec3, Vec3Swizzles};
+use reflect::game::{ReflectEvent, ReflectGame};
+use reflect::world::ReflectWorld;
+
+/// Chamber 1's plate: its centre on the floor, and the top of it a player aims at (metres).
+const PLATE: Vec3 = Vec3::new(3.0, 0.0, -11.0);
+const PLATE_TOP: Vec3 = Vec3::new(3.0, 0.08, -11.0);
+
+fn world() -> ReflectWorld {
+    let (path, root) = reflect::cli::locate(None).expect("the game file");
+    ReflectWorld::load(&path, &root).expect("the world loads")
+}
+
+fn frames(engine: &mut Engine, game: &mut ReflectGame, n: usize) {
+    for _ in 0..n {
+        engine.frame(1.0 / 60.0, game).expect("a frame");
+        let _ = engine.rendered();
+    }
+}
+
+/// Presses E for one frame and lets it go.
+fn press_e(engine: &mut Engine, game: &mut ReflectGame) {
+    engine.input_mut().key(KeyCode::KeyE, true);
+    frames(engine, game, 1);
+    engine.input_mut().key(KeyCode::KeyE, false);
+    frames(engine, game, 1);
+}
+
+/// Chamber 1 with the player standing `distance` metres south of the plate, facing it, the
+/// cube picked up with E (put before the eye, as a player walks up to it).
+fn holding_the_cube(world: &ReflectWorld, distance: f32) -> (Engine, ReflectGame, hecs::Entity) {
+    let mut game = ReflectGame::new(world.clone(), 0);
+    let mut engine =
+        Engine::new(RenderConfig::cpu(16, 9), game.inner().environment()).expect("engine");
+    game.setup(&mut engine).expect("setup");
+    let eye = PLATE + Vec3::new(0.0, 1.65, distance);
+    game.start_at_view(&CameraDesc {
+        position: eye.to_array(),
+        look_at: (eye - Vec3::Z).to_array(),
+        up: [0.0, 1.0, 0.0],
+        vertical_fov_deg: 70.0,
+        aperture_radius: 0.0,
+        focus_distance: None,
+    });
+    frames(&mut engine, &mut game, 5);
+    let cube = *game
+        .inner()
+        .spawned()
+        .by_name
+        .get("cube_1")
+        .expect("chamber 1 has cube_1");
+    let player = game.inner().player().expect("a player");
+    let eye = player.eye(engine.world());
+    let (view, rotation) = (player.view(), player.rotation());
+    engine
+        .physics_mut()
+        .set_pose(cube, eye + view * 0.9, rotation);
+    press_e(&mut engine, &mut game);
+    let held = game.inner().player().and_then(|p| p.held(engine.world()));
+    assert_eq!(held, Some(cube), "E picks up the cube in front of the eye");
+    (engine, game, cube)
+}
+
+/// Turns the player's view to put the crosshair on `at`.
+fn aim_at(engine: &mut Engine, game: &mut ReflectGame, at: Vec3) {
+    let eye = game
+        .inner()
+        .player()
+        .map(|p| p.eye(engine.world()))
+        .expect("a player");
+    let d = at - eye;
+    if let Some(player) = game.inner_mut().player_mut() {
+        player.yaw = (-d.x).atan2(-d.z);
+        player.pitch = d.y.atan2(d.xz().length());
+    }
+}
+
+fn door_opened(game: &ReflectGame) -> bool {
+    game.log()
+        .iter()
+        .any(|(_, e)| matches!(e, ReflectEvent::Rule { name, rising: true } if name == "door_1"))
+}
+
+#[test]
+fn a_cube_dropped_while_aiming_at_the_plate_lands_on_it_and_presses_it() {
+    let world = world();
+    for distance in [1.0f32, 2.0, 3.0] {
+        let (mut engine, mut game, cube) = holding_the_cube(&world, distance);
+        aim_at(&mut engine, &mut game, PLATE_TOP);
+        frames(&mut engine, &mut game, 30);
+        let camera = game.inner().player().expect("player").camera;
+        let preview = engine
+            .physics()
+            .placement(engine.world(), camera)
+            .unwrap_or_else(|| panic!("{distance} m: no drop preview on the plate"));
+        assert!(
+            (preview.position - PLATE).xz().length() < 0.1,
+            "{distance} m: the preview is at {:?}, not on the plate",
+            preview.position
+        );
+        assert!(!door_opened(&game), "{distance} m: the door opened early");
+        press_e(&mut engine, &mut game);
+        frames(&mut engine, &mut game, 90);
+        let (at, rotation) = engine.physics().pose(cube).expect("the cube's pose");
+        assert!(
+            (at - PLATE).xz().length() < 0.2,
+            "{distance} m: the cube landed at {at:?}, {:.2} m off the plate's centre",
+            (at - PLATE).xz().length()
+        );
+        assert!(
+            (rotation * Vec3::Y).y > 0.99,
+            "{distance} m: the cube rests tilted"
+        );
+        assert!(
+            door_opened(&game),
+            "{distance} m: the plate did not open the door"
+        );
+        let _ = engine.shutdown();
+    }
+}
+
+#[test]
+fn walking_with_the_cube_held_while_looking_down_at_the_plate_never_stops_the_player() {
+    let world = world();
+    let (mut engine, mut game, _) = holding_the_cube(&world, 3.0);
+    // Looking down near the plate, walking across it: the held cube's hold point is at the
+    // floor in front of the feet, where it used to catch on the plate's rim.
+    if let Some(player) = game.inner_mut().player_mut() {
+        player.pitch = -70f32.to_radians();
+    }
+    let start = game
+        .inner()
+        .player()
+        .map(|p| p.feet(engine.world()))
+        .expect("player");
+    engine.input_mut().key(KeyCode::KeyW, true);
+    let mut slowest = f32::INFINITY;
+    let mut before = start;
+    for step in 0..150 {
+        frames(&mut engine, &mut game, 1);
+        let feet = game
+            .inner()
+            .player()
+            .map(|p| p.feet(engine.world()))
+            .expect("player");
+        if step > 20 {
+            slowest = slowest.min((feet - before).xz().length() * 60.0);
+        }
+        before = feet;
+    }
+    engine.input_mut().key(KeyCode::KeyW, false);
+    let held = game.inner().player().and_then(|p| p.held(engine.world()));
+    assert!(held.is_some(), "the cube was dropped on the way");
+    let walked = (before - start).xz().length();
+    assert!(
+        walked > 4.0 && slowest > 1.0,
+        "walked {walked:.2} m in 2.5 s, slowest {slowest:.2} m/s: the held cube stopped the player"
+    );
+}
