@@ -87,6 +87,7 @@ impl Game for RoomGame {
             objective: Some("Switch on every light".into()),
             prompt: Some("E   use the switch".into()),
             counters: vec![("Lights".into(), "1 / 3".into())],
+            ..HudInfo::default()
         }
     }
 }
