@@ -146,7 +146,12 @@ impl Feedback {
 
     /// Chamber `index` was finished at step `step`.
     pub fn finished(&mut self, step: u64, index: usize, commands: &mut Commands) {
-        self.notice(step, chamber_complete(index), Some(("chime", 0.7)), commands);
+        self.notice(
+            step,
+            chamber_complete(index),
+            Some(("chime", 0.7)),
+            commands,
+        );
     }
 
     /// Level rule `name` rose or fell at step `step` while the player was in chamber `current`:

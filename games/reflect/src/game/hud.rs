@@ -6,8 +6,8 @@
 //!
 //! Main thread, the shell's HUD and ending hooks. Must not: change anything (reads only).
 
-use candela::app::{Game, TOO_FAR};
 use candela::app::shell::{GameSummary, HudInfo};
+use candela::app::{Game, TOO_FAR};
 
 use super::ReflectGame;
 

@@ -14,8 +14,7 @@ use candela::app::{
     FirstPersonGame, Game, LevelEvent, SetupError, SpawnedLevel, Step,
     shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellInfo},
 };
-use candela::sim::triggers::Phase;
-use candela::sim::triggers::Outcome;
+use candela::sim::triggers::{Outcome, Phase};
 use hecs::Entity;
 
 use crate::hazard::{beam_crosses, send_back};
@@ -328,8 +327,7 @@ impl Game for ReflectGame {
                     .rule(step.index, name, firing.rising, current, step.commands);
             }
             LevelEvent::Volume { name, event } if event.phase != Phase::Stay => {
-                self.feedback
-                    .volume(step.index, name, event, step.commands);
+                self.feedback.volume(step.index, name, event, step.commands);
             }
             LevelEvent::Ended(Outcome::Won(_)) if self.ended_at.is_none() => {
                 self.ended_at = Some(self.steps);
