@@ -12,7 +12,8 @@ use glam::{Vec2, Vec3};
 use reflect::bot::{Act, Bot, Task};
 use reflect::game::ReflectGame;
 use reflect::game::feedback::{
-    DOOR_CLOSES, DOOR_OPENS, PLATE_PRESSED, PLATE_RELEASED, SENT_BACK, chamber_complete,
+    DOOR_CLOSED_BEHIND, DOOR_CLOSES, DOOR_OPENS, PLATE_PRESSED, PLATE_RELEASED, SENT_BACK,
+    chamber_complete,
 };
 use reflect::world::ReflectWorld;
 
@@ -150,6 +151,9 @@ fn pressing_e_at_a_cube_out_of_reach_says_too_far() {
 #[test]
 fn a_laser_that_sends_the_player_back_says_so_with_a_flash() {
     let (mut game, mut engine) = start(1);
+    // Started in chamber 2, the door behind never opened: nothing closed behind the player.
+    frame(&mut game, &mut engine, Act::default());
+    assert_eq!(game.hud().messages, Vec::<String>::new());
     // Straight through the laser fence in front of chamber 2's exit.
     let mut bot = Bot::new(vec![Task::Walk {
         to: Vec2::new(0.0, -31.0),
@@ -223,6 +227,16 @@ fn the_plate_and_the_door_it_opens_say_so_and_the_chamber_counts_as_done() {
     let messages = game.hud().messages;
     assert!(messages.contains(&chamber_complete(0)), "{messages:?}");
     assert_eq!(counter(&game), "2 / 5");
+    // Inside the next room, the door that opened closes behind the player.
+    let closed = play(&mut game, &mut engine, &mut bot, 600, |game, _| {
+        rose(game, "close_behind_2")
+    });
+    assert!(closed, "the door behind never closed: {:?}", game.log());
+    let messages = game.hud().messages;
+    assert!(
+        messages.iter().any(|m| m == DOOR_CLOSED_BEHIND),
+        "{messages:?}"
+    );
 }
 
 #[test]

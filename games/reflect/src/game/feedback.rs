@@ -5,8 +5,9 @@
 //!
 //! Owns: [`Feedback`] and the messages' texts. Which level rules open or close a door comes
 //! from the level's plan (a rule that plays a clip named `door…` opens one; its `otherwise`
-//! reversing it closes it; a rule that only reverses one closes the door behind the player);
-//! plates are the trigger volumes named `plate…` (pressed while anything is on them).
+//! reversing it closes it; a rule that only reverses one closes the door behind the player,
+//! said only when that door had opened); plates are the trigger volumes named `plate…`
+//! (pressed while anything is on them).
 //!
 //! Main thread, Reflect's fixed step and level events (noting), the HUD (reading). Must not:
 //! change the world or the level's logic (messages and sounds only: replays and the state hash
@@ -39,15 +40,15 @@ pub fn chamber_complete(index: usize) -> String {
     format!("Chamber {} complete", index + 1)
 }
 
-/// What a level rule does to a door, for its messages.
+/// What a level rule does to a door (the door's clip index), for its messages.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 struct DoorRule {
     /// Rising opens a door.
-    opens: bool,
+    opens: Option<usize>,
     /// Falling closes it again.
-    closes_on_fall: bool,
+    closes_on_fall: Option<usize>,
     /// Rising closes a door (the one behind the player).
-    closes_behind: bool,
+    closes_behind: Option<usize>,
 }
 
 /// The messages and the flash, and what they follow.
@@ -62,12 +63,23 @@ pub struct Feedback {
     flash_at: Option<u64>,
     /// The chamber whose exit door is open.
     exit_open: Option<usize>,
+    /// The door clips that played open and were not reversed since.
+    open_doors: BTreeSet<usize>,
 }
 
 fn door_clip(plan: &GameplayPlan, clip: usize) -> bool {
     plan.clips
         .get(clip)
         .is_some_and(|c| c.name.starts_with("door"))
+}
+
+/// The first door clip `actions` play (`reverse` false) or reverse (true).
+fn door_in(plan: &GameplayPlan, actions: &[Action], reverse: bool) -> Option<usize> {
+    actions.iter().find_map(|a| match *a {
+        Action::Play { clip, .. } if !reverse && door_clip(plan, clip) => Some(clip),
+        Action::Reverse { clip } if reverse && door_clip(plan, clip) => Some(clip),
+        _ => None,
+    })
 }
 
 impl Feedback {
@@ -77,21 +89,11 @@ impl Feedback {
             .rules
             .iter()
             .filter_map(|rule| {
-                let plays = |actions: &[Action]| {
-                    actions
-                        .iter()
-                        .any(|a| matches!(a, Action::Play { clip, .. } if door_clip(plan, *clip)))
-                };
-                let reverses = |actions: &[Action]| {
-                    actions
-                        .iter()
-                        .any(|a| matches!(a, Action::Reverse { clip } if door_clip(plan, *clip)))
-                };
-                let opens = plays(&rule.then);
+                let opens = door_in(plan, &rule.then, false);
                 let door = DoorRule {
                     opens,
-                    closes_on_fall: reverses(&rule.otherwise),
-                    closes_behind: !opens && reverses(&rule.then),
+                    closes_on_fall: door_in(plan, &rule.otherwise, true),
+                    closes_behind: door_in(plan, &rule.then, true).filter(|_| opens.is_none()),
                 };
                 (door != DoorRule::default()).then(|| (rule.name.clone(), door))
             })
@@ -168,15 +170,21 @@ impl Feedback {
         let Some(door) = self.doors.get(name).copied() else {
             return;
         };
-        if rising && door.opens {
+        if rising && let Some(clip) = door.opens {
+            self.open_doors.insert(clip);
             self.exit_open = current;
             self.notice(step, DOOR_OPENS, None, commands);
-        } else if !rising && door.closes_on_fall {
+        } else if !rising && let Some(clip) = door.closes_on_fall {
             if self.exit_open == current {
                 self.exit_open = None;
             }
-            self.notice(step, DOOR_CLOSES, None, commands);
-        } else if rising && door.closes_behind {
+            if self.open_doors.remove(&clip) {
+                self.notice(step, DOOR_CLOSES, None, commands);
+            }
+        } else if rising
+            && let Some(clip) = door.closes_behind
+            && self.open_doors.remove(&clip)
+        {
             self.notice(step, DOOR_CLOSED_BEHIND, None, commands);
         }
     }
@@ -210,6 +218,7 @@ impl Feedback {
     pub fn respawned(&mut self) {
         self.plates.clear();
         self.exit_open = None;
+        self.open_doors.clear();
     }
 
     /// Whether chamber `index`'s exit door stands open.
