@@ -27,6 +27,7 @@ pub const FLASH_STEPS: u64 = 30;
 /// The most messages the HUD shows at once (the newest).
 pub const MAX_NOTICES: usize = 3;
 
+// The messages' texts (tests look for them).
 pub const PLATE_PRESSED: &str = "Plate pressed";
 pub const PLATE_RELEASED: &str = "Plate released";
 pub const DOOR_OPENS: &str = "The door opens";
