@@ -3,7 +3,9 @@
 //! camera; each fixed step turns the step's actions into a `PlayerInput` (`player_input.rs`,
 //! with the player's settings), steps the player and sends the event of what it used to the
 //! level's rules; keeps a log of what happened (events sent, rules fired, the outcome) for
-//! tools and tests; in a window, draws a crosshair and the focused usable's prompt.
+//! tools and tests; in a window, draws a crosshair and the focused usable's prompt. Its HUD's
+//! prompt follows the player's state (pick up, or drop while carrying) and says "Too far" for
+//! a moment after a use press at something out of reach.
 //!
 //! Main thread, inside the engine's hooks. Must not: read devices (the step's actions come
 //! from the devices or from a replay, alike).
@@ -24,6 +26,15 @@ use super::step_input::StepInput;
 use crate::assets::{AssetResult, AssetRoot};
 use crate::level::{PlayableLevel, load_level};
 use crate::player::{FirstPersonConfig, FirstPersonPlayer, FocusKind};
+
+/// Fixed steps a HUD message such as "Too far" stays up (1.5 s at 60 steps per second).
+pub const MESSAGE_STEPS: u64 = 90;
+
+/// The prompt while carrying a body.
+pub const CARRY_PROMPT: &str = "E  drop · left mouse  throw";
+
+/// The message after a use press at something out of reach.
+pub const TOO_FAR: &str = "Too far";
 
 /// The game name replays of [`FirstPersonGame`] carry.
 pub const FIRST_PERSON_GAME: &str = "playground";
@@ -53,6 +64,9 @@ pub struct FirstPersonGame {
     start_input: Option<StepInput>,
     /// What F1's editor edits (a level of one file, when loaded from one).
     edit: Option<EditTarget>,
+    /// The last fixed step run, and the last one whose use press was out of reach.
+    last_step: u64,
+    too_far_at: Option<u64>,
 }
 
 impl FirstPersonGame {
@@ -86,6 +100,8 @@ impl FirstPersonGame {
             log: Vec::new(),
             start_input: None,
             edit: None,
+            last_step: 0,
+            too_far_at: None,
         }
     }
 
@@ -175,6 +191,32 @@ impl FirstPersonGame {
     pub fn log(&self) -> &[(u64, Happened)] {
         &self.log
     }
+
+    /// The last step whose use press was at something out of reach.
+    pub fn too_far_at(&self) -> Option<u64> {
+        self.too_far_at
+    }
+
+    /// The prompt for what is under the crosshair, or for what is carried.
+    pub fn prompt(&self) -> Option<String> {
+        let player = self.player.as_ref()?;
+        if player.carrying() {
+            return Some(CARRY_PROMPT.into());
+        }
+        match &player.focus()?.kind {
+            FocusKind::Usable(u) => Some(u.prompt.clone()),
+            FocusKind::Body => Some("E  pick up · left mouse  throw".into()),
+            FocusKind::Surface => None,
+        }
+    }
+
+    /// The messages of the last [`MESSAGE_STEPS`] steps ("Too far").
+    pub fn messages(&self) -> Vec<String> {
+        self.too_far_at
+            .filter(|&at| self.last_step.saturating_sub(at) < MESSAGE_STEPS)
+            .map(|_| vec![TOO_FAR.to_string()])
+            .unwrap_or_default()
+    }
 }
 
 impl Game for FirstPersonGame {
@@ -202,6 +244,10 @@ impl Game for FirstPersonGame {
             step.step_seconds,
         );
         let done = player.step(step.world, step.physics, &step.queries, &input);
+        self.last_step = step.index;
+        if done.too_far {
+            self.too_far_at = Some(step.index);
+        }
         if let Some(event) = done.used {
             step.commands.send_event(event.clone());
             self.log.push((step.index, Happened::Used(event)));
@@ -249,16 +295,14 @@ impl Game for FirstPersonGame {
         HudInfo {
             crosshair: true,
             objective: Some("Look around: E uses a switch or picks up a cube".into()),
-            prompt: self.player.as_ref().and_then(|p| match &p.focus()?.kind {
-                FocusKind::Usable(u) => Some(u.prompt.clone()),
-                FocusKind::Body => Some("E  pick up · left mouse  throw".into()),
-                FocusKind::Surface => None,
-            }),
+            prompt: self.prompt(),
             counters: Vec::new(),
             outline: self
                 .player
                 .as_ref()
                 .map_or_else(Vec::new, FirstPersonPlayer::drop_outline),
+            messages: self.messages(),
+            flash: 0.0,
         }
     }
 
@@ -266,14 +310,15 @@ impl Game for FirstPersonGame {
         if !self.own_hud {
             return;
         }
-        let prompt = self.player.as_ref().and_then(|p| p.prompt());
+        let prompt = self.prompt();
+        let messages = self.messages();
         egui::Area::new(egui::Id::unique("crosshair"))
             .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
             .show(ctx, |ui| {
                 ui.vertical_centered(|ui| {
                     ui.label(egui::RichText::new("+").size(20.0));
-                    if let Some(prompt) = prompt {
-                        ui.label(egui::RichText::new(prompt).size(18.0).strong());
+                    for line in prompt.iter().chain(&messages) {
+                        ui.label(egui::RichText::new(line).size(18.0).strong());
                     }
                 });
             });

@@ -273,6 +273,7 @@ impl Engine {
                 Command::Finished(level) => {
                     self.progress_events.push(ProgressEvent::Finished(level));
                 }
+                Command::Sound { name, volume } => self.play_named(&name, volume),
             }
         }
     }
@@ -329,6 +330,22 @@ impl Engine {
                     }
                 }
             }
+        }
+    }
+
+    /// Plays the level's sound `name` once, not placed (a game's [`Command::Sound`]).
+    fn play_named(&mut self, name: &str, volume: f32) {
+        let Some(planned) = self.logic.sounds().iter().find(|s| s.name == name) else {
+            log::warn!("a game asked for sound {name:?}, which the level does not have");
+            return;
+        };
+        let options = PlayOptions {
+            volume,
+            looped: false,
+            at: None,
+        };
+        if let Err(e) = self.audio.play(&planned.sound, options) {
+            log::warn!("sound {name:?}: {e}");
         }
     }
 

@@ -180,6 +180,9 @@ pub enum Command {
     /// The player finished the level with this id without leaving play (a game of chambers
     /// in one world: the chamber behind the player counts as finished; the shell saves it).
     Finished(String),
+    /// Play the level's sound `name` (from its `gameplay.sounds`) once, not placed, at linear
+    /// volume `volume`: a cue for the HUD's messages. Not part of the simulation's state.
+    Sound { name: String, volume: f32 },
 }
 
 impl Commands {
@@ -216,6 +219,15 @@ impl Commands {
     /// select.
     pub fn finish_level(&mut self, level: impl Into<String>) {
         self.queue.push(Command::Finished(level.into()));
+    }
+
+    /// Plays the level's sound `name` once at `volume` (linear), not placed in the world (a
+    /// sound the level does not have is logged and skipped).
+    pub fn play_sound(&mut self, name: impl Into<String>, volume: f32) {
+        self.queue.push(Command::Sound {
+            name: name.into(),
+            volume,
+        });
     }
 
     /// Takes the queued commands, oldest first.

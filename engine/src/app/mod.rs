@@ -65,7 +65,9 @@ pub use atomic_file::{AtomicFileError, keep_aside, write_atomic};
 pub use bindings::{BindingProblem, Bindings, BindingsError};
 pub use clock::FixedClock;
 pub use engine::{Engine, EngineError, Environment};
-pub use first_person_game::{FIRST_PERSON_GAME, FirstPersonGame, Happened};
+pub use first_person_game::{
+    CARRY_PROMPT, FIRST_PERSON_GAME, FirstPersonGame, Happened, MESSAGE_STEPS, TOO_FAR,
+};
 pub use fly_camera::{FlyCamera, fly_camera_system};
 pub use frame_limiter::FrameLimiter;
 pub use game::{Command, Commands, FrameInput, Game, LevelEvent, SetupError, Step};

@@ -9,7 +9,9 @@
 //! Mapping (the standard actions, `app::player_input`): move axes walk in the view's frame
 //! (yaw only, so looking down does not slow walking); `use` uses the focused usable (its
 //! event is returned for the game to send to the rules), picks up the focused dynamic body,
-//! or drops the held one; `primary` throws the held body along the view; `secondary` drops it.
+//! or drops the held one — pressed at a usable or a body beyond reach (within
+//! [`TOO_FAR_FACTOR`] times it) it does nothing and says so (`PlayerStep::too_far`, for the
+//! HUD); `primary` throws the held body along the view; `secondary` drops it.
 //!
 //! Conventions: right-handed, +Y up, metres, seconds, radians; yaw about +Y, 0 looking along
 //! −Z, positive turning left; pitch positive up, clamped to ±`max_pitch`; no roll. The eye
@@ -30,6 +32,10 @@ use crate::sim::physics::{
     Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, Placement,
     ShapeError, character_bundle,
 };
+
+/// How far past `reach` a use press still finds what it was aimed at, to tell the player it
+/// is too far (a multiple of `FirstPersonConfig::reach`).
+pub const TOO_FAR_FACTOR: f32 = 3.0;
 
 /// How a first-person player is built and moves.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -86,6 +92,8 @@ impl Default for FirstPersonConfig {
 pub struct PlayerStep {
     /// The event of the usable the player used this step (for `Commands::send_event`).
     pub used: Option<String>,
+    /// `use` was pressed at a usable or a body that is out of reach (nothing was done).
+    pub too_far: bool,
 }
 
 /// A first-person player in a world.
@@ -104,6 +112,8 @@ pub struct FirstPersonPlayer {
     /// Where the held body would land if dropped now, and the eye it was seen from (as of
     /// the last step).
     drop_preview: Option<(Placement, Vec3)>,
+    /// Whether it held a body at its last step (for prompts; the world says it exactly).
+    carrying: bool,
 }
 
 impl FirstPersonPlayer {
@@ -129,6 +139,7 @@ impl FirstPersonPlayer {
             config,
             focus: None,
             drop_preview: None,
+            carrying: false,
         };
         let eye = Transform {
             translation: centre + player.eye_offset(),
@@ -227,6 +238,12 @@ impl FirstPersonPlayer {
         self.focus.as_ref()
     }
 
+    /// Whether it held a body at its last step (what [`FirstPersonPlayer::held`] said then):
+    /// for a HUD, which has no world to ask.
+    pub fn carrying(&self) -> bool {
+        self.carrying
+    }
+
     /// The prompt of the usable under the crosshair, for the HUD.
     pub fn prompt(&self) -> Option<&str> {
         match &self.focus.as_ref()?.kind {
@@ -286,6 +303,7 @@ impl FirstPersonPlayer {
         self.drop_preview = physics.placement(world, self.camera).map(|p| (p, eye));
 
         let held = self.held(world);
+        self.carrying = held.is_some();
         let mut out = PlayerStep::default();
         let request = if input.primary_pressed && held.is_some() {
             Some(CarryRequest::Throw {
@@ -300,7 +318,11 @@ impl FirstPersonPlayer {
                     None
                 }
                 Some(FocusKind::Body) => Some(CarryRequest::Pick),
-                _ => None,
+                Some(FocusKind::Surface) => None,
+                None => {
+                    out.too_far = self.out_of_reach(world, queries, eye);
+                    None
+                }
             }
         } else {
             None
@@ -311,5 +333,13 @@ impl FirstPersonPlayer {
             c.request = Some(request);
         }
         out
+    }
+
+    /// Whether the first thing along the view past reach (within [`TOO_FAR_FACTOR`] times
+    /// it) is a usable or a body: what a use press was aimed at but could not reach.
+    fn out_of_reach(&self, world: &World, queries: &Queries<'_>, eye: Vec3) -> bool {
+        let far = self.config.reach * TOO_FAR_FACTOR;
+        focus(world, queries, eye, self.view(), far)
+            .is_some_and(|f| matches!(f.kind, FocusKind::Usable(_) | FocusKind::Body))
     }
 }

@@ -16,7 +16,7 @@ mod interact;
 mod third_person;
 
 pub use drop_preview::outline as drop_outline;
-pub use first_person::{FirstPersonConfig, FirstPersonPlayer, PlayerStep};
+pub use first_person::{FirstPersonConfig, FirstPersonPlayer, PlayerStep, TOO_FAR_FACTOR};
 pub use follow_camera::{CameraPose, FollowCamera, ease_distance};
 pub use input::PlayerInput;
 pub use interact::{Focus, FocusKind, focus};

@@ -1,8 +1,8 @@
 //! The game-facing API end to end, headless on the CPU tracer: a [`Game`]'s hooks run in
 //! frame order (frame hook, then each fixed step, then that step's level events), level events
 //! reach the game (rule firings, volume events, clip events, the win), the commands a hook
-//! queues are carried out (light groups, events sent to the level's rules), and level waves
-//! move in `Engine::frame` without any call from the game.
+//! queues are carried out (light groups, events sent to the level's rules, sounds played by
+//! name), and level waves move in `Engine::frame` without any call from the game.
 
 use std::path::Path;
 
@@ -184,6 +184,28 @@ fn commands_switch_lights_and_send_events_to_the_rules() {
         .map(|(c, _)| c.as_str())
         .collect();
     assert_eq!(step_of_rule, ["event 3"]);
+    let _ = engine.shutdown();
+}
+
+#[test]
+fn a_game_plays_a_sound_of_the_level_by_name() {
+    let level = plate_door();
+    let mut engine =
+        Engine::new(RenderConfig::cpu(16, 12), Environment::of(&level.scene)).expect("engine");
+    engine.spawn_level(&level);
+    let mut game = |step: &mut Step<'_>| match step.index {
+        1 => step.commands.play_sound("chime", 0.5),
+        // Not a sound of the level: logged and skipped.
+        2 => step.commands.play_sound("no_such_sound", 1.0),
+        _ => {}
+    };
+    let mut playing = Vec::new();
+    for _ in 0..3 {
+        engine.frame(1.0 / 60.0, &mut game).expect("frame");
+        let _ = engine.rendered();
+        playing.push(engine.audio().playing_count());
+    }
+    assert_eq!(playing, [0, 1, 1], "sounds playing after each step");
     let _ = engine.shutdown();
 }
 

@@ -93,6 +93,13 @@ impl MirrorGun {
             .is_some_and(|(_, p)| p.mirror)
     }
 
+    /// The chamber that holds panel `entity` (`None`: not a panel, or outside every chamber).
+    pub fn chamber_of(&self, entity: Entity) -> Option<usize> {
+        self.panels
+            .get(&entity.to_bits().get())
+            .and_then(|(_, p)| p.chamber)
+    }
+
     /// Mirrors active now in chamber `chamber`.
     pub fn active_in(&self, chamber: usize) -> u32 {
         self.panels

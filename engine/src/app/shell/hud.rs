@@ -1,7 +1,8 @@
 //! The HUD while playing: a crosshair at the centre (white with a dark outline and an amber
-//! dot, readable on any picture), the objective top left, counters top right and the
-//! interaction prompt under the crosshair, the outline of where a held body will land — all
-//! from the game's [`HudInfo`].
+//! dot, readable on any picture), the objective top left, counters top right, the
+//! interaction prompt under the crosshair, the outline of where a held body will land, the
+//! messages of what just happened centred near the top and a flash over the whole picture —
+//! all from the game's [`HudInfo`].
 //!
 //! Draws with egui. Main thread. Must not: read the world (the game fills `HudInfo`).
 
@@ -17,6 +18,16 @@ pub const GAP: f32 = 5.0;
 /// Draws the HUD.
 pub fn show(ctx: &egui::Context, hud: &HudInfo) {
     let screen = ctx.content_rect();
+    if hud.flash > 0.0 {
+        // Under every HUD box (they are foreground areas), over the picture.
+        let painter = ctx.layer_painter(egui::LayerId::background());
+        let alpha = (hud.flash.clamp(0.0, 1.0) * 150.0) as u8;
+        painter.rect_filled(
+            screen,
+            0.0,
+            Color32::from_rgba_unmultiplied(255, 70, 40, alpha),
+        );
+    }
     if hud.crosshair {
         let painter = ctx.layer_painter(egui::LayerId::background());
         let c = screen.center();
@@ -85,6 +96,18 @@ pub fn show(ctx: &egui::Context, hud: &HudInfo) {
                                 ui.end_row();
                             }
                         });
+                });
+            });
+    }
+    if !hud.messages.is_empty() {
+        egui::Area::new(egui::Id::unique("shell_hud_messages"))
+            .anchor(Align2::CENTER_TOP, Vec2::new(0.0, 90.0))
+            .interactable(false)
+            .show(ctx, |ui| {
+                theme::hud_box().show(ui, |ui| {
+                    for message in &hud.messages {
+                        ui.label(RichText::new(message).size(22.0).strong());
+                    }
                 });
             });
     }

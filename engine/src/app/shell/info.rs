@@ -1,7 +1,8 @@
 //! What a game tells the shell and the shell tells the game: the title menu's entries
 //! ([`ShellInfo`], [`LevelEntry`]), where a level starts ([`LevelStart`]), the HUD's lines
-//! ([`HudInfo`]), the ending screen's summary ([`GameSummary`]) and the progress the game's
-//! hooks report through `Commands` ([`ProgressEvent`]).
+//! ([`HudInfo`]: objective, prompt, counters, messages, a flash), the ending screen's summary
+//! ([`GameSummary`]) and the progress the game's hooks report through `Commands`
+//! ([`ProgressEvent`]).
 //!
 //! Plain data, main thread. Must not: hold engine state or draw anything.
 
@@ -69,6 +70,12 @@ pub struct HudInfo {
     /// in view-plane units: x right, y up, 1 = from the centre to the top edge
     /// (`player::drop_outline`).
     pub outline: Vec<[[f32; 2]; 2]>,
+    /// Short lines about what just happened ("Plate pressed", "Too far"), oldest first,
+    /// centred near the top; the game keeps each for a moment and then leaves it out.
+    pub messages: Vec<String>,
+    /// A full-screen flash over the picture (a laser hit the player), 0 (none) to 1 (full);
+    /// the game fades it out over a few steps.
+    pub flash: f32,
 }
 
 impl Default for HudInfo {
@@ -79,6 +86,8 @@ impl Default for HudInfo {
             prompt: None,
             counters: Vec::new(),
             outline: Vec::new(),
+            messages: Vec::new(),
+            flash: 0.0,
         }
     }
 }

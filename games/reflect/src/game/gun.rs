@@ -44,6 +44,10 @@ impl ReflectGame {
             GunShot::Nothing => return,
         };
         step.commands.send_event(event);
+        if shot == GunShot::AtCap {
+            let text = super::feedback::NO_MIRRORS_LEFT;
+            self.feedback.notice(step.index, text, None, step.commands);
+        }
         self.note(step.index, ReflectEvent::Shot(shot));
     }
 

@@ -2,7 +2,9 @@
 //! chambers, the mirror gun, lasers that send the player back, which chamber the player is in
 //! (finishing the one behind them), the HUD, the chamber select and the ending's summary.
 //!
-//! The gun's arming and firing and the carried cube's turn are in `gun.rs`.
+//! The gun's arming and firing and the carried cube's turn are in `gun.rs`; the messages,
+//! flash and sounds of puzzle events in `feedback.rs`; the HUD and the ending's summary in
+//! `hud.rs`.
 //!
 //! Main thread, inside the engine's hooks (`candela::app::Game`). Must not: read devices (the
 //! step's actions come from the devices or a replay alike) or reach into the renderer.
@@ -12,14 +14,17 @@ use candela::app::{
     FirstPersonGame, Game, LevelEvent, SetupError, SpawnedLevel, Step,
     shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellInfo},
 };
-use candela::sim::triggers::Outcome;
+use candela::sim::triggers::{Outcome, Phase};
 use hecs::Entity;
 
 use crate::hazard::{beam_crosses, send_back};
 use crate::mirror_gun::{GunShot, MirrorGun};
 use crate::world::ReflectWorld;
 
+pub mod feedback;
 mod gun;
+mod hud;
+use feedback::Feedback;
 use gun::turn_held_cube;
 
 /// Events the level's rules hear from the game (declared in the base level's `events`), for
@@ -71,12 +76,17 @@ pub struct ReflectGame {
     stride: (Option<glam::Vec3>, f32),
     /// A view to put the player's eye at once started (screenshots): eye, yaw, pitch.
     pending_view: Option<(glam::Vec3, f32, f32)>,
+    /// The HUD's messages and flash for puzzle events.
+    feedback: Feedback,
+    /// The last fixed step run (the HUD's messages fade by it).
+    now: u64,
 }
 
 impl ReflectGame {
     /// Reflect over the loaded `world`, starting in chamber `start` (an index).
     pub fn new(world: ReflectWorld, start: usize) -> Self {
         let inner = FirstPersonGame::of_level(&world.game_path, world.playable.clone());
+        let feedback = Feedback::new(&inner.level().gameplay);
         Self {
             world,
             inner,
@@ -91,6 +101,8 @@ impl ReflectGame {
             log: Vec::new(),
             stride: (None, 0.0),
             pending_view: None,
+            feedback,
+            now: 0,
         }
     }
 
@@ -180,6 +192,7 @@ impl ReflectGame {
             step.commands
                 .finish_level(self.world.chambers[c].id.clone());
             self.note(step.index, ReflectEvent::Finished(c));
+            self.feedback.finished(step.index, c, step.commands);
         }
         self.current = Some(k);
         step.commands.checkpoint(self.world.chambers[k].id.clone());
@@ -234,6 +247,7 @@ impl Game for ReflectGame {
     fn level_respawned(&mut self, engine: &mut candela::app::Engine, spawned: &SpawnedLevel) {
         self.inner.set_spawned(spawned.clone());
         self.aimed = None;
+        self.feedback.respawned();
         self.arm_gun(engine);
     }
 
@@ -251,6 +265,8 @@ impl Game for ReflectGame {
     }
 
     fn fixed_step(&mut self, step: &mut Step<'_>) {
+        self.now = step.index;
+        self.feedback.expire(step.index);
         if let Some(k) = self.pending_start.take()
             && let Some(player) = self.inner.player_mut()
         {
@@ -271,6 +287,9 @@ impl Game for ReflectGame {
             .player()
             .is_some_and(|p| p.held(step.world).is_some());
         self.inner.fixed_step(step);
+        if self.inner.too_far_at() == Some(step.index) {
+            step.commands.play_sound("buzz", 0.25);
+        }
         turn_held_cube(step, &self.inner);
         self.mirror_gun(step, held_before);
         self.footsteps(step);
@@ -287,6 +306,7 @@ impl Game for ReflectGame {
             step.commands.send_event("zapped");
             step.commands.cut();
             self.note(step.index, ReflectEvent::SentBack(k));
+            self.feedback.sent_back(step.index, step.commands);
         }
         if self.ended_at.is_none() {
             self.steps += 1;
@@ -302,6 +322,12 @@ impl Game for ReflectGame {
                     rising: firing.rising,
                 };
                 self.note(step.index, rule);
+                let current = self.current;
+                self.feedback
+                    .rule(step.index, name, firing.rising, current, step.commands);
+            }
+            LevelEvent::Volume { name, event } if event.phase != Phase::Stay => {
+                self.feedback.volume(step.index, name, event, step.commands);
             }
             LevelEvent::Ended(Outcome::Won(_)) if self.ended_at.is_none() => {
                 self.ended_at = Some(self.steps);
@@ -309,6 +335,7 @@ impl Game for ReflectGame {
                     step.commands
                         .finish_level(self.world.chambers[c].id.clone());
                     self.note(step.index, ReflectEvent::Finished(c));
+                    self.feedback.finished(step.index, c, step.commands);
                 }
                 self.note(step.index, ReflectEvent::Ending);
             }
@@ -343,42 +370,10 @@ impl Game for ReflectGame {
     }
 
     fn hud(&self) -> HudInfo {
-        let mut hud = self.inner.hud();
-        let Some(k) = self.current else {
-            hud.objective = None;
-            return hud;
-        };
-        let chamber = &self.world.chambers[k];
-        hud.objective = Some(chamber.objective.clone());
-        if self.aimed.is_some() && hud.prompt.is_none() {
-            hud.prompt = Some("Left mouse  make a mirror · Right mouse  revert".into());
-        }
-        hud.counters = vec![(
-            "Chamber".into(),
-            format!("{} / {}", k + 1, self.world.chambers.len()),
-        )];
-        if chamber.mirror_cap > 0 {
-            hud.counters.push((
-                "Mirrors".into(),
-                format!("{} / {}", self.gun.active_in(k), chamber.mirror_cap),
-            ));
-        }
-        hud
+        self.hud_info()
     }
 
     fn summary(&self) -> GameSummary {
-        let seconds = self.play_seconds();
-        GameSummary {
-            headline: "You reached the surface".into(),
-            lines: vec![
-                format!(
-                    "Time  {}:{:02}",
-                    (seconds / 60.0) as u64,
-                    (seconds % 60.0) as u64
-                ),
-                format!("Mirrors made  {}", self.gun.made),
-                format!("Sent back by lasers  {}", self.sent_back),
-            ],
-        }
+        self.ending_summary()
     }
 }
