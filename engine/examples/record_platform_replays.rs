@@ -3,7 +3,7 @@
 //! per frame) by pressing keys and moving the mouse like a player would, and the engine records
 //! every step's actions (`StepInput::record`). The bot steers from the player's state after
 //! each step, towards simple waypoints: to the glass cube, pick it up (E), carry it over the
-//! pressure plate, drop it (E), walk onto the lift, ride up, walk to the lever and use it (E).
+//! pressure plate and aim at it, drop it (E: it lands where the crosshair points), walk onto the lift, ride up, walk to the lever and use it (E).
 //!
 //! Run: `cargo run --release -p candela --example record_platform_replays` (re-record after the
 //! level or the player's controller changed; `engine/tests/engine/player_first_person.rs` fails
@@ -134,16 +134,20 @@ impl Bot {
                 }
             }
             Phase::Carry => {
-                // Look 30° down: the cube floats 1.3 m along the view, 1.13 m ahead.
-                let pitch = -30f32.to_radians();
-                let ahead = player.config.hold_distance * pitch.cos();
+                // Stand 1.1 m short of the plate, put the crosshair on it and drop once the
+                // drop's preview lies on it (the drop places the cube where the view points).
                 let flat = (PLATE - feet).with_y(0.0);
-                let stand = PLATE.xz() - flat.xz().normalize_or_zero() * ahead;
+                let stand = PLATE.xz() - flat.xz().normalize_or_zero() * 1.1;
+                let pitch = (PLATE.y - eye.y).atan2(flat.length());
                 if walk_to(player, feet, stand, pitch, 0.04, &mut act) {
-                    aim(player, yaw_to(feet, PLATE), pitch, &mut act);
-                    let over = (cube - PLATE).with_y(0.0).length();
+                    let (dy, dp) = aim(player, yaw_to(feet, PLATE), pitch, &mut act);
+                    let camera = player.camera;
+                    let over = engine
+                        .physics()
+                        .placement(engine.world(), camera)
+                        .map_or(f32::INFINITY, |p| (p.position - PLATE).xz().length());
                     self.waited += 1;
-                    if over < 0.12 && self.waited > 30 {
+                    if dy.abs() < 0.01 && dp.abs() < 0.01 && over < 0.12 && self.waited > 30 {
                         act.use_key = true;
                         self.phase = Phase::Release;
                         self.waited = 0;

