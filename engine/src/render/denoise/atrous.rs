@@ -7,13 +7,16 @@
 //! illumination rgb, variance); variance −1 marks a pixel without a valid sample, which weighs
 //! nothing as a neighbour and is filled from its neighbours (without the luminance term) when
 //! it is the centre. Sky pixels (no guide) pass unchanged. The last pass remodulates: rgb ×
-//! albedo, and a pixel still without a sample becomes 0, so nothing non-finite leaves. Render
-//! thread.
+//! albedo, and a pixel still without a sample becomes 0, so nothing non-finite leaves.
+//! [`atrous_pixel`] is the per-pixel reference (the WGSL twin's shape); [`filter`] computes the
+//! same a row at a time over planes (`planes`), the 5×5 taps as loops over the row that
+//! vectorise. Render thread, rows on rayon's pool.
 //! Must not: blend over time.
 
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
+use super::planes::{ColourPlanes, GuidePlanes, RowSums, avx2, lane_weight};
 use super::weights::{
     GAUSS3, KERNEL, LUMINANCE_EPS, demodulator, depth_gradient, edge_weight, guide_at, luminance,
 };
@@ -116,23 +119,170 @@ pub fn atrous_pixel(
     out
 }
 
-/// One pass over the whole image from `input` into `out`.
+/// One pass over the whole image from `input` into `out`, row by row on rayon's pool: per
+/// pixel what [`atrous_pixel`] gives (up to the exponential, `planes::exp_neg`). `albedo` is
+/// the guides' (remodulation only).
 pub fn filter(
-    input: &[Vec4],
-    guides: &[Vec4],
-    albedo: &[Vec4],
-    width: u32,
-    height: u32,
+    input: &ColourPlanes,
+    guides: &GuidePlanes,
+    albedo: &[Vec3],
     pass: &Pass,
-    out: &mut [Vec4],
+    out: &mut ColourPlanes,
 ) {
-    out.par_chunks_mut(width as usize)
-        .enumerate()
-        .for_each(|(y, row)| {
-            for (x, o) in row.iter_mut().enumerate() {
-                *o = atrous_pixel(
-                    input, guides, albedo, width, height, x as i32, y as i32, pass,
-                );
+    let w = guides.width;
+    out.resize(w * guides.height);
+    out.rows_mut(w).for_each_init(
+        || RowSums::new(w),
+        |sums, (y, mut row)| {
+            avx2(|| row_sums(input, guides, y, pass, sums));
+            let c = y * w;
+            for x in 0..w {
+                let i = c + x;
+                let mut value = input.at(i);
+                if guides.z[i] > 0.0 {
+                    let sum_w = sums.w[x];
+                    value = if sum_w > 0.0 {
+                        let sum_c = Vec3::new(sums.r[x], sums.g[x], sums.b[x]);
+                        (sum_c / sum_w).extend(sums.v[x] / (sum_w * sum_w))
+                    } else {
+                        Vec4::new(0.0, 0.0, 0.0, -1.0)
+                    };
+                }
+                if pass.remodulate {
+                    value = if value.w < 0.0 {
+                        Vec4::ZERO
+                    } else {
+                        (value.truncate() * demodulator(albedo[i])).extend(1.0)
+                    };
+                }
+                row.set(x, value);
             }
-        });
+        },
+    );
+}
+
+/// The columns `x0..x0 + n` of row `y` whose neighbours `dx` pixels away lie in a row of
+/// `width` pixels: (x0, n), `None` when there are none.
+#[inline(always)]
+fn span(width: usize, dx: isize) -> Option<(usize, usize)> {
+    let w = width as isize;
+    let (x0, x1) = ((-dx).max(0), w.min(w - dx));
+    (x1 > x0).then_some((x0 as usize, (x1 - x0) as usize))
+}
+
+/// Row `y`'s centre luminance (`sums.lum`), luminance scale (`sums.scale`: σ_l·√(3×3-prefiltered
+/// variance) + ε, −1 without one) and weighted sums of the 5×5 taps, in [`atrous_pixel`]'s
+/// order.
+#[inline(always)]
+fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: &mut RowSums) {
+    let (w, rows) = (g.width, g.height as isize);
+    let c = y * w;
+    // The prefiltered variance: sum in `sums.r`, weight in `sums.g`.
+    sums.clear();
+    for dy in -1..=1isize {
+        let qy = y as isize + dy;
+        if qy < 0 || qy >= rows {
+            continue;
+        }
+        for dx in -1..=1isize {
+            let Some((x0, n)) = span(w, dx) else {
+                continue;
+            };
+            let q = (qy as usize * w + x0).wrapping_add_signed(dx);
+            let k = GAUSS3[(dx + 1) as usize] * GAUSS3[(dy + 1) as usize];
+            let qv = &input.v[q..q + n];
+            let (sum, weight) = (&mut sums.r[x0..x0 + n], &mut sums.g[x0..x0 + n]);
+            for i in 0..n {
+                let v = qv[i];
+                sum[i] += if v < 0.0 { 0.0 } else { k * v };
+                weight[i] += if v < 0.0 { 0.0 } else { k };
+            }
+        }
+    }
+    let (cr, cg, cb, cv) = (
+        &input.r[c..c + w],
+        &input.g[c..c + w],
+        &input.b[c..c + w],
+        &input.v[c..c + w],
+    );
+    for x in 0..w {
+        let (sum, weight) = (sums.r[x], sums.g[x]);
+        let var = if weight > 0.0 { sum / weight } else { -1.0 };
+        sums.lum[x] = luminance(Vec3::new(cr[x], cg[x], cb[x]));
+        sums.scale[x] = if cv[x] >= 0.0 && var >= 0.0 {
+            pass.sigma_l * var.sqrt() + LUMINANCE_EPS
+        } else {
+            -1.0
+        };
+    }
+    sums.clear();
+    let (pnx, pny, pnz, pz) = (&g.nx[c..c + w], &g.ny[c..c + w], &g.nz[c..c + w], &g.z[c..c + w]);
+    let (pgx, pgy) = (&g.gx[c..c + w], &g.gy[c..c + w]);
+    let step = pass.step as isize;
+    for dy in -2..=2isize {
+        let qy = y as isize + dy * step;
+        if qy < 0 || qy >= rows {
+            continue;
+        }
+        for dx in -2..=2isize {
+            let ox = dx * step;
+            let Some((x0, n)) = span(w, ox) else {
+                continue;
+            };
+            let q = (qy as usize * w + x0).wrapping_add_signed(ox);
+            let k = KERNEL[(dx + 2) as usize] * KERNEL[(dy + 2) as usize];
+            let (qr, qg, qb, qv) = (
+                &input.r[q..q + n],
+                &input.g[q..q + n],
+                &input.b[q..q + n],
+                &input.v[q..q + n],
+            );
+            let sr = &mut sums.r[x0..x0 + n];
+            let sg = &mut sums.g[x0..x0 + n];
+            let sb = &mut sums.b[x0..x0 + n];
+            let sv = &mut sums.v[x0..x0 + n];
+            let sw = &mut sums.w[x0..x0 + n];
+            if dx == 0 && dy == 0 {
+                for i in 0..n {
+                    let wt = if qv[i] < 0.0 { 0.0 } else { k };
+                    sr[i] += qr[i] * wt;
+                    sg[i] += qg[i] * wt;
+                    sb[i] += qb[i] * wt;
+                    sv[i] += qv[i] * wt * wt;
+                    sw[i] += wt;
+                }
+                continue;
+            }
+            let (qnx, qny, qnz, qz) = (
+                &g.nx[q..q + n],
+                &g.ny[q..q + n],
+                &g.nz[q..q + n],
+                &g.z[q..q + n],
+            );
+            let (cnx, cny, cnz, cz) = (
+                &pnx[x0..x0 + n],
+                &pny[x0..x0 + n],
+                &pnz[x0..x0 + n],
+                &pz[x0..x0 + n],
+            );
+            let (cgx, cgy) = (&pgx[x0..x0 + n], &pgy[x0..x0 + n]);
+            let (lp, scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
+            let (fx, fy) = (ox as f32, (dy * step) as f32);
+            for i in 0..n {
+                let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
+                let slope = (cgx[i] * fx + cgy[i] * fy).abs();
+                let lq = luminance(Vec3::new(qr[i], qg[i], qb[i]));
+                let ls = scale[i];
+                let dl = if ls >= 0.0 { (lp[i] - lq).abs() / ls } else { 0.0 };
+                let wt = k * lane_weight(dot, cz[i], qz[i], slope, pass.sigma_z, dl);
+                let valid = qv[i] >= 0.0 && qz[i] > 0.0;
+                let wt = if valid { wt } else { 0.0 };
+                sr[i] += if valid { qr[i] * wt } else { 0.0 };
+                sg[i] += if valid { qg[i] * wt } else { 0.0 };
+                sb[i] += if valid { qb[i] * wt } else { 0.0 };
+                sv[i] += if valid { qv[i] * wt * wt } else { 0.0 };
+                sw[i] += wt;
+            }
+        }
+    }
 }

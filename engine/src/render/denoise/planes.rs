@@ -1,0 +1,261 @@
+//! The CPU denoiser's working layout: planes (one `f32` per pixel, rows top to bottom) that the
+//! row kernels of `variance` and `atrous` sweep a whole image row at a time, so that the
+//! compiler vectorises their per-tap loops (SSE2, or AVX2 where the CPU has it, see
+//! [`avx2`]), and the exponential those kernels share ([`exp_neg`]).
+//!
+//! Owns: [`GuidePlanes`] (the sanitized guides and the depth gradient, built once per frame),
+//! [`ColourPlanes`] (a pass's rows: illumination rgb and variance), [`RowSums`] (one rayon
+//! task's accumulators) and [`exp_neg`]. The values are those the per-pixel reference
+//! functions (`weights`, `variance_pixel`, `atrous_pixel`) compute, bit for bit, except the
+//! exponential (a few ULP from `f32::exp`). Render thread, rows on rayon's pool.
+//! Must not: filter (the passes do) or keep anything between frames beyond reused storage.
+
+use glam::{Vec3, Vec4};
+use rayon::prelude::*;
+
+use super::guides::Guides;
+use super::weights::{DEPTH_EPS_REL, NORMAL_SQUARINGS, axis_gradient, normal_depth};
+
+/// e^x for x ≤ 0 (the edge-stopping weights' exponent), by Cephes' `expf` polynomial on a
+/// range reduced by powers of two (n = x·log₂e rounded to nearest): relative error within about 2·10⁻⁷ (a few ULP) of the
+/// exact value for −87 ≤ x ≤ 0, 0 below −87 (where e^x < 2⁻¹²⁵, a weight that cannot count
+/// against the kernel's centre). Plain arithmetic, branch-free, so loops over it vectorise.
+/// Not meant for x > 0.
+#[inline(always)]
+pub fn exp_neg(x: f32) -> f32 {
+    const LIMIT: f32 = -87.0;
+    // 1.5·2²³: adding it rounds to an integer n held in the low mantissa bits (|n| < 2²²).
+    const ROUND: f32 = 12_582_912.0;
+    let xc = x.max(LIMIT);
+    let t = xc * std::f32::consts::LOG2_E + ROUND;
+    let nf = t - ROUND;
+    // r = x − n·ln 2 in two parts (Cody–Waite), |r| ≤ ln 2 / 2.
+    let r = xc - nf * 0.693_359_4 - nf * -2.121_944_4e-4;
+    let p = ((((1.987_569_2e-4 * r + 1.398_2e-3) * r + 8.333_452e-3) * r + 4.166_579_6e-2) * r
+        + 1.666_666_5e-1)
+        * r
+        + 5.000_000_1e-1;
+    let e = p * (r * r) + r + 1.0;
+    // 2ⁿ, −126 ≤ n ≤ 0: a normal float built from its exponent bits (integer lanes only; a
+    // float-to-integer cast would not vectorise).
+    let n = t.to_bits().wrapping_sub(ROUND.to_bits());
+    let two_n = f32::from_bits(n.wrapping_add(127) << 23);
+    if x < LIMIT { 0.0 } else { e * two_n }
+}
+
+/// [`edge_weight`](super::weights::edge_weight) for a neighbour at depth `qz` > 0 (the
+/// caller masks the others), lane form: `dot` is n_p·n_q, `slope` |∇z·offset| (metres), `dl`
+/// the luminance term (0 without one). Same operations in the same order, [`exp_neg`] for
+/// the exponential.
+#[inline(always)]
+pub fn lane_weight(dot: f32, pz: f32, qz: f32, slope: f32, sigma_z: f32, dl: f32) -> f32 {
+    let mut wn = dot.max(0.0);
+    for _ in 0..NORMAL_SQUARINGS {
+        wn *= wn;
+    }
+    let dz = (pz - qz).abs() / (sigma_z * slope + DEPTH_EPS_REL * pz);
+    wn * exp_neg(-(dz + dl))
+}
+
+/// Runs `f` with AVX2 enabled when the CPU has it (the kernels are `#[inline(always)]`, so
+/// their loops are compiled for 8 lanes there), else as compiled (SSE2 on x86-64).
+#[inline(always)]
+pub fn avx2<R>(f: impl FnOnce() -> R) -> R {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2")]
+        fn with_avx2<R>(f: impl FnOnce() -> R) -> R {
+            f()
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the CPU supports AVX2, checked just above.
+            return unsafe { with_avx2(f) };
+        }
+    }
+    f()
+}
+
+/// The guides as planes: sanitized normal and depth (`weights::normal_depth`: zero where there
+/// is no surface, an emissive pixel included) and the depth gradient (metres per pixel, x
+/// right, y down; `weights::depth_gradient`).
+#[derive(Clone, Debug, Default)]
+pub struct GuidePlanes {
+    pub width: usize,
+    pub height: usize,
+    pub nx: Vec<f32>,
+    pub ny: Vec<f32>,
+    pub nz: Vec<f32>,
+    /// Metres along the camera ray; 0 = no surface.
+    pub z: Vec<f32>,
+    pub gx: Vec<f32>,
+    pub gy: Vec<f32>,
+}
+
+impl GuidePlanes {
+    /// Refills the planes from `guides` (which must be consistent), reusing their storage.
+    pub fn fill(&mut self, guides: &Guides) {
+        let (w, h) = (guides.width as usize, guides.height as usize);
+        let n = w * h;
+        self.width = w;
+        self.height = h;
+        for plane in [
+            &mut self.nx,
+            &mut self.ny,
+            &mut self.nz,
+            &mut self.z,
+            &mut self.gx,
+            &mut self.gy,
+        ] {
+            plane.clear();
+            plane.resize(n, 0.0);
+        }
+        for i in 0..n {
+            let z = if guides.emissive[i] {
+                -guides.depth[i]
+            } else {
+                guides.depth[i]
+            };
+            let g = normal_depth(guides.normal[i].extend(z));
+            self.nx[i] = g.x;
+            self.ny[i] = g.y;
+            self.nz[i] = g.z;
+            self.z[i] = g.w;
+        }
+        let z = &self.z;
+        self.gx
+            .par_chunks_mut(w.max(1))
+            .zip(self.gy.par_chunks_mut(w.max(1)))
+            .enumerate()
+            .for_each(|(y, (gx, gy))| {
+                let at = |x: usize, y: usize| z[y * w + x];
+                for x in 0..w {
+                    let zc = at(x, y);
+                    let left = if x > 0 { at(x - 1, y) } else { 0.0 };
+                    let right = if x + 1 < w { at(x + 1, y) } else { 0.0 };
+                    let up = if y > 0 { at(x, y - 1) } else { 0.0 };
+                    let down = if y + 1 < h { at(x, y + 1) } else { 0.0 };
+                    gx[x] = axis_gradient(zc, left, right);
+                    gy[x] = axis_gradient(zc, up, down);
+                }
+            });
+    }
+}
+
+/// A pass's rows as planes: illumination rgb and variance (−1: no valid sample).
+#[derive(Clone, Debug, Default)]
+pub struct ColourPlanes {
+    pub r: Vec<f32>,
+    pub g: Vec<f32>,
+    pub b: Vec<f32>,
+    pub v: Vec<f32>,
+}
+
+impl ColourPlanes {
+    /// Makes room for `n` pixels (contents unspecified until a pass writes them).
+    pub fn resize(&mut self, n: usize) {
+        for plane in [&mut self.r, &mut self.g, &mut self.b, &mut self.v] {
+            plane.resize(n, 0.0);
+        }
+    }
+
+    /// The row of pixel `i`.
+    pub fn at(&self, i: usize) -> Vec4 {
+        Vec4::new(self.r[i], self.g[i], self.b[i], self.v[i])
+    }
+
+    /// The rgb of every pixel.
+    pub fn rgb(&self) -> Vec<Vec3> {
+        (0..self.r.len())
+            .map(|i| Vec3::new(self.r[i], self.g[i], self.b[i]))
+            .collect()
+    }
+
+    /// Row `y` (`width` pixels) of each plane, writable, for one rayon task per row.
+    pub fn rows_mut(
+        &mut self,
+        width: usize,
+    ) -> impl IndexedParallelIterator<Item = (usize, OutRow<'_>)> {
+        let w = width.max(1);
+        self.r
+            .par_chunks_mut(w)
+            .zip(self.g.par_chunks_mut(w))
+            .zip(self.b.par_chunks_mut(w))
+            .zip(self.v.par_chunks_mut(w))
+            .map(|(((r, g), b), v)| OutRow { r, g, b, v })
+            .enumerate()
+    }
+}
+
+/// One output row of a [`ColourPlanes`].
+pub struct OutRow<'a> {
+    pub r: &'a mut [f32],
+    pub g: &'a mut [f32],
+    pub b: &'a mut [f32],
+    pub v: &'a mut [f32],
+}
+
+impl OutRow<'_> {
+    /// Writes pixel `x` of the row.
+    pub fn set(&mut self, x: usize, value: Vec4) {
+        self.r[x] = value.x;
+        self.g[x] = value.y;
+        self.b[x] = value.z;
+        self.v[x] = value.w;
+    }
+}
+
+/// One rayon task's per-row accumulators (weighted rgb, variance and weight sums) and per-row
+/// centre values (luminance, the luminance weight's scale).
+#[derive(Clone, Debug, Default)]
+pub struct RowSums {
+    pub r: Vec<f32>,
+    pub g: Vec<f32>,
+    pub b: Vec<f32>,
+    pub v: Vec<f32>,
+    pub w: Vec<f32>,
+    pub lum: Vec<f32>,
+    pub scale: Vec<f32>,
+}
+
+impl RowSums {
+    pub fn new(width: usize) -> Self {
+        let z = vec![0.0; width];
+        Self {
+            r: z.clone(),
+            g: z.clone(),
+            b: z.clone(),
+            v: z.clone(),
+            w: z.clone(),
+            lum: z.clone(),
+            scale: z,
+        }
+    }
+
+    /// Zeroes the sums.
+    pub fn clear(&mut self) {
+        for s in [&mut self.r, &mut self.g, &mut self.b, &mut self.v, &mut self.w] {
+            s.fill(0.0);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn exp_neg_is_within_a_few_ulp() {
+        let mut worst = 0.0f64;
+        let mut x = 0.0f32;
+        while x > -87.0 {
+            let exact = (x as f64).exp();
+            let rel = ((exp_neg(x) as f64 - exact) / exact).abs();
+            worst = worst.max(rel);
+            x -= 0.000_37;
+        }
+        assert!(worst < 3e-7, "worst relative error {worst:e}");
+        assert_eq!(exp_neg(0.0), 1.0);
+        assert_eq!(exp_neg(-100.0), 0.0);
+        assert_eq!(exp_neg(f32::NEG_INFINITY), 0.0);
+    }
+}
