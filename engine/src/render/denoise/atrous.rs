@@ -16,7 +16,7 @@
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
-use super::planes::{ColourPlanes, GuidePlanes, RowSums, avx2, lane_weight};
+use super::planes::{ColourPlanes, GuidePlanes, RowSums, Simd, dispatch, lane_weight};
 use super::weights::{
     GAUSS3, KERNEL, LUMINANCE_EPS, demodulator, depth_gradient, edge_weight, guide_at, luminance,
 };
@@ -131,10 +131,11 @@ pub fn filter(
 ) {
     let w = guides.width;
     out.resize(w * guides.height);
+    let simd = Simd::detect();
     out.rows_mut(w).for_each_init(
         || RowSums::new(w),
         |sums, (y, mut row)| {
-            avx2(|| row_sums(input, guides, y, pass, sums));
+            row_sums_simd(simd, input, guides, y, pass, sums);
             let c = y * w;
             for x in 0..w {
                 let i = c + x;
@@ -170,9 +171,20 @@ fn span(width: usize, dx: isize) -> Option<(usize, usize)> {
     (x1 > x0).then_some((x0 as usize, (x1 - x0) as usize))
 }
 
-/// Row `y`'s centre luminance (`sums.lum`), luminance scale (`sums.scale`: σ_l·√(3×3-prefiltered
-/// variance) + ε, −1 without one) and weighted sums of the 5×5 taps, in [`atrous_pixel`]'s
-/// order.
+dispatch!(
+    /// [`row_sums`] at the CPU's vector width.
+    fn row_sums_simd => row_sums(
+        input: &ColourPlanes,
+        g: &GuidePlanes,
+        y: usize,
+        pass: &Pass,
+        sums: &mut RowSums,
+    )
+);
+
+/// Row `y`'s centre luminance (`sums.lum`), the reciprocal of the luminance weight's scale
+/// (`sums.scale`: 1 / (σ_l·√(3×3-prefiltered variance) + ε), 0 without one) and weighted sums
+/// of the 5×5 taps, in [`atrous_pixel`]'s order.
 #[inline(always)]
 fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: &mut RowSums) {
     let (w, rows) = (g.width, g.height as isize);
@@ -199,20 +211,15 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
             }
         }
     }
-    let (cr, cg, cb, cv) = (
-        &input.r[c..c + w],
-        &input.g[c..c + w],
-        &input.b[c..c + w],
-        &input.v[c..c + w],
-    );
+    let (cl, cv) = (&input.l[c..c + w], &input.v[c..c + w]);
     for x in 0..w {
         let (sum, weight) = (sums.r[x], sums.g[x]);
         let var = if weight > 0.0 { sum / weight } else { -1.0 };
-        sums.lum[x] = luminance(Vec3::new(cr[x], cg[x], cb[x]));
+        sums.lum[x] = cl[x];
         sums.scale[x] = if cv[x] >= 0.0 && var >= 0.0 {
-            pass.sigma_l * var.sqrt() + LUMINANCE_EPS
+            1.0 / (pass.sigma_l * var.sqrt() + LUMINANCE_EPS)
         } else {
-            -1.0
+            0.0
         };
     }
     sums.clear();
@@ -231,11 +238,12 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
             };
             let q = (qy as usize * w + x0).wrapping_add_signed(ox);
             let k = KERNEL[(dx + 2) as usize] * KERNEL[(dy + 2) as usize];
-            let (qr, qg, qb, qv) = (
+            let (qr, qg, qb, qv, ql) = (
                 &input.r[q..q + n],
                 &input.g[q..q + n],
                 &input.b[q..q + n],
                 &input.v[q..q + n],
+                &input.l[q..q + n],
             );
             let sr = &mut sums.r[x0..x0 + n];
             let sg = &mut sums.g[x0..x0 + n];
@@ -266,21 +274,19 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
                 &pz[x0..x0 + n],
             );
             let (cgx, cgy) = (&pgx[x0..x0 + n], &pgy[x0..x0 + n]);
-            let (lp, scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
+            let (lp, inv_scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
             let (fx, fy) = (ox as f32, (dy * step) as f32);
             for i in 0..n {
                 let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
                 let slope = (cgx[i] * fx + cgy[i] * fy).abs();
-                let lq = luminance(Vec3::new(qr[i], qg[i], qb[i]));
-                let ls = scale[i];
-                let dl = if ls >= 0.0 { (lp[i] - lq).abs() / ls } else { 0.0 };
+                let dl = (lp[i] - ql[i]).abs() * inv_scale[i];
                 let wt = k * lane_weight(dot, cz[i], qz[i], slope, pass.sigma_z, dl);
-                let valid = qv[i] >= 0.0 && qz[i] > 0.0;
-                let wt = if valid { wt } else { 0.0 };
-                sr[i] += if valid { qr[i] * wt } else { 0.0 };
-                sg[i] += if valid { qg[i] * wt } else { 0.0 };
-                sb[i] += if valid { qb[i] * wt } else { 0.0 };
-                sv[i] += if valid { qv[i] * wt * wt } else { 0.0 };
+                // A neighbour without a sample is (0, 0, 0, −1): a zero weight drops it.
+                let wt = if qv[i] >= 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
+                sr[i] += qr[i] * wt;
+                sg[i] += qg[i] * wt;
+                sb[i] += qb[i] * wt;
+                sv[i] += qv[i] * wt * wt;
                 sw[i] += wt;
             }
         }

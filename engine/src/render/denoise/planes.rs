@@ -1,20 +1,21 @@
 //! The CPU denoiser's working layout: planes (one `f32` per pixel, rows top to bottom) that the
 //! row kernels of `variance` and `atrous` sweep a whole image row at a time, so that the
-//! compiler vectorises their per-tap loops (SSE2, or AVX2 where the CPU has it, see
-//! [`avx2`]), and the exponential those kernels share ([`exp_neg`]).
+//! compiler vectorises their per-tap loops (SSE2, or AVX2 / AVX-512 where the CPU has them,
+//! see [`Simd`]), and the exponential those kernels share ([`exp_neg`]).
 //!
 //! Owns: [`GuidePlanes`] (the sanitized guides and the depth gradient, built once per frame),
 //! [`ColourPlanes`] (a pass's rows: illumination rgb and variance), [`RowSums`] (one rayon
-//! task's accumulators) and [`exp_neg`]. The values are those the per-pixel reference
+//! task's accumulators), [`exp_neg`] and the choice of vector width ([`Simd`], [`dispatch`]). The values are those the per-pixel reference
 //! functions (`weights`, `variance_pixel`, `atrous_pixel`) compute, bit for bit, except the
-//! exponential (a few ULP from `f32::exp`). Render thread, rows on rayon's pool.
+//! exponential (a few ULP from `f32::exp`) and the luminance term, a product with the
+//! reciprocal of its scale rather than a quotient (1 ULP). Render thread, rows on rayon's pool.
 //! Must not: filter (the passes do) or keep anything between frames beyond reused storage.
 
 use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::guides::Guides;
-use super::weights::{DEPTH_EPS_REL, NORMAL_SQUARINGS, axis_gradient, normal_depth};
+use super::weights::{DEPTH_EPS_REL, NORMAL_SQUARINGS, axis_gradient, luminance, normal_depth};
 
 /// e^x for x ≤ 0 (the edge-stopping weights' exponent), by Cephes' `expf` polynomial on a
 /// range reduced by powers of two (n = x·log₂e rounded to nearest): relative error within about 2·10⁻⁷ (a few ULP) of the
@@ -57,23 +58,62 @@ pub fn lane_weight(dot: f32, pz: f32, qz: f32, slope: f32, sigma_z: f32, dl: f32
     wn * exp_neg(-(dz + dl))
 }
 
-/// Runs `f` with AVX2 enabled when the CPU has it (the kernels are `#[inline(always)]`, so
-/// their loops are compiled for 8 lanes there), else as compiled (SSE2 on x86-64).
-#[inline(always)]
-pub fn avx2<R>(f: impl FnOnce() -> R) -> R {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx2")]
-        fn with_avx2<R>(f: impl FnOnce() -> R) -> R {
-            f()
-        }
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the CPU supports AVX2, checked just above.
-            return unsafe { with_avx2(f) };
-        }
-    }
-    f()
+/// The widest vector instructions this CPU runs, detected once per call (cached by `std`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Simd {
+    /// AVX-512 (F, VL): 32 vector registers, so the kernels' constants stay in registers.
+    Avx512,
+    Avx2,
+    /// As compiled (SSE2 on x86-64).
+    Baseline,
 }
+
+impl Simd {
+    pub fn detect() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("avx512f")
+                && std::arch::is_x86_feature_detected!("avx512vl")
+            {
+                return Simd::Avx512;
+            }
+            if std::arch::is_x86_feature_detected!("avx2") {
+                return Simd::Avx2;
+            }
+        }
+        Simd::Baseline
+    }
+}
+
+/// Defines `$name`, which runs the `#[inline(always)]` kernel `$kernel` compiled for the
+/// widest [`Simd`] level the CPU has (its loops vectorise for that width).
+macro_rules! dispatch {
+    ($(#[$doc:meta])* $vis:vis fn $name:ident => $kernel:ident ($($arg:ident : $ty:ty),* $(,)?)) => {
+        $(#[$doc])*
+        $vis fn $name(simd: $crate::render::denoise::planes::Simd, $($arg: $ty),*) {
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx512f,avx512vl,avx2")]
+            fn avx512($($arg: $ty),*) {
+                $kernel($($arg),*)
+            }
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2")]
+            fn avx2($($arg: $ty),*) {
+                $kernel($($arg),*)
+            }
+            match simd {
+                // SAFETY: `Simd::detect` found these features on this CPU.
+                #[cfg(target_arch = "x86_64")]
+                $crate::render::denoise::planes::Simd::Avx512 => unsafe { avx512($($arg),*) },
+                // SAFETY: as above.
+                #[cfg(target_arch = "x86_64")]
+                $crate::render::denoise::planes::Simd::Avx2 => unsafe { avx2($($arg),*) },
+                _ => $kernel($($arg),*),
+            }
+        }
+    };
+}
+pub(crate) use dispatch;
 
 /// The guides as planes: sanitized normal and depth (`weights::normal_depth`: zero where there
 /// is no surface, an emissive pixel included) and the depth gradient (metres per pixel, x
@@ -141,19 +181,21 @@ impl GuidePlanes {
     }
 }
 
-/// A pass's rows as planes: illumination rgb and variance (−1: no valid sample).
+/// A pass's rows as planes: illumination rgb, variance (−1: no valid sample) and the rgb's
+/// luminance (`weights::luminance`, for the next pass's taps).
 #[derive(Clone, Debug, Default)]
 pub struct ColourPlanes {
     pub r: Vec<f32>,
     pub g: Vec<f32>,
     pub b: Vec<f32>,
     pub v: Vec<f32>,
+    pub l: Vec<f32>,
 }
 
 impl ColourPlanes {
     /// Makes room for `n` pixels (contents unspecified until a pass writes them).
     pub fn resize(&mut self, n: usize) {
-        for plane in [&mut self.r, &mut self.g, &mut self.b, &mut self.v] {
+        for plane in [&mut self.r, &mut self.g, &mut self.b, &mut self.v, &mut self.l] {
             plane.resize(n, 0.0);
         }
     }
@@ -181,7 +223,8 @@ impl ColourPlanes {
             .zip(self.g.par_chunks_mut(w))
             .zip(self.b.par_chunks_mut(w))
             .zip(self.v.par_chunks_mut(w))
-            .map(|(((r, g), b), v)| OutRow { r, g, b, v })
+            .zip(self.l.par_chunks_mut(w))
+            .map(|((((r, g), b), v), l)| OutRow { r, g, b, v, l })
             .enumerate()
     }
 }
@@ -192,20 +235,22 @@ pub struct OutRow<'a> {
     pub g: &'a mut [f32],
     pub b: &'a mut [f32],
     pub v: &'a mut [f32],
+    pub l: &'a mut [f32],
 }
 
 impl OutRow<'_> {
-    /// Writes pixel `x` of the row.
+    /// Writes pixel `x` of the row (and its luminance).
     pub fn set(&mut self, x: usize, value: Vec4) {
         self.r[x] = value.x;
         self.g[x] = value.y;
         self.b[x] = value.z;
         self.v[x] = value.w;
+        self.l[x] = luminance(value.truncate());
     }
 }
 
 /// One rayon task's per-row accumulators (weighted rgb, variance and weight sums) and per-row
-/// centre values (luminance, the luminance weight's scale).
+/// centre values (luminance, the reciprocal of the luminance weight's scale).
 #[derive(Clone, Debug, Default)]
 pub struct RowSums {
     pub r: Vec<f32>,

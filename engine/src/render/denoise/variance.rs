@@ -15,7 +15,7 @@
 use glam::{Vec2, Vec4};
 use rayon::prelude::*;
 
-use super::planes::{ColourPlanes, GuidePlanes, RowSums, avx2, lane_weight};
+use super::planes::{ColourPlanes, GuidePlanes, RowSums, Simd, dispatch, lane_weight};
 use super::temporal::History;
 use super::weights::{MIN_TEMPORAL_FRAMES, depth_gradient, edge_weight, guide_at, luminance};
 
@@ -107,6 +107,7 @@ pub fn estimate(
         scratch.len.push(h.w);
     }
     let planes = &*scratch;
+    let simd = Simd::detect();
     out.rows_mut(w)
         .for_each_init(
             || RowSums::new(w),
@@ -118,7 +119,7 @@ pub fn estimate(
                     ill[x].w > 0.0 && ill[x].w < MIN_TEMPORAL_FRAMES && z[x] > 0.0
                 });
                 if spatial {
-                    avx2(|| spatial_row(planes, guides, y, sigma_z, sums));
+                    spatial_row_simd(simd, planes, guides, y, sigma_z, sums);
                 }
                 for x in 0..w {
                     let h = ill[x];
@@ -144,6 +145,17 @@ pub fn estimate(
             },
         );
 }
+
+dispatch!(
+    /// [`spatial_row`] at the CPU's vector width.
+    fn spatial_row_simd => spatial_row(
+        h: &HistoryPlanes,
+        g: &GuidePlanes,
+        y: usize,
+        sigma_z: f32,
+        sums: &mut RowSums,
+    )
+);
 
 /// The spatial estimate's sums for row `y`: `sums.w` the weights, `sums.r` the weighted
 /// luminance, `sums.g` the weighted squared luminance (7×7 taps in [`variance_pixel`]'s order).
@@ -190,10 +202,11 @@ fn spatial_row(h: &HistoryPlanes, g: &GuidePlanes, y: usize, sigma_z: f32, sums:
                 let slope = (cgx[i] * ox + cgy[i] * oy).abs();
                 let wt = lane_weight(dot, cz[i], qz[i], slope, sigma_z, 0.0);
                 let l = ql[i];
-                let valid = qlen[i] > 0.0 && qz[i] > 0.0;
-                sw[i] += if valid { wt } else { 0.0 };
-                s1[i] += if valid { wt * l } else { 0.0 };
-                s2[i] += if valid { wt * l * l } else { 0.0 };
+                // A pixel without history holds zeros: a zero weight drops it.
+                let wt = if qlen[i] > 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
+                sw[i] += wt;
+                s1[i] += wt * l;
+                s2[i] += wt * l * l;
             }
         }
     }
