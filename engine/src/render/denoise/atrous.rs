@@ -16,7 +16,7 @@
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
-use super::planes::{ColourPlanes, GuidePlanes, RowSums, Simd, dispatch, lane_weight};
+use super::planes::{ColourPlanes, GuidePlanes, OutRow, RowSums, Simd, dispatch, lane_weight};
 use super::weights::{
     GAUSS3, KERNEL, LUMINANCE_EPS, demodulator, depth_gradient, edge_weight, guide_at, luminance,
 };
@@ -120,46 +120,90 @@ pub fn atrous_pixel(
 }
 
 /// One pass over the whole image from `input` into `out`, row by row on rayon's pool: per
-/// pixel what [`atrous_pixel`] gives (up to the exponential, `planes::exp_neg`). `albedo` is
-/// the guides' (remodulation only).
-pub fn filter(
-    input: &ColourPlanes,
-    guides: &GuidePlanes,
-    albedo: &[Vec3],
-    pass: &Pass,
-    out: &mut ColourPlanes,
-) {
+/// pixel what [`atrous_pixel`] gives (up to the exponential, `planes::exp_neg`, and the
+/// luminance term's reciprocal).
+pub fn filter(input: &ColourPlanes, guides: &GuidePlanes, pass: &Pass, out: &mut ColourPlanes) {
     let w = guides.width;
     out.resize(w * guides.height);
     let simd = Simd::detect();
     out.rows_mut(w).for_each_init(
         || RowSums::new(w),
-        |sums, (y, mut row)| {
-            row_sums_simd(simd, input, guides, y, pass, sums);
-            let c = y * w;
-            for x in 0..w {
-                let i = c + x;
-                let mut value = input.at(i);
-                if guides.z[i] > 0.0 {
-                    let sum_w = sums.w[x];
-                    value = if sum_w > 0.0 {
-                        let sum_c = Vec3::new(sums.r[x], sums.g[x], sums.b[x]);
-                        (sum_c / sum_w).extend(sums.v[x] / (sum_w * sum_w))
-                    } else {
-                        Vec4::new(0.0, 0.0, 0.0, -1.0)
-                    };
-                }
-                if pass.remodulate {
-                    value = if value.w < 0.0 {
-                        Vec4::ZERO
-                    } else {
-                        (value.truncate() * demodulator(albedo[i])).extend(1.0)
-                    };
-                }
-                row.set(x, value);
-            }
-        },
+        |sums, (y, mut row)| row_simd(simd, input, guides, y, pass, sums, &mut row),
     );
+}
+
+dispatch!(
+    /// [`row_sums`] then [`finish`] at the CPU's vector width.
+    fn row_simd => row(
+        input: &ColourPlanes,
+        g: &GuidePlanes,
+        y: usize,
+        pass: &Pass,
+        sums: &mut RowSums,
+        out: &mut OutRow<'_>,
+    )
+);
+
+#[inline(always)]
+fn row(
+    input: &ColourPlanes,
+    g: &GuidePlanes,
+    y: usize,
+    pass: &Pass,
+    sums: &mut RowSums,
+    out: &mut OutRow<'_>,
+) {
+    row_sums(input, g, y, pass, sums);
+    finish(input, g, y, pass.remodulate, sums, out);
+}
+
+/// Row `y`'s output from its sums, as [`atrous_pixel`] ends: the weighted mean (no weight: no
+/// sample), the input where there is no surface; remodulated (no sample: 0) on the last pass.
+#[inline(always)]
+fn finish(
+    input: &ColourPlanes,
+    g: &GuidePlanes,
+    y: usize,
+    remodulate: bool,
+    sums: &RowSums,
+    out: &mut OutRow<'_>,
+) {
+    let w = g.width;
+    let c = y * w;
+    let (cr, cg, cb, cv) = (
+        &input.r[c..c + w],
+        &input.g[c..c + w],
+        &input.b[c..c + w],
+        &input.v[c..c + w],
+    );
+    let (z, dr, dg, db) = (&g.z[c..c + w], &g.dr[c..c + w], &g.dg[c..c + w], &g.db[c..c + w]);
+    let (sr, sg, sb, sv, sw) = (&sums.r[..w], &sums.g[..w], &sums.b[..w], &sums.v[..w], &sums.w[..w]);
+    let (or, og, ob) = (&mut out.r[..w], &mut out.g[..w], &mut out.b[..w]);
+    let (ov, ol) = (&mut out.v[..w], &mut out.l[..w]);
+    for x in 0..w {
+        let s = sw[x];
+        let (mut r, mut gr, mut b, mut v) = if z[x] > 0.0 {
+            if s > 0.0 {
+                (sr[x] / s, sg[x] / s, sb[x] / s, sv[x] / (s * s))
+            } else {
+                (0.0, 0.0, 0.0, -1.0)
+            }
+        } else {
+            (cr[x], cg[x], cb[x], cv[x])
+        };
+        if remodulate {
+            (r, gr, b, v) = if v < 0.0 {
+                (0.0, 0.0, 0.0, 0.0)
+            } else {
+                (r * dr[x], gr * dg[x], b * db[x], 1.0)
+            };
+        }
+        or[x] = r;
+        og[x] = gr;
+        ob[x] = b;
+        ov[x] = v;
+        ol[x] = luminance(Vec3::new(r, gr, b));
+    }
 }
 
 /// The columns `x0..x0 + n` of row `y` whose neighbours `dx` pixels away lie in a row of
@@ -170,17 +214,6 @@ fn span(width: usize, dx: isize) -> Option<(usize, usize)> {
     let (x0, x1) = ((-dx).max(0), w.min(w - dx));
     (x1 > x0).then_some((x0 as usize, (x1 - x0) as usize))
 }
-
-dispatch!(
-    /// [`row_sums`] at the CPU's vector width.
-    fn row_sums_simd => row_sums(
-        input: &ColourPlanes,
-        g: &GuidePlanes,
-        y: usize,
-        pass: &Pass,
-        sums: &mut RowSums,
-    )
-);
 
 /// Row `y`'s centre luminance (`sums.lum`), the reciprocal of the luminance weight's scale
 /// (`sums.scale`: 1 / (σ_l·√(3×3-prefiltered variance) + ε), 0 without one) and weighted sums

@@ -15,7 +15,9 @@ use glam::{Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::guides::Guides;
-use super::weights::{DEPTH_EPS_REL, NORMAL_SQUARINGS, axis_gradient, luminance, normal_depth};
+use super::weights::{
+    DEPTH_EPS_REL, NORMAL_SQUARINGS, axis_gradient, demodulator, luminance, normal_depth,
+};
 
 /// e^x for x ≤ 0 (the edge-stopping weights' exponent), by Cephes' `expf` polynomial on a
 /// range reduced by powers of two (n = x·log₂e rounded to nearest): relative error within about 2·10⁻⁷ (a few ULP) of the
@@ -85,6 +87,52 @@ impl Simd {
     }
 }
 
+/// While it lives, this thread's SSE/AVX arithmetic flushes subnormal results and inputs to
+/// zero (MXCSR FTZ and DAZ), as GPUs may: a kernel's tiny weights (below 2⁻¹²⁶) would otherwise
+/// take the CPU's slow subnormal path. Dropping it restores the thread's previous mode, so the
+/// tracer sharing rayon's threads is unaffected.
+pub struct FlushDenormals {
+    #[cfg(target_arch = "x86_64")]
+    saved: u32,
+}
+
+impl FlushDenormals {
+    /// FTZ (bit 15) and DAZ (bit 6) of MXCSR.
+    #[cfg(target_arch = "x86_64")]
+    const BITS: u32 = (1 << 15) | (1 << 6);
+
+    #[inline(always)]
+    #[allow(clippy::new_without_default)]
+    pub fn new() -> Self {
+        #[cfg(target_arch = "x86_64")]
+        {
+            let mut saved = 0u32;
+            // SAFETY: stores MXCSR into a local and loads it back with FTZ and DAZ set; both
+            // bits are defined on every x86-64 CPU with SSE2, and no memory but `saved` and
+            // `mode` is touched.
+            unsafe {
+                std::arch::asm!("stmxcsr [{}]", in(reg) &mut saved, options(nostack));
+                let mode = saved | Self::BITS;
+                std::arch::asm!("ldmxcsr [{}]", in(reg) &mode, options(nostack));
+            }
+            Self { saved }
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        Self {}
+    }
+}
+
+impl Drop for FlushDenormals {
+    #[inline(always)]
+    fn drop(&mut self) {
+        #[cfg(target_arch = "x86_64")]
+        // SAFETY: restores the MXCSR value read in `new`.
+        unsafe {
+            std::arch::asm!("ldmxcsr [{}]", in(reg) &self.saved, options(nostack));
+        }
+    }
+}
+
 /// Defines `$name`, which runs the `#[inline(always)]` kernel `$kernel` compiled for the
 /// widest [`Simd`] level the CPU has (its loops vectorise for that width).
 macro_rules! dispatch {
@@ -94,11 +142,13 @@ macro_rules! dispatch {
             #[cfg(target_arch = "x86_64")]
             #[target_feature(enable = "avx512f,avx512vl,avx2")]
             fn avx512($($arg: $ty),*) {
+                let _ftz = $crate::render::denoise::planes::FlushDenormals::new();
                 $kernel($($arg),*)
             }
             #[cfg(target_arch = "x86_64")]
             #[target_feature(enable = "avx2")]
             fn avx2($($arg: $ty),*) {
+                let _ftz = $crate::render::denoise::planes::FlushDenormals::new();
                 $kernel($($arg),*)
             }
             match simd {
@@ -117,7 +167,7 @@ pub(crate) use dispatch;
 
 /// The guides as planes: sanitized normal and depth (`weights::normal_depth`: zero where there
 /// is no surface, an emissive pixel included) and the depth gradient (metres per pixel, x
-/// right, y down; `weights::depth_gradient`).
+/// right, y down; `weights::depth_gradient`) and the demodulation factors.
 #[derive(Clone, Debug, Default)]
 pub struct GuidePlanes {
     pub width: usize,
@@ -129,6 +179,10 @@ pub struct GuidePlanes {
     pub z: Vec<f32>,
     pub gx: Vec<f32>,
     pub gy: Vec<f32>,
+    /// The demodulation factors (`weights::demodulator` of the albedo), per channel.
+    pub dr: Vec<f32>,
+    pub dg: Vec<f32>,
+    pub db: Vec<f32>,
 }
 
 impl GuidePlanes {
@@ -145,6 +199,9 @@ impl GuidePlanes {
             &mut self.z,
             &mut self.gx,
             &mut self.gy,
+            &mut self.dr,
+            &mut self.dg,
+            &mut self.db,
         ] {
             plane.clear();
             plane.resize(n, 0.0);
@@ -160,6 +217,10 @@ impl GuidePlanes {
             self.ny[i] = g.y;
             self.nz[i] = g.z;
             self.z[i] = g.w;
+            let d = demodulator(guides.albedo[i]);
+            self.dr[i] = d.x;
+            self.dg[i] = d.y;
+            self.db[i] = d.z;
         }
         let z = &self.z;
         self.gx
@@ -200,11 +261,6 @@ impl ColourPlanes {
         }
     }
 
-    /// The row of pixel `i`.
-    pub fn at(&self, i: usize) -> Vec4 {
-        Vec4::new(self.r[i], self.g[i], self.b[i], self.v[i])
-    }
-
     /// The rgb of every pixel.
     pub fn rgb(&self) -> Vec<Vec3> {
         (0..self.r.len())
@@ -240,6 +296,7 @@ pub struct OutRow<'a> {
 
 impl OutRow<'_> {
     /// Writes pixel `x` of the row (and its luminance).
+    #[inline]
     pub fn set(&mut self, x: usize, value: Vec4) {
         self.r[x] = value.x;
         self.g[x] = value.y;

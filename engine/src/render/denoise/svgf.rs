@@ -203,7 +203,7 @@ impl Svgf {
             &mut s.a,
         );
         for pass in self.params.passes() {
-            filter(&s.a, &s.guides, &guides.albedo, &pass, &mut s.b);
+            filter(&s.a, &s.guides, &pass, &mut s.b);
             std::mem::swap(&mut s.a, &mut s.b);
         }
         let mut film = Film::new(width, height);
