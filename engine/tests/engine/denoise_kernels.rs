@@ -15,7 +15,7 @@ use crate::denoise_common;
 
 use candela::render::denoise::weights::demodulator;
 use candela::render::denoise::{
-    Guides, History, SvgfParams, Svgf, atrous_pixel, temporal_pixel, variance_pixel,
+    Guides, History, Svgf, SvgfParams, atrous_pixel, temporal_pixel, variance_pixel,
 };
 use denoise_common::{Cornell, Noise, flat_guides};
 use glam::{Vec3, Vec4};
@@ -63,7 +63,10 @@ fn assert_close(what: &str, kernels: &[Vec3], reference: &[Vec3]) {
             let tolerance = 1e-4 * b[ch].abs() + 1e-6 * m.abs() + f32::MIN_POSITIVE;
             let d = (a[ch] - b[ch]).abs();
             worst = worst.max(d / tolerance);
-            assert!(d <= tolerance, "{what} pixel {i} channel {ch}: {a} against {b}");
+            assert!(
+                d <= tolerance,
+                "{what} pixel {i} channel {ch}: {a} against {b}"
+            );
         }
     }
     eprintln!("{what}: worst difference {worst:.4} of the tolerance");

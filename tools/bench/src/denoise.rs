@@ -181,7 +181,11 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
             let mut svgf = Svgf::new(SvgfParams::default());
             let mut before = Reference::new(SvgfParams::default());
             for k in 0..=warm {
-                let b = if k == warm { blend } else { 1.0 / (k + 1) as f32 };
+                let b = if k == warm {
+                    blend
+                } else {
+                    1.0 / (k + 1) as f32
+                };
                 let f = &frames[k as usize % frames.len()];
                 svgf.denoise(f, &guides, b)?;
                 before.denoise(f, &guides, b);
@@ -224,7 +228,8 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
             if label == "restart" {
                 csv += &format!("time_ms,{w}x{h},{g_ms:.3},{c_ms:.3},{gpu_ms:.3},\n");
             }
-            csv += &format!("time_before_after_ms,{w}x{h}_{label},{b_ms:.3},{c_ms:.3},{worst:e},\n");
+            csv +=
+                &format!("time_before_after_ms,{w}x{h}_{label},{b_ms:.3},{c_ms:.3},{worst:e},\n");
         }
     }
     if args.time_only {

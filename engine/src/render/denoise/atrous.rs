@@ -176,8 +176,19 @@ fn finish(
         &input.b[c..c + w],
         &input.v[c..c + w],
     );
-    let (z, dr, dg, db) = (&g.z[c..c + w], &g.dr[c..c + w], &g.dg[c..c + w], &g.db[c..c + w]);
-    let (sr, sg, sb, sv, sw) = (&sums.r[..w], &sums.g[..w], &sums.b[..w], &sums.v[..w], &sums.w[..w]);
+    let (z, dr, dg, db) = (
+        &g.z[c..c + w],
+        &g.dr[c..c + w],
+        &g.dg[c..c + w],
+        &g.db[c..c + w],
+    );
+    let (sr, sg, sb, sv, sw) = (
+        &sums.r[..w],
+        &sums.g[..w],
+        &sums.b[..w],
+        &sums.v[..w],
+        &sums.w[..w],
+    );
     let (or, og, ob) = (&mut out.r[..w], &mut out.g[..w], &mut out.b[..w]);
     let (ov, ol) = (&mut out.v[..w], &mut out.l[..w]);
     for x in 0..w {
@@ -256,7 +267,12 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
         };
     }
     sums.clear();
-    let (pnx, pny, pnz, pz) = (&g.nx[c..c + w], &g.ny[c..c + w], &g.nz[c..c + w], &g.z[c..c + w]);
+    let (pnx, pny, pnz, pz) = (
+        &g.nx[c..c + w],
+        &g.ny[c..c + w],
+        &g.nz[c..c + w],
+        &g.z[c..c + w],
+    );
     let (pgx, pgy) = (&g.gx[c..c + w], &g.gy[c..c + w]);
     let step = pass.step as isize;
     for dy in -2..=2isize {

@@ -3,12 +3,14 @@
 //! compiler vectorises their per-tap loops (SSE2, or AVX2 / AVX-512 where the CPU has them,
 //! see [`Simd`]), and the exponential those kernels share ([`exp_neg`]).
 //!
-//! Owns: [`GuidePlanes`] (the sanitized guides and the depth gradient, built once per frame),
-//! [`ColourPlanes`] (a pass's rows: illumination rgb and variance), [`RowSums`] (one rayon
-//! task's accumulators), [`exp_neg`] and the choice of vector width ([`Simd`], [`dispatch`]). The values are those the per-pixel reference
-//! functions (`weights`, `variance_pixel`, `atrous_pixel`) compute, bit for bit, except the
-//! exponential (a few ULP from `f32::exp`) and the luminance term, a product with the
-//! reciprocal of its scale rather than a quotient (1 ULP). Render thread, rows on rayon's pool.
+//! Owns: [`GuidePlanes`] (the sanitized guides, the depth gradient and the demodulation
+//! factors, built once per frame), [`ColourPlanes`] (a pass's rows: illumination rgb, variance,
+//! luminance), [`RowSums`] (one rayon task's accumulators), [`exp_neg`], the choice of vector
+//! width ([`Simd`], [`dispatch`]) and [`FlushDenormals`]. The values are those the per-pixel
+//! reference functions (`weights`, `variance_pixel`, `atrous_pixel`) compute, bit for bit,
+//! except the exponential (a few ULP from `f32::exp`), the luminance term (a product with the
+//! reciprocal of its scale rather than a quotient, 1 ULP) and subnormal values (flushed to 0).
+//! Render thread, rows on rayon's pool.
 //! Must not: filter (the passes do) or keep anything between frames beyond reused storage.
 
 use glam::{Vec3, Vec4};
@@ -20,10 +22,10 @@ use super::weights::{
 };
 
 /// e^x for x ≤ 0 (the edge-stopping weights' exponent), by Cephes' `expf` polynomial on a
-/// range reduced by powers of two (n = x·log₂e rounded to nearest): relative error within about 2·10⁻⁷ (a few ULP) of the
-/// exact value for −87 ≤ x ≤ 0, 0 below −87 (where e^x < 2⁻¹²⁵, a weight that cannot count
-/// against the kernel's centre). Plain arithmetic, branch-free, so loops over it vectorise.
-/// Not meant for x > 0.
+/// range reduced by powers of two (n = x·log₂e rounded to nearest): relative error within about
+/// 2·10⁻⁷ (a few ULP) of the exact value for −87 ≤ x ≤ 0, 0 below −87 (where e^x < 2⁻¹²⁵, a
+/// weight that cannot count against the kernel's centre). Plain arithmetic, branch-free, so
+/// loops over it vectorise. Not meant for x > 0.
 #[inline(always)]
 pub fn exp_neg(x: f32) -> f32 {
     const LIMIT: f32 = -87.0;
@@ -256,7 +258,13 @@ pub struct ColourPlanes {
 impl ColourPlanes {
     /// Makes room for `n` pixels (contents unspecified until a pass writes them).
     pub fn resize(&mut self, n: usize) {
-        for plane in [&mut self.r, &mut self.g, &mut self.b, &mut self.v, &mut self.l] {
+        for plane in [
+            &mut self.r,
+            &mut self.g,
+            &mut self.b,
+            &mut self.v,
+            &mut self.l,
+        ] {
             plane.resize(n, 0.0);
         }
     }
@@ -335,7 +343,13 @@ impl RowSums {
 
     /// Zeroes the sums.
     pub fn clear(&mut self) {
-        for s in [&mut self.r, &mut self.g, &mut self.b, &mut self.v, &mut self.w] {
+        for s in [
+            &mut self.r,
+            &mut self.g,
+            &mut self.b,
+            &mut self.v,
+            &mut self.w,
+        ] {
             s.fill(0.0);
         }
     }

@@ -15,8 +15,8 @@
 use glam::{Affine3A, Vec3};
 
 use super::atrous::{Pass, filter};
-use super::planes::{ColourPlanes, GuidePlanes};
 use super::guides::Guides;
+use super::planes::{ColourPlanes, GuidePlanes};
 use super::reproject::{PrevFrame, ReprojectStats, View, reproject};
 use super::temporal::{History, Reprojection, accumulate};
 use super::variance::{HistoryPlanes, estimate};
@@ -143,13 +143,7 @@ impl Svgf {
                 let (moved, stats) =
                     reproject(&self.history, &prev, guides, &view, &world_from_object);
                 self.history = moved;
-                accumulate(
-                    &mut self.history,
-                    frame,
-                    albedo,
-                    blend,
-                    Reprojection::Moved,
-                );
+                accumulate(&mut self.history, frame, albedo, blend, Reprojection::Moved);
                 Some(stats)
             }
             _ => {

@@ -108,42 +108,41 @@ pub fn estimate(
     }
     let planes = &*scratch;
     let simd = Simd::detect();
-    out.rows_mut(w)
-        .for_each_init(
-            || RowSums::new(w),
-            |sums, (y, mut row)| {
-                let c = y * w;
-                let ill = &history.illumination[c..c + w];
-                let z = &guides.z[c..c + w];
-                let spatial = (0..w).any(|x| {
-                    ill[x].w > 0.0 && ill[x].w < MIN_TEMPORAL_FRAMES && z[x] > 0.0
-                });
-                if spatial {
-                    spatial_row_simd(simd, planes, guides, y, sigma_z, sums);
-                }
-                for x in 0..w {
-                    let h = ill[x];
-                    let value = if h.w <= 0.0 {
-                        Vec4::new(0.0, 0.0, 0.0, -1.0)
-                    } else if h.w >= MIN_TEMPORAL_FRAMES {
-                        let m = history.moments[c + x];
-                        h.truncate().extend((m.y - m.x * m.x).max(0.0) / (h.w - 1.0))
-                    } else if z[x] <= 0.0 {
-                        h.truncate().extend(0.0)
+    out.rows_mut(w).for_each_init(
+        || RowSums::new(w),
+        |sums, (y, mut row)| {
+            let c = y * w;
+            let ill = &history.illumination[c..c + w];
+            let z = &guides.z[c..c + w];
+            let spatial =
+                (0..w).any(|x| ill[x].w > 0.0 && ill[x].w < MIN_TEMPORAL_FRAMES && z[x] > 0.0);
+            if spatial {
+                spatial_row_simd(simd, planes, guides, y, sigma_z, sums);
+            }
+            for x in 0..w {
+                let h = ill[x];
+                let value = if h.w <= 0.0 {
+                    Vec4::new(0.0, 0.0, 0.0, -1.0)
+                } else if h.w >= MIN_TEMPORAL_FRAMES {
+                    let m = history.moments[c + x];
+                    h.truncate()
+                        .extend((m.y - m.x * m.x).max(0.0) / (h.w - 1.0))
+                } else if z[x] <= 0.0 {
+                    h.truncate().extend(0.0)
+                } else {
+                    let sum_w = sums.w[x];
+                    let var = if sum_w > 0.0 {
+                        let m1 = sums.r[x] / sum_w;
+                        (sums.g[x] / sum_w - m1 * m1).max(0.0)
                     } else {
-                        let sum_w = sums.w[x];
-                        let var = if sum_w > 0.0 {
-                            let m1 = sums.r[x] / sum_w;
-                            (sums.g[x] / sum_w - m1 * m1).max(0.0)
-                        } else {
-                            0.0
-                        };
-                        h.truncate().extend(var)
+                        0.0
                     };
-                    row.set(x, value);
-                }
-            },
-        );
+                    h.truncate().extend(var)
+                };
+                row.set(x, value);
+            }
+        },
+    );
 }
 
 dispatch!(
@@ -203,7 +202,11 @@ fn spatial_row(h: &HistoryPlanes, g: &GuidePlanes, y: usize, sigma_z: f32, sums:
                 let wt = lane_weight(dot, cz[i], qz[i], slope, sigma_z, 0.0);
                 let l = ql[i];
                 // A pixel without history holds zeros: a zero weight drops it.
-                let wt = if qlen[i] > 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
+                let wt = if qlen[i] > 0.0 && qz[i] > 0.0 {
+                    wt
+                } else {
+                    0.0
+                };
                 sw[i] += wt;
                 s1[i] += wt * l;
                 s2[i] += wt * l * l;
