@@ -26,15 +26,10 @@ fn reference(history: &mut History, frame: &[Vec3], guides: &Guides, blend: f32)
     if history.width != w || history.height != h {
         *history = History::new(w, h);
     }
-    for i in 0..frame.len() {
+    for (i, c) in frame.iter().enumerate() {
         let d = demodulator(guides.albedo[i]);
-        [history.illumination[i], history.moments[i]] = temporal_pixel(
-            history.illumination[i],
-            history.moments[i],
-            frame[i],
-            d,
-            blend,
-        );
+        let (il, mo) = (history.illumination[i], history.moments[i]);
+        [history.illumination[i], history.moments[i]] = temporal_pixel(il, mo, *c, d, blend);
     }
     let nd = guides.packed_normal_depth();
     let albedo = guides.packed_albedo();

@@ -200,16 +200,19 @@ impl Svgf {
             filter(&s.a, &s.guides, &pass, &mut s.b);
             std::mem::swap(&mut s.a, &mut s.b);
         }
-        let mut film = Film::new(width, height);
-        film.mean = s.a.rgb();
-        film.samples = self
+        let samples = self
             .history
             .illumination
             .iter()
             .map(|h| h.w as u32)
             .max()
             .unwrap_or(0);
-        film
+        Film {
+            width,
+            height,
+            mean: s.a.rgb(),
+            samples,
+        }
     }
 }
 
