@@ -1,6 +1,9 @@
 //! `bench denoise`: the denoiser's cost and benefit. Time per frame of the CPU denoiser (and of
-//! the CPU guide pass) at 320×180 and 1280×720, medians of repeated runs, and of the GPU twin on
-//! this machine's adapter (lavapipe without a GPU; upload, passes and readback). Then the RMSE
+//! the CPU guide pass) at 320×180 and 1280×720, medians of repeated runs, after a cut (every
+//! history restarted) and with a converged history, side by side with the per-pixel denoiser
+//! it replaced (`denoise_reference.rs`; the largest relative difference of their outputs is
+//! printed), and of the GPU twin on this machine's adapter (lavapipe without a GPU; upload,
+//! passes and readback). Then the RMSE
 //! against a converged reference of the Cornell box at 1, 2 and 4 spp with and without the
 //! denoiser (mean and spread over seeds, one frame each), and the bias it adds to a converged
 //! image (64 frames of 16 spp through its history, against the reference). Prints Markdown
@@ -22,6 +25,8 @@ use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use candela::scene::RenderScene;
 use clap::Args;
 use glam::Vec3;
+
+use super::denoise_reference::Reference;
 
 #[derive(Args, Debug)]
 pub struct DenoiseArgs {
@@ -48,6 +53,9 @@ pub struct DenoiseArgs {
     /// Skip the GPU twin's timing.
     #[arg(long)]
     pub no_gpu: bool,
+    /// Only the times (writes `denoise_time.csv`, no error figures or chart).
+    #[arg(long)]
+    pub time_only: bool,
 }
 
 /// One error figure: samples per pixel, mean and spread of the RMSE without and with, away
@@ -137,8 +145,11 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
     std::fs::create_dir_all(&args.out_dir)?;
     let mut csv = String::from("kind,size_or_spp,value_a,value_b,value_c,value_d\n");
 
-    println!("\n| size | CPU guides, ms | CPU denoiser, ms | GPU denoiser, ms |");
-    println!("|---|---|---|---|");
+    println!(
+        "\n| size | history | CPU guides, ms | CPU denoiser before, ms | CPU denoiser, ms | \
+         speed-up | largest difference | GPU denoiser, ms |"
+    );
+    println!("|---|---|---:|---:|---:|---:|---:|---:|");
     let mut gpu = if args.no_gpu {
         None
     } else {
@@ -150,6 +161,11 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
     for (w, h) in [(320u32, 180u32), (1280, 720)] {
         let u = cornell.uniforms(w, h, 1, 1, 0);
         let frame = cornell.frame(&u)?;
+        // Frames of independent samples, cycled through the converged history's runs.
+        let mut frames = vec![frame.clone()];
+        for k in 1..4u32 {
+            frames.push(cornell.frame(&cornell.uniforms(w, h, 1, 1, k))?);
+        }
         let mut guide_times = Vec::new();
         let mut guides = None;
         for _ in 0..args.runs {
@@ -158,32 +174,67 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
             guide_times.push(t.elapsed().as_secs_f64());
         }
         let guides = guides.context("no runs")?;
-        let mut svgf = Svgf::new(SvgfParams::default());
-        svgf.denoise(&frame, &guides, 1.0)?;
-        let mut cpu_times = Vec::new();
-        for _ in 0..args.runs {
-            let t = Instant::now();
-            svgf.denoise(&frame, &guides, 1.0)?;
-            cpu_times.push(t.elapsed().as_secs_f64());
-        }
-        let gpu_ms = match gpu.as_mut() {
-            Some(g) => {
-                g.denoise(&frame, &guides, 1.0)?;
-                g.read_output()?;
-                let mut times = Vec::new();
-                for _ in 0..args.runs {
-                    let t = Instant::now();
+        let g_ms = median(guide_times) * 1e3;
+        // A cut (blend 1: every pixel's history restarts, the 7×7 spatial variance everywhere),
+        // then a still camera's converged history (blend 0.1 after 8 frames: temporal variance).
+        for (label, warm, blend) in [("restart", 0u32, 1.0f32), ("converged", 8, 0.1)] {
+            let mut svgf = Svgf::new(SvgfParams::default());
+            let mut before = Reference::new(SvgfParams::default());
+            for k in 0..=warm {
+                let b = if k == warm {
+                    blend
+                } else {
+                    1.0 / (k + 1) as f32
+                };
+                let f = &frames[k as usize % frames.len()];
+                svgf.denoise(f, &guides, b)?;
+                before.denoise(f, &guides, b);
+            }
+            let (mut cpu_times, mut before_times, mut worst) = (Vec::new(), Vec::new(), 0.0f32);
+            for run in 0..args.runs {
+                let f = &frames[(warm as usize + 1 + run) % frames.len()];
+                let t = Instant::now();
+                let old = before.denoise(f, &guides, blend);
+                before_times.push(t.elapsed().as_secs_f64());
+                let t = Instant::now();
+                let new = svgf.denoise(f, &guides, blend)?;
+                cpu_times.push(t.elapsed().as_secs_f64());
+                for (a, b) in old.iter().zip(&new.mean) {
+                    let d = (*a - *b).abs().max_element() / (1e-3 + a.abs().max_element());
+                    worst = worst.max(d);
+                }
+            }
+            let gpu_ms = match gpu.as_mut().filter(|_| label == "restart") {
+                Some(g) => {
                     g.denoise(&frame, &guides, 1.0)?;
                     g.read_output()?;
-                    times.push(t.elapsed().as_secs_f64());
+                    let mut times = Vec::new();
+                    for _ in 0..args.runs {
+                        let t = Instant::now();
+                        g.denoise(&frame, &guides, 1.0)?;
+                        g.read_output()?;
+                        times.push(t.elapsed().as_secs_f64());
+                    }
+                    median(times) * 1e3
                 }
-                median(times) * 1e3
+                None => f64::NAN,
+            };
+            let (b_ms, c_ms) = (median(before_times) * 1e3, median(cpu_times) * 1e3);
+            println!(
+                "| {w}×{h} | {label} | {g_ms:.1} | {b_ms:.1} | {c_ms:.1} | {:.1}× | {worst:.1e} | \
+                 {gpu_ms:.1} |",
+                b_ms / c_ms
+            );
+            if label == "restart" {
+                csv += &format!("time_ms,{w}x{h},{g_ms:.3},{c_ms:.3},{gpu_ms:.3},\n");
             }
-            None => f64::NAN,
-        };
-        let (g_ms, c_ms) = (median(guide_times) * 1e3, median(cpu_times) * 1e3);
-        println!("| {w}×{h} | {g_ms:.1} | {c_ms:.1} | {gpu_ms:.1} |");
-        csv += &format!("time_ms,{w}x{h},{g_ms:.3},{c_ms:.3},{gpu_ms:.3},\n");
+            csv +=
+                &format!("time_before_after_ms,{w}x{h}_{label},{b_ms:.3},{c_ms:.3},{worst:e},\n");
+        }
+    }
+    if args.time_only {
+        std::fs::write(args.out_dir.join("denoise_time.csv"), csv)?;
+        return Ok(());
     }
 
     let (w, h) = (args.width, args.height);

@@ -37,6 +37,7 @@ mod chart_scenes;
 mod chart_self_ref;
 mod denoise;
 mod denoise_plot;
+mod denoise_reference;
 mod error;
 mod ghosting;
 mod machine;

@@ -7,13 +7,16 @@
 //! illumination rgb, variance); variance −1 marks a pixel without a valid sample, which weighs
 //! nothing as a neighbour and is filled from its neighbours (without the luminance term) when
 //! it is the centre. Sky pixels (no guide) pass unchanged. The last pass remodulates: rgb ×
-//! albedo, and a pixel still without a sample becomes 0, so nothing non-finite leaves. Render
-//! thread.
+//! albedo, and a pixel still without a sample becomes 0, so nothing non-finite leaves.
+//! [`atrous_pixel`] is the per-pixel reference (the WGSL twin's shape); [`filter`] computes the
+//! same a row at a time over planes (`planes`), the 5×5 taps as loops over the row that
+//! vectorise. Render thread, rows on rayon's pool.
 //! Must not: blend over time.
 
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
+use super::planes::{ColourPlanes, GuidePlanes, OutRow, RowSums, Simd, dispatch, lane_weight};
 use super::weights::{
     GAUSS3, KERNEL, LUMINANCE_EPS, demodulator, depth_gradient, edge_weight, guide_at, luminance,
 };
@@ -116,23 +119,225 @@ pub fn atrous_pixel(
     out
 }
 
-/// One pass over the whole image from `input` into `out`.
-pub fn filter(
-    input: &[Vec4],
-    guides: &[Vec4],
-    albedo: &[Vec4],
-    width: u32,
-    height: u32,
+/// One pass over the whole image from `input` into `out`, row by row on rayon's pool: per
+/// pixel what [`atrous_pixel`] gives (up to the exponential, `planes::exp_neg`, and the
+/// luminance term's reciprocal).
+pub fn filter(input: &ColourPlanes, guides: &GuidePlanes, pass: &Pass, out: &mut ColourPlanes) {
+    let w = guides.width;
+    out.resize(w * guides.height);
+    let simd = Simd::detect();
+    out.rows_mut(w).for_each_init(
+        || RowSums::new(w),
+        |sums, (y, mut row)| row_simd(simd, input, guides, y, pass, sums, &mut row),
+    );
+}
+
+dispatch!(
+    /// [`row_sums`] then [`finish`] at the CPU's vector width.
+    fn row_simd => row(
+        input: &ColourPlanes,
+        g: &GuidePlanes,
+        y: usize,
+        pass: &Pass,
+        sums: &mut RowSums,
+        out: &mut OutRow<'_>,
+    )
+);
+
+#[inline(always)]
+fn row(
+    input: &ColourPlanes,
+    g: &GuidePlanes,
+    y: usize,
     pass: &Pass,
-    out: &mut [Vec4],
+    sums: &mut RowSums,
+    out: &mut OutRow<'_>,
 ) {
-    out.par_chunks_mut(width as usize)
-        .enumerate()
-        .for_each(|(y, row)| {
-            for (x, o) in row.iter_mut().enumerate() {
-                *o = atrous_pixel(
-                    input, guides, albedo, width, height, x as i32, y as i32, pass,
-                );
+    row_sums(input, g, y, pass, sums);
+    finish(input, g, y, pass.remodulate, sums, out);
+}
+
+/// Row `y`'s output from its sums, as [`atrous_pixel`] ends: the weighted mean (no weight: no
+/// sample), the input where there is no surface; remodulated (no sample: 0) on the last pass.
+#[inline(always)]
+fn finish(
+    input: &ColourPlanes,
+    g: &GuidePlanes,
+    y: usize,
+    remodulate: bool,
+    sums: &RowSums,
+    out: &mut OutRow<'_>,
+) {
+    let w = g.width;
+    let c = y * w;
+    let (cr, cg, cb, cv) = (
+        &input.r[c..c + w],
+        &input.g[c..c + w],
+        &input.b[c..c + w],
+        &input.v[c..c + w],
+    );
+    let (z, dr, dg, db) = (
+        &g.z[c..c + w],
+        &g.dr[c..c + w],
+        &g.dg[c..c + w],
+        &g.db[c..c + w],
+    );
+    let (sr, sg, sb, sv, sw) = (
+        &sums.r[..w],
+        &sums.g[..w],
+        &sums.b[..w],
+        &sums.v[..w],
+        &sums.w[..w],
+    );
+    let (or, og, ob) = (&mut out.r[..w], &mut out.g[..w], &mut out.b[..w]);
+    let (ov, ol) = (&mut out.v[..w], &mut out.l[..w]);
+    for x in 0..w {
+        let s = sw[x];
+        let (mut r, mut gr, mut b, mut v) = if z[x] > 0.0 {
+            if s > 0.0 {
+                (sr[x] / s, sg[x] / s, sb[x] / s, sv[x] / (s * s))
+            } else {
+                (0.0, 0.0, 0.0, -1.0)
             }
-        });
+        } else {
+            (cr[x], cg[x], cb[x], cv[x])
+        };
+        if remodulate {
+            (r, gr, b, v) = if v < 0.0 {
+                (0.0, 0.0, 0.0, 0.0)
+            } else {
+                (r * dr[x], gr * dg[x], b * db[x], 1.0)
+            };
+        }
+        or[x] = r;
+        og[x] = gr;
+        ob[x] = b;
+        ov[x] = v;
+        ol[x] = luminance(Vec3::new(r, gr, b));
+    }
+}
+
+/// The columns `x0..x0 + n` of row `y` whose neighbours `dx` pixels away lie in a row of
+/// `width` pixels: (x0, n), `None` when there are none.
+#[inline(always)]
+fn span(width: usize, dx: isize) -> Option<(usize, usize)> {
+    let w = width as isize;
+    let (x0, x1) = ((-dx).max(0), w.min(w - dx));
+    (x1 > x0).then_some((x0 as usize, (x1 - x0) as usize))
+}
+
+/// Row `y`'s centre luminance (`sums.lum`), the reciprocal of the luminance weight's scale
+/// (`sums.scale`: 1 / (σ_l·√(3×3-prefiltered variance) + ε), 0 without one) and weighted sums
+/// of the 5×5 taps, in [`atrous_pixel`]'s order.
+#[inline(always)]
+fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: &mut RowSums) {
+    let (w, rows) = (g.width, g.height as isize);
+    let c = y * w;
+    // The prefiltered variance: sum in `sums.r`, weight in `sums.g`.
+    sums.clear();
+    for dy in -1..=1isize {
+        let qy = y as isize + dy;
+        if qy < 0 || qy >= rows {
+            continue;
+        }
+        for dx in -1..=1isize {
+            let Some((x0, n)) = span(w, dx) else {
+                continue;
+            };
+            let q = (qy as usize * w + x0).wrapping_add_signed(dx);
+            let k = GAUSS3[(dx + 1) as usize] * GAUSS3[(dy + 1) as usize];
+            let qv = &input.v[q..q + n];
+            let (sum, weight) = (&mut sums.r[x0..x0 + n], &mut sums.g[x0..x0 + n]);
+            for i in 0..n {
+                let v = qv[i];
+                sum[i] += if v < 0.0 { 0.0 } else { k * v };
+                weight[i] += if v < 0.0 { 0.0 } else { k };
+            }
+        }
+    }
+    let (cl, cv) = (&input.l[c..c + w], &input.v[c..c + w]);
+    for x in 0..w {
+        let (sum, weight) = (sums.r[x], sums.g[x]);
+        let var = if weight > 0.0 { sum / weight } else { -1.0 };
+        sums.lum[x] = cl[x];
+        sums.scale[x] = if cv[x] >= 0.0 && var >= 0.0 {
+            1.0 / (pass.sigma_l * var.sqrt() + LUMINANCE_EPS)
+        } else {
+            0.0
+        };
+    }
+    sums.clear();
+    let (pnx, pny, pnz, pz) = (
+        &g.nx[c..c + w],
+        &g.ny[c..c + w],
+        &g.nz[c..c + w],
+        &g.z[c..c + w],
+    );
+    let (pgx, pgy) = (&g.gx[c..c + w], &g.gy[c..c + w]);
+    let step = pass.step as isize;
+    for dy in -2..=2isize {
+        let qy = y as isize + dy * step;
+        if qy < 0 || qy >= rows {
+            continue;
+        }
+        for dx in -2..=2isize {
+            let ox = dx * step;
+            let Some((x0, n)) = span(w, ox) else {
+                continue;
+            };
+            let q = (qy as usize * w + x0).wrapping_add_signed(ox);
+            let k = KERNEL[(dx + 2) as usize] * KERNEL[(dy + 2) as usize];
+            let (qr, qg, qb, qv, ql) = (
+                &input.r[q..q + n],
+                &input.g[q..q + n],
+                &input.b[q..q + n],
+                &input.v[q..q + n],
+                &input.l[q..q + n],
+            );
+            let sr = &mut sums.r[x0..x0 + n];
+            let sg = &mut sums.g[x0..x0 + n];
+            let sb = &mut sums.b[x0..x0 + n];
+            let sv = &mut sums.v[x0..x0 + n];
+            let sw = &mut sums.w[x0..x0 + n];
+            if dx == 0 && dy == 0 {
+                for i in 0..n {
+                    let wt = if qv[i] < 0.0 { 0.0 } else { k };
+                    sr[i] += qr[i] * wt;
+                    sg[i] += qg[i] * wt;
+                    sb[i] += qb[i] * wt;
+                    sv[i] += qv[i] * wt * wt;
+                    sw[i] += wt;
+                }
+                continue;
+            }
+            let (qnx, qny, qnz, qz) = (
+                &g.nx[q..q + n],
+                &g.ny[q..q + n],
+                &g.nz[q..q + n],
+                &g.z[q..q + n],
+            );
+            let (cnx, cny, cnz, cz) = (
+                &pnx[x0..x0 + n],
+                &pny[x0..x0 + n],
+                &pnz[x0..x0 + n],
+                &pz[x0..x0 + n],
+            );
+            let (cgx, cgy) = (&pgx[x0..x0 + n], &pgy[x0..x0 + n]);
+            let (lp, inv_scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
+            let (fx, fy) = (ox as f32, (dy * step) as f32);
+            for i in 0..n {
+                let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
+                let slope = (cgx[i] * fx + cgy[i] * fy).abs();
+                let dl = (lp[i] - ql[i]).abs() * inv_scale[i];
+                let wt = k * lane_weight(dot, cz[i], qz[i], slope, pass.sigma_z, dl);
+                // A neighbour without a sample is (0, 0, 0, −1): a zero weight drops it.
+                let wt = if qv[i] >= 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
+                sr[i] += qr[i] * wt;
+                sg[i] += qg[i] * wt;
+                sb[i] += qb[i] * wt;
+                sv[i] += qv[i] * wt * wt;
+                sw[i] += wt;
+            }
+        }
+    }
 }

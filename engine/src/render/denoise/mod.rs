@@ -10,6 +10,7 @@
 
 mod atrous;
 mod guides;
+mod planes;
 mod reproject;
 mod svgf;
 mod temporal;

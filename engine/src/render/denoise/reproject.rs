@@ -136,6 +136,16 @@ pub fn reproject(
         let n = w as usize * h as usize;
         return (out, ReprojectStats { kept: 0, reset: n });
     }
+    // Each instance's motion (previous world-from-object times this frame's object-from-world),
+    // once per frame rather than once per pixel.
+    let moved: Vec<Affine3A> = world_from_object
+        .iter()
+        .enumerate()
+        .map(|(k, now)| match prev.world_from_object.get(k) {
+            Some(before) => *before * now.inverse(),
+            None => Affine3A::IDENTITY,
+        })
+        .collect();
     let rows: Vec<Vec<(Vec4, Vec4)>> = (0..h)
         .into_par_iter()
         .map(|y| {
@@ -143,7 +153,7 @@ pub fn reproject(
                 .map(|x| {
                     let i = y as usize * w as usize + x as usize;
                     let dir = view.centre_direction(x, y);
-                    pixel(history, prev, guides, i, dir, view, world_from_object, pw)
+                    pixel(history, prev, guides, i, dir, view, &moved, pw)
                 })
                 .collect()
         })
@@ -162,6 +172,7 @@ pub fn reproject(
 }
 
 /// One pixel's gathered (illumination with length, moments); length 0 when nothing matched.
+/// `moved` is each instance's motion since the previous frame (identity where unknown).
 #[allow(clippy::too_many_arguments)]
 fn pixel(
     history: &History,
@@ -170,7 +181,7 @@ fn pixel(
     i: usize,
     dir: Vec3,
     view: &View,
-    world_from_object: &[Affine3A],
+    moved: &[Affine3A],
     pw: usize,
 ) -> (Vec4, Vec4) {
     let none = (Vec4::ZERO, Vec4::ZERO);
@@ -184,13 +195,10 @@ fn pixel(
         (dir, 0.0)
     } else {
         let world = view.position + dir * depth;
-        let moved = match (
-            world_from_object.get(instance as usize),
-            prev.world_from_object.get(instance as usize),
-        ) {
-            (Some(now), Some(before)) => *before * now.inverse(),
-            _ => Affine3A::IDENTITY,
-        };
+        let moved = moved
+            .get(instance as usize)
+            .copied()
+            .unwrap_or(Affine3A::IDENTITY);
         let before = moved.transform_point3(world) - prev.view.position;
         (before, before.length())
     };

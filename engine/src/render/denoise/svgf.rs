@@ -12,13 +12,14 @@
 //! render thread (its passes on rayon's pool).
 //! Must not: trace rays or touch the tracer's film.
 
-use glam::{Affine3A, Vec3, Vec4};
+use glam::{Affine3A, Vec3};
 
 use super::atrous::{Pass, filter};
 use super::guides::Guides;
+use super::planes::{ColourPlanes, GuidePlanes};
 use super::reproject::{PrevFrame, ReprojectStats, View, reproject};
 use super::temporal::{History, Reprojection, accumulate};
-use super::variance::estimate;
+use super::variance::{HistoryPlanes, estimate};
 use crate::render::film::Film;
 
 /// The filter's knobs (Schied et al.'s defaults; σ_n = 128 is fixed, see `weights`).
@@ -76,6 +77,7 @@ pub struct Svgf {
     history: History,
     /// The previous frame, kept by [`Svgf::denoise_moving`] for reprojection.
     prev: Option<PrevFrame>,
+    scratch: Scratch,
 }
 
 impl Svgf {
@@ -107,16 +109,16 @@ impl Svgf {
         blend: f32,
     ) -> Result<Film, DenoiseError> {
         self.check(frame, guides)?;
-        let albedo = guides.packed_albedo();
+        let albedo = &guides.albedo;
         accumulate(
             &mut self.history,
             frame,
-            &albedo,
+            albedo,
             blend,
             Reprojection::Identity,
         );
         self.prev = None;
-        Ok(self.filter_history(guides, &albedo))
+        Ok(self.filter_history(guides))
     }
 
     /// Denoises one frame seen from `view` with the instances at `world_from_object` (by
@@ -134,27 +136,21 @@ impl Svgf {
         world_from_object: Vec<Affine3A>,
     ) -> Result<(Film, Option<ReprojectStats>), DenoiseError> {
         self.check(frame, guides)?;
-        let albedo = guides.packed_albedo();
+        let albedo = &guides.albedo;
         let restart = blend.is_nan() || blend >= 1.0;
         let stats = match self.prev.take() {
             Some(prev) if !restart => {
                 let (moved, stats) =
                     reproject(&self.history, &prev, guides, &view, &world_from_object);
                 self.history = moved;
-                accumulate(
-                    &mut self.history,
-                    frame,
-                    &albedo,
-                    blend,
-                    Reprojection::Moved,
-                );
+                accumulate(&mut self.history, frame, albedo, blend, Reprojection::Moved);
                 Some(stats)
             }
             _ => {
                 accumulate(
                     &mut self.history,
                     frame,
-                    &albedo,
+                    albedo,
                     blend,
                     Reprojection::Identity,
                 );
@@ -166,7 +162,7 @@ impl Svgf {
             guides: guides.clone(),
             world_from_object,
         });
-        Ok((self.filter_history(guides, &albedo), stats))
+        Ok((self.filter_history(guides), stats))
     }
 
     /// Checks the sizes and resizes (so restarts) the history when the guides' size changed.
@@ -189,34 +185,43 @@ impl Svgf {
     }
 
     /// Variance estimate and the à-trous passes over the current history.
-    fn filter_history(&self, guides: &Guides, albedo: &[Vec4]) -> Film {
+    fn filter_history(&mut self, guides: &Guides) -> Film {
         let (width, height) = (guides.width, guides.height);
-        let n = width as usize * height as usize;
-        let nd = guides.packed_normal_depth();
-        let mut a = vec![Vec4::ZERO; n];
-        let mut b = vec![Vec4::ZERO; n];
+        let s = &mut self.scratch;
+        s.guides.fill(guides);
         estimate(
-            &self.history.illumination,
-            &self.history.moments,
-            &nd,
-            width,
-            height,
+            &self.history,
+            &s.guides,
             self.params.sigma_z,
-            &mut a,
+            &mut s.history,
+            &mut s.a,
         );
         for pass in self.params.passes() {
-            filter(&a, &nd, albedo, width, height, &pass, &mut b);
-            std::mem::swap(&mut a, &mut b);
+            filter(&s.a, &s.guides, &pass, &mut s.b);
+            std::mem::swap(&mut s.a, &mut s.b);
         }
-        let mut film = Film::new(width, height);
-        film.mean = a.iter().map(|v| v.truncate()).collect();
-        film.samples = self
+        let samples = self
             .history
             .illumination
             .iter()
             .map(|h| h.w as u32)
             .max()
             .unwrap_or(0);
-        film
+        Film {
+            width,
+            height,
+            mean: s.a.rgb(),
+            samples,
+        }
     }
+}
+
+/// The planes the passes work in, kept between frames so that a frame allocates nothing but
+/// its output.
+#[derive(Clone, Debug, Default)]
+struct Scratch {
+    guides: GuidePlanes,
+    history: HistoryPlanes,
+    a: ColourPlanes,
+    b: ColourPlanes,
 }

@@ -80,11 +80,11 @@ pub fn temporal_pixel(history: Vec4, moments: Vec4, c: Vec3, demod: Vec3, blend:
 }
 
 /// Blends `frame` (mean radiance per pixel, rows top to bottom) into `history` with weight
-/// `blend`, demodulating by `albedo` (packed guide rows). Sizes must match (the caller checks).
+/// `blend`, demodulating by `albedo` (the guides' albedo). Sizes must match (the caller checks).
 pub fn accumulate(
     history: &mut History,
     frame: &[Vec3],
-    albedo: &[Vec4],
+    albedo: &[Vec3],
     blend: f32,
     reprojection: Reprojection,
 ) {
@@ -98,7 +98,7 @@ pub fn accumulate(
                 Reprojection::Identity => blend,
                 Reprojection::Moved => blend.max(1.0 / (h.w.max(0.0) + 1.0)),
             };
-            let [nh, nm] = temporal_pixel(*h, *m, *c, demodulator(a.truncate()), blend);
+            let [nh, nm] = temporal_pixel(*h, *m, *c, demodulator(*a), blend);
             *h = nh;
             *m = nm;
         });

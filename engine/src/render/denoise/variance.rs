@@ -7,12 +7,16 @@
 //! the *mean* (moments' variance / (n − 1)), not of one frame, so the filter relaxes as the
 //! image converges and adds little blur to a converged image. The spatial figure is the spread
 //! of the neighbours' (per-frame mean) values. Output rows: (illumination rgb, variance), with
-//! variance −1 for a pixel without any valid sample. Render thread.
+//! variance −1 for a pixel without any valid sample. [`variance_pixel`] is the per-pixel
+//! reference (the WGSL twin's shape); [`estimate`] computes the same a row at a time over
+//! planes (`planes`). Render thread, rows on rayon's pool.
 //! Must not: blend over time or filter colour.
 
 use glam::{Vec2, Vec4};
 use rayon::prelude::*;
 
+use super::planes::{ColourPlanes, GuidePlanes, RowSums, Simd, dispatch, lane_weight};
+use super::temporal::History;
 use super::weights::{MIN_TEMPORAL_FRAMES, depth_gradient, edge_weight, guide_at, luminance};
 
 /// Half the spatial estimate's window (7×7).
@@ -75,30 +79,138 @@ pub fn variance_pixel(
     h.truncate().extend(var)
 }
 
-/// The variance pass over the whole image into `out` (one row per pixel).
+/// The history's luminance and length as planes, for the spatial estimate's taps.
+#[derive(Clone, Debug, Default)]
+pub struct HistoryPlanes {
+    lum: Vec<f32>,
+    len: Vec<f32>,
+}
+
+/// The variance pass over the whole image into `out`, row by row on rayon's pool: per pixel
+/// what [`variance_pixel`] gives (up to the exponential, `planes::exp_neg`). The 7×7 spatial
+/// estimate runs only on rows with a surface pixel whose history is shorter than
+/// [`MIN_TEMPORAL_FRAMES`].
 pub fn estimate(
-    illumination: &[Vec4],
-    moments: &[Vec4],
-    guides: &[Vec4],
-    width: u32,
-    height: u32,
+    history: &History,
+    guides: &GuidePlanes,
     sigma_z: f32,
-    out: &mut [Vec4],
+    scratch: &mut HistoryPlanes,
+    out: &mut ColourPlanes,
 ) {
-    out.par_chunks_mut(width as usize)
-        .enumerate()
-        .for_each(|(y, row)| {
-            for (x, o) in row.iter_mut().enumerate() {
-                *o = variance_pixel(
-                    illumination,
-                    moments,
-                    guides,
-                    width,
-                    height,
-                    x as i32,
-                    y as i32,
-                    sigma_z,
-                );
+    let w = guides.width;
+    let n = w * guides.height;
+    out.resize(n);
+    scratch.lum.clear();
+    scratch.len.clear();
+    for h in &history.illumination {
+        scratch.lum.push(luminance(h.truncate()));
+        scratch.len.push(h.w);
+    }
+    let planes = &*scratch;
+    let simd = Simd::detect();
+    out.rows_mut(w).for_each_init(
+        || RowSums::new(w),
+        |sums, (y, mut row)| {
+            let c = y * w;
+            let ill = &history.illumination[c..c + w];
+            let z = &guides.z[c..c + w];
+            let spatial =
+                (0..w).any(|x| ill[x].w > 0.0 && ill[x].w < MIN_TEMPORAL_FRAMES && z[x] > 0.0);
+            if spatial {
+                spatial_row_simd(simd, planes, guides, y, sigma_z, sums);
             }
-        });
+            for x in 0..w {
+                let h = ill[x];
+                let value = if h.w <= 0.0 {
+                    Vec4::new(0.0, 0.0, 0.0, -1.0)
+                } else if h.w >= MIN_TEMPORAL_FRAMES {
+                    let m = history.moments[c + x];
+                    h.truncate()
+                        .extend((m.y - m.x * m.x).max(0.0) / (h.w - 1.0))
+                } else if z[x] <= 0.0 {
+                    h.truncate().extend(0.0)
+                } else {
+                    let sum_w = sums.w[x];
+                    let var = if sum_w > 0.0 {
+                        let m1 = sums.r[x] / sum_w;
+                        (sums.g[x] / sum_w - m1 * m1).max(0.0)
+                    } else {
+                        0.0
+                    };
+                    h.truncate().extend(var)
+                };
+                row.set(x, value);
+            }
+        },
+    );
+}
+
+dispatch!(
+    /// [`spatial_row`] at the CPU's vector width.
+    fn spatial_row_simd => spatial_row(
+        h: &HistoryPlanes,
+        g: &GuidePlanes,
+        y: usize,
+        sigma_z: f32,
+        sums: &mut RowSums,
+    )
+);
+
+/// The spatial estimate's sums for row `y`: `sums.w` the weights, `sums.r` the weighted
+/// luminance, `sums.g` the weighted squared luminance (7×7 taps in [`variance_pixel`]'s order).
+#[inline(always)]
+fn spatial_row(h: &HistoryPlanes, g: &GuidePlanes, y: usize, sigma_z: f32, sums: &mut RowSums) {
+    let (w, rows) = (g.width as isize, g.height as isize);
+    let c = y * g.width;
+    let e = c + g.width;
+    let (pnx, pny, pnz, pz) = (&g.nx[c..e], &g.ny[c..e], &g.nz[c..e], &g.z[c..e]);
+    let (pgx, pgy) = (&g.gx[c..e], &g.gy[c..e]);
+    sums.clear();
+    for dy in -SPATIAL_RADIUS as isize..=SPATIAL_RADIUS as isize {
+        let qy = y as isize + dy;
+        if qy < 0 || qy >= rows {
+            continue;
+        }
+        for dx in -SPATIAL_RADIUS as isize..=SPATIAL_RADIUS as isize {
+            let (x0, x1) = ((-dx).max(0), w.min(w - dx));
+            if x1 <= x0 {
+                continue;
+            }
+            let (x0, n) = (x0 as usize, (x1 - x0) as usize);
+            let q = (qy * w + x0 as isize + dx) as usize;
+            let (qnx, qny, qnz, qz) = (
+                &g.nx[q..q + n],
+                &g.ny[q..q + n],
+                &g.nz[q..q + n],
+                &g.z[q..q + n],
+            );
+            let (ql, qlen) = (&h.lum[q..q + n], &h.len[q..q + n]);
+            let (cnx, cny, cnz, cz) = (
+                &pnx[x0..x0 + n],
+                &pny[x0..x0 + n],
+                &pnz[x0..x0 + n],
+                &pz[x0..x0 + n],
+            );
+            let (cgx, cgy) = (&pgx[x0..x0 + n], &pgy[x0..x0 + n]);
+            let sw = &mut sums.w[x0..x0 + n];
+            let s1 = &mut sums.r[x0..x0 + n];
+            let s2 = &mut sums.g[x0..x0 + n];
+            let (ox, oy) = (dx as f32, dy as f32);
+            for i in 0..n {
+                let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
+                let slope = (cgx[i] * ox + cgy[i] * oy).abs();
+                let wt = lane_weight(dot, cz[i], qz[i], slope, sigma_z, 0.0);
+                let l = ql[i];
+                // A pixel without history holds zeros: a zero weight drops it.
+                let wt = if qlen[i] > 0.0 && qz[i] > 0.0 {
+                    wt
+                } else {
+                    0.0
+                };
+                sw[i] += wt;
+                s1[i] += wt * l;
+                s2[i] += wt * l * l;
+            }
+        }
+    }
 }
