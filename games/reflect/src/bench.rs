@@ -27,6 +27,8 @@ pub struct ChamberFigures {
     /// Milliseconds per frame of each main-thread phase, in `Phase::ALL` order.
     pub phase_ms: Vec<f64>,
     pub render_ms: f64,
+    /// The denoiser's milliseconds per frame (its guide pass included; 0 when off).
+    pub denoise_ms: f64,
     pub film: (u32, u32),
     pub spp: u32,
     pub lights: u32,
@@ -46,12 +48,14 @@ fn run(
     index: usize,
     replay: &Path,
     seconds: f64,
+    denoise: bool,
 ) -> anyhow::Result<ChamberFigures> {
     let (replay, start) = open_replay(world, replay)?;
     debug_assert_eq!(start, index);
     let mut game = ReflectGame::new(world.clone(), start);
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
+        denoise,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
         ..RenderConfig::cpu(640, 360)
     };
@@ -79,6 +83,7 @@ fn run(
         frames: frame_ms.len(),
         frame_ms: median(frame_ms[half(frame_ms.len())..].to_vec()),
         render_ms: median(late.iter().map(|r| r.render_seconds * 1e3).collect()),
+        denoise_ms: median(late.iter().map(|r| r.denoise_seconds * 1e3).collect()),
         spp: late.iter().map(|r| r.spp).max().unwrap_or(0),
         lights: median(late.iter().map(|r| f64::from(r.lights)).collect()) as u32,
         ..Default::default()
@@ -94,25 +99,27 @@ fn run(
     Ok(figures)
 }
 
-/// Runs every chamber with and without room switching; returns the Markdown table.
+/// Runs every chamber with and without room switching (denoising each frame when `denoise`,
+/// as the game does by default); returns the Markdown table.
 pub fn bench(
     world: &ReflectWorld,
     root: &AssetRoot,
     replays: &Path,
     seconds: f64,
+    denoise: bool,
 ) -> anyhow::Result<String> {
     let all_on = world.without_room_switching(root)?;
     let mut out = String::from("| chamber | frames | frame ms (median) | fps |");
     for p in Phase::ALL {
         out += &format!(" {} ms |", p.name());
     }
-    out += " render ms | internal res | spp | emitters sampled (switching) | emitters (all on) |\n|---|";
-    out += &"---:|".repeat(3 + Phase::ALL.len() + 5);
+    out += " render ms | denoise ms | internal res | spp | emitters sampled (switching) | emitters (all on) |\n|---|";
+    out += &"---:|".repeat(3 + Phase::ALL.len() + 6);
     out += "\n";
     for (i, chamber) in world.chambers.iter().enumerate() {
         let replay = replays.join(format!("{}.replay", chamber.id));
-        let f = run(world, i, &replay, seconds)?;
-        let on = run(&all_on, i, &replay, seconds.min(8.0))?;
+        let f = run(world, i, &replay, seconds, denoise)?;
+        let on = run(&all_on, i, &replay, seconds.min(8.0), denoise)?;
         out += &format!(
             "| {} | {} | {:.1} | {:.1} |",
             chamber.id,
@@ -124,8 +131,8 @@ pub fn bench(
             out += &format!(" {ms:.2} |");
         }
         out += &format!(
-            " {:.1} | {}×{} | {} | {} | {} |\n",
-            f.render_ms, f.film.0, f.film.1, f.spp, f.lights, on.lights
+            " {:.1} | {:.1} | {}×{} | {} | {} | {} |\n",
+            f.render_ms, f.denoise_ms, f.film.0, f.film.1, f.spp, f.lights, on.lights
         );
         eprintln!("{}: done", chamber.id);
     }

@@ -80,6 +80,10 @@ pub struct Args {
     /// With --soak: only this chamber (`chamber_1` …); every chamber when absent.
     #[arg(long)]
     pub soak_chamber: Option<String>,
+    /// Windowed play and --bench: denoise each frame (SVGF with per-pixel reprojection) before
+    /// it is shown. `--denoise false` shows the raw traced film.
+    #[arg(long, default_value_t = true, action = clap::ArgAction::Set)]
+    pub denoise: bool,
 }
 
 /// The game file and the asset root it lives in (`…/assets`, two folders above it).
@@ -131,7 +135,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     if args.bench {
         let replays = root.path().join("reflect/replays");
-        return crate::bench::bench(&world, &root, &replays, args.bench_seconds);
+        return crate::bench::bench(&world, &root, &replays, args.bench_seconds, args.denoise);
     }
     if args.headless {
         let Some(replay) = &args.replay else {
@@ -194,6 +198,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     // by workload scaling.
     let render = RenderConfig {
         tracer: TracerChoice::Auto,
+        denoise: args.denoise,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
         ..RenderConfig::cpu(640, 360)
     };

@@ -132,9 +132,9 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let render = RenderConfig {
         tracer: TracerChoice::Auto,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
-        // The denoiser costs 110–150 ms a frame at 320×180 on two cores (docs/PERFORMANCE.md):
-        // off until it fits a 30 fps frame; `view --denoise` shows it.
-        denoise: false,
+        // Denoised as Reflect is: the row kernels take 5–10 ms a frame at 320×180 on two cores
+        // (docs/PERFORMANCE.md, "Denoiser time per frame"), and a 1-spp film in motion is noise.
+        denoise: true,
         ..RenderConfig::cpu(640, 360)
     };
     let report = run_game(config, shell, render, environment, &mut game)?;
