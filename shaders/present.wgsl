@@ -1,6 +1,6 @@
 // The present pass (render thread): the film — converged mean linear radiance, rows top to
 // bottom, possibly smaller than the window when workload scaling lowered the resolution — is
-// upscaled bilinearly to the frame and tonemapped exactly as `linear_to_srgb8` in
+// upscaled to the frame by a separable Catmull-Rom bicubic with clamped edges, and tonemapped exactly as `linear_to_srgb8` in
 // engine/src/render/film/tonemap.rs: exposure, optional ACES fit, NaN to black, clamp to [0, 1],
 // sRGB transfer (by the hardware for an sRGB target, here otherwise). Composed after
 // shared/types.wgsl only (it binds nothing of the tracing pass).
@@ -25,7 +25,7 @@ fn is_nan(x: f32) -> bool {
     return (bitcast<u32>(x) & 0x7fffffffu) > 0x7f800000u;
 }
 
-// NaN → 0 and ±infinity → ±1e30, per channel: the bilinear weights of neighbours (0 at equal
+// NaN → 0 and ±infinity → ±1e30, per channel: the bicubic weights of neighbours (0 at equal
 // sizes) would otherwise spread a bad value (0 × inf = NaN), and the tonemap below then maps
 // these exactly as the CPU maps NaN and infinity.
 fn finite(c: vec3<f32>) -> vec3<f32> {
@@ -38,6 +38,19 @@ fn film_texel(x: i32, y: i32) -> vec3<f32> {
     let cx = u32(clamp(x, 0, i32(present.film_width) - 1));
     let cy = u32(clamp(y, 0, i32(present.film_height) - 1));
     return finite(film[cy * present.film_width + cx].xyz);
+}
+
+// Catmull-Rom weights of the film pixels at base - 1 .. base + 2 for a sample t past base, as
+// `catmull_rom` in engine/src/render/present/cpu_compose.rs (t = 0: (0, 1, 0, 0)).
+fn catmull_rom(t: f32) -> vec4<f32> {
+    let t2 = t * t;
+    let t3 = t2 * t;
+    return vec4<f32>(
+        (-t3 + 2.0 * t2 - t) * 0.5,
+        (3.0 * t3 - 5.0 * t2 + 2.0) * 0.5,
+        (-3.0 * t3 + 4.0 * t2 + t) * 0.5,
+        (t3 - t2) * 0.5,
+    );
 }
 
 fn srgb_encode(c: f32) -> f32 {
@@ -60,9 +73,17 @@ fn present_fs(vertex: PresentVertex) -> @location(0) vec4<f32> {
     let t = f - base;
     let x = i32(base.x);
     let y = i32(base.y);
-    let top = mix(film_texel(x, y), film_texel(x + 1, y), t.x);
-    let bottom = mix(film_texel(x, y + 1), film_texel(x + 1, y + 1), t.x);
-    var c = mix(top, bottom, t.y) * present.exposure_scale;
+    let wx = catmull_rom(t.x);
+    let wy = catmull_rom(t.y);
+    // Across first (each of the four rows), then down: the CPU compose's order.
+    var sum = vec3<f32>(0.0);
+    for (var j = 0; j < 4; j = j + 1) {
+        let row = y - 1 + j;
+        let across = film_texel(x - 1, row) * wx.x + film_texel(x, row) * wx.y
+            + film_texel(x + 1, row) * wx.z + film_texel(x + 2, row) * wx.w;
+        sum = sum + across * wy[j];
+    }
+    var c = sum * present.exposure_scale;
     if (present.filmic != 0u) {
         c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
     }

@@ -1,5 +1,5 @@
-//! Composing a host film (the CPU tracer's) into window pixels on the CPU: the same bilinear
-//! upscale with clamped edges and the same tonemap as `shaders/present.wgsl` (exposure, the
+//! Composing a host film (the CPU tracer's) into window pixels on the CPU: the same Catmull-Rom
+//! bicubic upscale with clamped edges and the same tonemap as `shaders/present.wgsl` (exposure, the
 //! optional ACES fit, NaN to black, clamp, sRGB encoding), written as 8-bit BGRA or RGBA rows
 //! that the presenter copies straight into the surface texture.
 //!
@@ -52,21 +52,36 @@ fn encode(x: f32, table: &[u8; SRGB_TABLE]) -> u8 {
     table[(x * (SRGB_TABLE - 1) as f32 + 0.5) as usize]
 }
 
-/// Source texel index pairs and weights along one axis: output pixel `i` of `to` reads film
-/// pixels `a`, `b` (clamped) mixed by `t`, as the shader maps centres.
-fn axis(from: u32, to: u32) -> Vec<(usize, usize, f32)> {
+/// Catmull-Rom weights of the four film pixels at `base − 1 … base + 2` for a sample `t` ∈ [0, 1)
+/// past `base` (they sum to 1; `t = 0` gives `[0, 1, 0, 0]`, so equal sizes copy exactly). The
+/// same cubic as `catmull_rom` in `shaders/present.wgsl`.
+pub fn catmull_rom(t: f32) -> [f32; 4] {
+    let (t2, t3) = (t * t, t * t * t);
+    [
+        (-t3 + 2.0 * t2 - t) * 0.5,
+        (3.0 * t3 - 5.0 * t2 + 2.0) * 0.5,
+        (-3.0 * t3 + 4.0 * t2 + t) * 0.5,
+        (t3 - t2) * 0.5,
+    ]
+}
+
+/// The four source taps (clamped to the film) and their weights along one axis: output pixel
+/// `i` of `to` reads film pixels around its centre mapped as the shader maps it.
+fn axis(from: u32, to: u32) -> Vec<([usize; 4], [f32; 4])> {
     let scale = from as f32 / to.max(1) as f32;
+    let last = from.max(1) as i64 - 1;
     (0..to)
         .map(|i| {
             let f = (i as f32 + 0.5) * scale - 0.5;
             let base = f.floor();
-            let clamp = |v: f32| (v.max(0.0) as usize).min(from as usize - 1);
-            (clamp(base), clamp(base + 1.0), f - base)
+            let b = base as i64;
+            let taps = [b - 1, b, b + 1, b + 2].map(|v| v.clamp(0, last) as usize);
+            (taps, catmull_rom(f - base))
         })
         .collect()
 }
 
-/// `film` upscaled (bilinear, clamped edges) to `size` (physical pixels) and tonemapped with
+/// `film` upscaled (Catmull-Rom bicubic, separable, clamped edges) to `size` (physical pixels) and tonemapped with
 /// `tonemap`, as rows of 4-byte pixels, top row first; `bgra` orders them B, G, R, A (else
 /// R, G, B, A), alpha 255. An empty film gives black.
 pub fn compose_host_film(
@@ -95,14 +110,28 @@ pub fn compose_host_film(
         .par_iter()
         .map(|&c| finite(c))
         .collect();
+    // Across first: each film row widened to the window's width (4 taps a pixel), then down.
+    let mut wide = vec![Vec3::ZERO; w * film.height as usize];
+    wide.par_chunks_mut(w)
+        .zip(texels.par_chunks(fw))
+        .for_each(|(line, row)| {
+            for (px, (taps, wx)) in line.iter_mut().zip(&columns) {
+                *px = row[taps[0]] * wx[0]
+                    + row[taps[1]] * wx[1]
+                    + row[taps[2]] * wx[2]
+                    + row[taps[3]] * wx[3];
+            }
+        });
     out.par_chunks_mut(w * 4)
         .zip(rows.par_iter())
-        .for_each(|(line, &(y0, y1, ty))| {
-            let (top, bottom) = (&texels[y0 * fw..][..fw], &texels[y1 * fw..][..fw]);
-            for (px, &(x0, x1, tx)) in line.chunks_exact_mut(4).zip(&columns) {
-                let upper = top[x0].lerp(top[x1], tx);
-                let lower = bottom[x0].lerp(bottom[x1], tx);
-                let mut c = upper.lerp(lower, ty) * exposure;
+        .for_each(|(line, (taps, wy))| {
+            let lines = taps.map(|t| &wide[t * w..][..w]);
+            for (x, px) in line.chunks_exact_mut(4).enumerate() {
+                let mut c = (lines[0][x] * wy[0]
+                    + lines[1][x] * wy[1]
+                    + lines[2][x] * wy[2]
+                    + lines[3][x] * wy[3])
+                    * exposure;
                 if filmic {
                     c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
                 }
@@ -151,15 +180,30 @@ mod tests {
     }
 
     #[test]
-    fn upscaling_blends_neighbours_and_clamps_edges() {
+    fn upscaling_is_catmull_rom_with_clamped_edges() {
         let mut film = Film::new(2, 1);
         film.mean = vec![Vec3::ZERO, Vec3::ONE];
         let out = compose_host_film(&film, (4, 1), &TonemapSettings::default(), false);
-        // Centres at 0.25, 0.75, 1.25, 1.75 film pixels: weights 0 (clamped), 0.25, 0.75, 1.
-        let expected = [0.0f32, 0.25, 0.75, 1.0]
-            .map(|v| linear_to_srgb8(Vec3::splat(v), &TonemapSettings::default())[0]);
+        // Centres at 0.25, 0.75, 1.25, 1.75 film pixels (−0.25, 0.25, 0.75, 1.25 past the first
+        // centre); the taps beyond the film repeat its edge pixels.
+        let at = |f: f32| {
+            let base = f.floor();
+            let w = catmull_rom(f - base);
+            let texel = |i: f32| if i < 1.0 { 0.0 } else { 1.0 };
+            (0..4)
+                .map(|k| w[k] * texel(base - 1.0 + k as f32))
+                .sum::<f32>()
+        };
+        let expected = [-0.25f32, 0.25, 0.75, 1.25]
+            .map(|f| linear_to_srgb8(Vec3::splat(at(f)), &TonemapSettings::default())[0]);
         for (i, e) in expected.iter().enumerate() {
             assert!(out[i * 4].abs_diff(*e) <= 1, "{i}: {} vs {e}", out[i * 4]);
         }
+        // Sharper than bilinear between the two pixels (0.25 → 0.2031, 0.75 → 0.7969).
+        assert!((at(0.25) - 0.203125).abs() < 1e-6 && (at(0.75) - 0.796875).abs() < 1e-6);
+        for t in [0.0f32, 0.3, 0.5, 0.9] {
+            assert!((catmull_rom(t).iter().sum::<f32>() - 1.0).abs() < 1e-6);
+        }
+        assert_eq!(catmull_rom(0.0), [0.0, 1.0, 0.0, 0.0]);
     }
 }

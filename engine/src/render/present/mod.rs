@@ -11,7 +11,7 @@ mod readback;
 mod surface;
 
 pub use compose::{FrameComposer, FrameTarget};
-pub use cpu_compose::compose_host_film;
+pub use cpu_compose::{catmull_rom, compose_host_film};
 pub use cpu_overlay::CpuOverlay;
 pub use overlay::{OverlayPainter, TexturesToFree};
 pub use presenter::{Presented, Presenter};
