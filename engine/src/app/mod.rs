@@ -40,6 +40,7 @@ mod settings;
 pub mod shell;
 pub mod soak;
 mod state_hash;
+mod step_scene;
 mod stats;
 mod stats_overlay;
 pub mod steer;
