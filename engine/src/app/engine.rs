@@ -225,7 +225,8 @@ impl Engine {
         self.upkeep.light_group_on(group)
     }
 
-    /// Ray queries on the flattened scene as of the last sealed commit.
+    /// Ray queries on the flattened scene as of the last sealed commit (or, inside a frame's
+    /// fixed steps, as the previous step left it).
     pub fn queries(&self) -> Queries<'_> {
         self.upkeep.queries()
     }
