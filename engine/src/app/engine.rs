@@ -94,7 +94,9 @@ pub struct Engine {
     /// Checkpoints and level ends for the shell to save.
     pub(super) progress_events: Vec<ProgressEvent>,
     /// The world's transforms and the query scene are what the next fixed step needs: posed
-    /// with no interpolation after the last step (see `app/step_scene.rs`).
+    /// with no interpolation after the last step (see `app/step_scene.rs`). True at the start:
+    /// the first step sees the scene as it is (at every frame rate alike), and the first frame
+    /// does no upkeep twice.
     pub(super) step_scene_current: bool,
     /// What moved since the last commit (the cut is `cut`'s).
     pub(super) motion: Motion,
@@ -165,7 +167,7 @@ impl Engine {
             settings: Settings::default(),
             step_settings: Settings::default(),
             progress_events: Vec::new(),
-            step_scene_current: false,
+            step_scene_current: true,
             motion: Motion::default(),
         }
     }
