@@ -320,9 +320,10 @@ impl Upkeep {
         !self.groups_off.contains(&group)
     }
 
-    /// Ends the frame: rebuilds the TLAS and the light table if needed, and returns the
-    /// frame's writes, the header and the statistics. The scene is then what queries read.
-    pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
+    /// Rebuilds the TLAS if instances changed, so that queries see every change applied so
+    /// far; the writes stay pending for [`Upkeep::finish_frame`] (the light table too: queries
+    /// do not read it). For fixed steps between two commits (`Engine::frame`).
+    pub fn settle_queries(&mut self) {
         if self.tlas_dirty {
             let started = std::time::Instant::now();
             let bounds: Vec<Aabb> = self
@@ -342,6 +343,13 @@ impl Upkeep {
             self.stats.seconds += started.elapsed().as_secs_f64();
             self.tlas_dirty = false;
         }
+    }
+
+    /// Ends the frame: rebuilds the TLAS and the light table if needed, and returns the
+    /// frame's writes (every write since the last call, in order), the header and the
+    /// statistics. The scene is then what queries read.
+    pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
+        self.settle_queries();
         if self.lights_dirty {
             let counts: Vec<u32> = self
                 .rows

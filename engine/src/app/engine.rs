@@ -23,7 +23,7 @@ use super::step_input::StepInput;
 use crate::accel::Upkeep;
 use crate::assets::{CameraDesc, Model, RenderSettings, SkyDesc, SunDesc};
 use crate::audio::Audio;
-use crate::commit::PresentRequest;
+use crate::commit::{Motion, PresentRequest};
 use crate::ecs::ModelHandle;
 use crate::extract::Extractor;
 use crate::query::Queries;
@@ -93,6 +93,13 @@ pub struct Engine {
     pub(super) step_settings: Settings,
     /// Checkpoints and level ends for the shell to save.
     pub(super) progress_events: Vec<ProgressEvent>,
+    /// The world's transforms and the query scene are what the next fixed step needs: posed
+    /// with no interpolation after the last step (see `app/step_scene.rs`). True at the start:
+    /// the first step sees the scene as it is (at every frame rate alike), and the first frame
+    /// does no upkeep twice.
+    pub(super) step_scene_current: bool,
+    /// What moved since the last commit (the cut is `cut`'s).
+    pub(super) motion: Motion,
 }
 
 impl Engine {
@@ -160,6 +167,8 @@ impl Engine {
             settings: Settings::default(),
             step_settings: Settings::default(),
             progress_events: Vec::new(),
+            step_scene_current: true,
+            motion: Motion::default(),
         }
     }
 
@@ -218,7 +227,8 @@ impl Engine {
         self.upkeep.light_group_on(group)
     }
 
-    /// Ray queries on the flattened scene as of the last sealed commit.
+    /// Ray queries on the flattened scene as of the last sealed commit (or, inside a frame's
+    /// fixed steps, as the previous step left it).
     pub fn queries(&self) -> Queries<'_> {
         self.upkeep.queries()
     }

@@ -15,7 +15,7 @@ use super::shell::ProgressEvent;
 use super::waves::waves_system;
 use super::work::FrameWork;
 use crate::accel::UpkeepStats;
-use crate::audio::{PlayOptions, sync_emitters};
+use crate::audio::PlayOptions;
 use crate::commit::{Commit, Motion};
 use crate::ecs::propagate_transforms;
 use crate::scene::{SceneHeader, SceneWrite};
@@ -75,9 +75,12 @@ impl Engine {
             self.fixed_steps(game, frame_seconds)
         };
         timer.lap(Phase::Steps);
-        self.pose();
+        self.pose(self.clock.alpha(), self.time_seconds());
         timer.lap(Phase::Pose);
         let prepared = self.upkeep_scene();
+        // Posed with no interpolation, the world and the query scene are what the next step
+        // needs (see `app/step_scene.rs`).
+        self.step_scene_current = self.clock.alpha() == 0.0;
         timer.lap(Phase::Upkeep);
         let (upkeep, work) = (prepared.stats, prepared.work);
         let commit = self.seal(prepared);
@@ -115,12 +118,18 @@ impl Engine {
         self.carry_out_commands();
     }
 
-    /// [`Phase::Steps`]: as many fixed steps as `frame_seconds` holds.
+    /// [`Phase::Steps`]: as many fixed steps as `frame_seconds` holds, each on the world and
+    /// the query scene as the previous step left them, however many steps the frame runs
+    /// (`app/step_scene.rs`).
     fn fixed_steps<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) -> u32 {
         let steps = self.clock.advance(frame_seconds);
         let first = self.clock.steps - u64::from(steps);
         for index in first..self.clock.steps {
+            if !self.step_scene_current {
+                self.settle_step_scene(index);
+            }
             self.fixed_step(game, index);
+            self.step_scene_current = false;
         }
         steps
     }
@@ -194,12 +203,10 @@ impl Engine {
     }
 
     /// [`Phase::Pose`]: the world as it is to be rendered — physics interpolated between the
-    /// last two steps (the clock's leftover fraction), level waves at the simulated time,
-    /// skinned meshes deformed, transforms propagated.
-    fn pose(&mut self) {
-        self.physics
-            .interpolate(&mut self.world, self.clock.alpha());
-        let seconds = self.time_seconds();
+    /// last two steps by `alpha` (the clock's leftover fraction of a step, 0 to 1), level waves
+    /// at `seconds` of simulated time, skinned meshes deformed, transforms propagated.
+    pub(super) fn pose(&mut self, alpha: f64, seconds: f64) {
+        self.physics.interpolate(&mut self.world, alpha);
         waves_system(&mut self.world, seconds);
         deform_skinned(&mut self.world);
         propagate_transforms(&mut self.world);
@@ -209,27 +216,13 @@ impl Engine {
     /// refits and rebuilds, TLAS, light table), the render-space origin near the camera, and
     /// the listener and emitters following their entities.
     fn upkeep_scene(&mut self) -> Prepared {
-        let extracted = self.extractor.extract(&mut self.world);
-        let objects = !extracted.changes.is_empty();
-        self.upkeep.apply_changes(extracted.changes);
-        if let Some(camera) = extracted.camera {
-            self.camera = camera;
-        }
-        self.follow_with_audio();
-        // Camera-relative rendering: keep render space's origin near the camera.
-        self.upkeep
-            .follow_camera(glam::Vec3::from(self.camera.position));
+        self.update_scene();
         let (writes, header, stats) = self.upkeep.finish_frame();
         let mut work = FrameWork::of(&self.world, &self.upkeep, &stats, &self.environment.render);
         work.awake_bodies = self.physics.awake_bodies() as u32;
         let motion = Motion {
             cut: std::mem::take(&mut self.cut),
-            camera: if extracted.camera.is_some() {
-                extracted.camera_motion
-            } else {
-                0.0
-            },
-            objects,
+            ..std::mem::take(&mut self.motion)
         };
         Prepared {
             writes,
@@ -347,21 +340,5 @@ impl Engine {
         if let Err(e) = self.audio.play(&planned.sound, options) {
             log::warn!("sound {name:?}: {e}");
         }
-    }
-
-    /// Puts the listener at the camera and moves spatial emitters with their entities.
-    fn follow_with_audio(&mut self) {
-        let c = &self.camera;
-        let position = glam::Vec3::from(c.position);
-        let forward = (glam::Vec3::from(c.look_at) - position).normalize_or_zero();
-        let right = forward.cross(glam::Vec3::from(c.up)).normalize_or_zero();
-        if forward != glam::Vec3::ZERO && right != glam::Vec3::ZERO {
-            // The listener looks along its local −Z with +Y up (right-handed).
-            let up = right.cross(forward);
-            let basis = glam::Mat3::from_cols(right, up, -forward);
-            self.audio
-                .set_listener(position, glam::Quat::from_mat3(&basis).normalize());
-        }
-        sync_emitters(&mut self.audio, &mut self.world);
     }
 }

@@ -111,7 +111,8 @@ impl<F: FnMut(&mut Step<'_>)> Game for F {
 /// What a fixed-step hook gets: the world, ray queries, physics and input, for one step.
 pub struct Step<'a> {
     pub world: &'a mut World,
-    /// Ray queries on the flattened scene of the last sealed commit (full detail).
+    /// Ray queries on the flattened scene (full detail) as the previous fixed step left it,
+    /// physics not interpolated, however many steps the frame runs (`app/step_scene.rs`).
     pub queries: Queries<'a>,
     /// Characters, carrying, bodies; stepped after `fixed_step` returns.
     pub physics: &'a mut PhysicsWorld,

@@ -44,6 +44,7 @@ mod stats;
 mod stats_overlay;
 pub mod steer;
 mod step_input;
+mod step_scene;
 mod stored;
 mod user_dirs;
 mod waves;

@@ -9,7 +9,9 @@
 //! render thread … render N−1 │ apply commit N │ render N │ …
 //! ```
 //! The hand-off is the only synchronisation point; the game rules of frame N+1 run while frame
-//! N renders. Ray queries read the scene as of the last sealed commit.
+//! N renders. Ray queries read the scene as of the last sealed commit; in a frame of several
+//! fixed steps the scene is settled again (posed, applied, TLAS) before each step but the
+//! first (`app/step_scene.rs`), so every step's queries see the previous step's world.
 //!
 //! Owns: [`Phase`] (the one list: its order is the frame's order, its names label the timers in
 //! reports, the stats overlay and `docs/PERFORMANCE.md`), [`PhaseTimes`] and [`FrameReport`].

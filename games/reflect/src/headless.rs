@@ -117,24 +117,40 @@ impl RunSummary {
     }
 }
 
-/// Replays `replay` on `world` headless; errors when the recording does not fit the world.
+/// Replays `replay` on `world` headless at 60 frames per second (one fixed step a frame);
+/// errors when the recording does not fit the world.
 pub fn play_replay(world: &ReflectWorld, replay: &Path) -> anyhow::Result<RunSummary> {
+    play_replay_at(world, replay, 1.0 / 60.0, 0)
+}
+
+/// Replays `replay` on `world` headless in frames of `frame_seconds` (seconds of wall-clock
+/// time each; 0.1 runs six 1/60 s steps a frame), then goes on with frames without input
+/// until at least `at_least_steps` fixed steps ran (so runs at different frame rates can be
+/// compared after the same steps); errors when the recording does not fit the world.
+pub fn play_replay_at(
+    world: &ReflectWorld,
+    replay: &Path,
+    frame_seconds: f64,
+    at_least_steps: u64,
+) -> anyhow::Result<RunSummary> {
     let (replay, start) = open_replay(world, replay)?;
-    let steps = replay.steps() + 1;
+    let recorded = replay.steps() + 1;
     let mut game = ReflectGame::new(world.clone(), start);
     let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     engine.set_step_input(StepInput::Replay(replay));
-    for _ in 0..steps {
-        engine.frame(1.0 / 60.0, &mut game)?;
+    // Every frame runs at least one step (`frame_seconds` ≥ 1/60 s is the caller's to keep).
+    let most_frames = recorded.max(at_least_steps) + 1;
+    for _ in 0..most_frames {
+        engine.frame(frame_seconds, &mut game)?;
         let _ = engine.rendered();
-        if engine.replay_finished() {
+        if engine.replay_finished() && engine.clock().steps >= at_least_steps {
             break;
         }
     }
     if !engine.replay_finished() {
-        bail!("the replay did not finish in {steps} steps");
+        bail!("the replay did not finish in {most_frames} frames");
     }
     let summary = RunSummary {
         start,
