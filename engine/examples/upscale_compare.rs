@@ -81,7 +81,10 @@ fn main() -> anyhow::Result<()> {
         })
         .collect();
     ms.sort_by(f64::total_cmp);
-    println!("compose 320×180 → 1280×720 (bicubic, tonemap, sRGB): median {:.2} ms", ms[10]);
+    println!(
+        "compose 320×180 → 1280×720 (bicubic, tonemap, sRGB): median {:.2} ms",
+        ms[10]
+    );
     // The door and the plate: 320×180 window pixels, shown 2×.
     let (cx, cy, cw, ch) = (480u32, 240u32, 320u32, 180u32);
     let mut out = image::RgbImage::new(cw * 4 + 8, ch * 2);

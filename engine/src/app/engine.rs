@@ -98,6 +98,9 @@ pub struct Engine {
     /// the first step sees the scene as it is (at every frame rate alike), and the first frame
     /// does no upkeep twice.
     pub(super) step_scene_current: bool,
+    /// Whether frames of several steps settle the world and the query scene before each extra
+    /// step (`app/step_scene.rs`; [`Engine::settle_every_step`]).
+    pub(super) settle_steps: bool,
     /// What moved since the last commit (the cut is `cut`'s).
     pub(super) motion: Motion,
 }
@@ -168,6 +171,7 @@ impl Engine {
             step_settings: Settings::default(),
             progress_events: Vec::new(),
             step_scene_current: true,
+            settle_steps: false,
             motion: Motion::default(),
         }
     }
@@ -225,6 +229,16 @@ impl Engine {
     /// Whether light group `group` is on (groups start on).
     pub fn light_group_on(&self, group: u32) -> bool {
         self.upkeep.light_group_on(group)
+    }
+
+    /// From now on, every fixed step sees the world posed and the query scene as the previous
+    /// step left them, however many steps a frame runs: the same input gives the same outcome
+    /// at 10 fps as at 60 fps (`app/step_scene.rs`). It costs an upkeep (extraction, changed
+    /// BLAS refits, a TLAS build) per extra step of a frame, so only games whose rules query the
+    /// scene or read positions in their steps turn it on (the first-person game does); scripted
+    /// runs and captures keep one upkeep a frame.
+    pub fn settle_every_step(&mut self, on: bool) {
+        self.settle_steps = on;
     }
 
     /// Ray queries on the flattened scene as of the last sealed commit (or, inside a frame's

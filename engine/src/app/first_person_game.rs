@@ -222,6 +222,9 @@ impl FirstPersonGame {
 impl Game for FirstPersonGame {
     fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {
         engine.set_actions(ActionSet::standard());
+        // The player's focus and the level's lasers query the scene in steps: the same input
+        // must give the same outcome at any frame rate.
+        engine.settle_every_step(true);
         self.spawned = engine.spawn_level(&self.level);
         let camera = self.level.scene.camera;
         let player = FirstPersonPlayer::at_view(engine.world_mut(), &camera, self.config)

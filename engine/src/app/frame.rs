@@ -118,14 +118,14 @@ impl Engine {
         self.carry_out_commands();
     }
 
-    /// [`Phase::Steps`]: as many fixed steps as `frame_seconds` holds, each on the world and
-    /// the query scene as the previous step left them, however many steps the frame runs
-    /// (`app/step_scene.rs`).
+    /// [`Phase::Steps`]: as many fixed steps as `frame_seconds` holds; with
+    /// [`Engine::settle_every_step`], each on the world and the query scene as the previous step
+    /// left them, however many steps the frame runs (`app/step_scene.rs`).
     fn fixed_steps<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) -> u32 {
         let steps = self.clock.advance(frame_seconds);
         let first = self.clock.steps - u64::from(steps);
         for index in first..self.clock.steps {
-            if !self.step_scene_current {
+            if self.settle_steps && !self.step_scene_current {
                 self.settle_step_scene(index);
             }
             self.fixed_step(game, index);
