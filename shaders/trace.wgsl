@@ -1,7 +1,7 @@
 // The path tracing pass: one invocation per pixel traces `frame.spp` samples and adds their
 // radiance to the film. Twin of engine/src/render/cpu/integrator.rs (same algorithm, same RNG
 // draws in the same order). Composed after shared/{types,bindings,rng,sampling,microfacet,
-// bsdf,texture,traverse,surface}.wgsl and shared/light_tree.wgsl by
+// bsdf,texture,traverse,surface,lines}.wgsl and shared/light_tree.wgsl by
 // engine/src/render/gpu/shaders.rs.
 
 const FAR: f32 = 3.0e38;
@@ -228,6 +228,12 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var tracing_shadow = false;
     var have_next = true;
     var next_ray = ray;
+    // The path so far is the camera ray and perfect mirror or glass turns: it sees line
+    // emitters prefiltered over the pixel, `travelled` metres from the camera (lines.wgsl).
+    var camera_chain = has_lines();
+    var travelled = 0.0;
+    let pixel_angle = LINE_FOOTPRINT_PIXELS * 2.0 * length(frame.camera_up) / f32(max(frame.height, 1u));
+    var crossings = 0u;
     loop {
         var current = next_ray;
         if (tracing_shadow) {
@@ -250,6 +256,21 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             continue;
         }
         ray = current;
+        if (camera_chain) {
+            if (hit.found && crossings < MAX_LINE_CROSSINGS && is_line(hit)) {
+                // Through the line prism (from the one trace call site): the same ray past it.
+                crossings += 1u;
+                next_ray = Ray(current.origin, hit.t, current.direction, current.t_max);
+                continue;
+            }
+            crossings = 0u;
+            var t_end = LINE_FAR;
+            if (hit.found) {
+                t_end = hit.t;
+            }
+            result += throughput * seen_lines(ray, t_end, travelled, pixel_angle);
+            travelled += t_end;
+        }
         if (!hit.found) {
             var escaped = sky_radiance(ray.direction);
             if (frame.sun_solid_angle > 0.0 && dot(ray.direction, frame.sun_direction) >= frame.sun_cos_radius) {
@@ -330,6 +351,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             } else {
                 last_pdf = s.pdf;
                 last_delta = s.delta;
+                camera_chain = camera_chain && s.delta;
                 last_position = surface.position;
                 last_normal = ns;
                 next_ray = Ray(offset_origin(surface.position, select(ng, -ng, below)), 0.0, wi, FAR);

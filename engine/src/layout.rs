@@ -181,6 +181,23 @@ pub struct GpuVertex {
 }
 const _: () = assert!(size_of::<GpuVertex>() == 48);
 
+/// A thin emissive line seen from the camera (one per instance of a [`MATERIAL_FLAG_LINE`]
+/// material: the segment from the instance's origin to its +z end, in render space, metres).
+/// Both tracers add its radiance prefiltered over the pixel's footprint (`render/cpu/lines.rs`,
+/// `shaders/shared/lines.wgsl`). 48 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuLine {
+    pub start: [f32; 3],
+    /// Half the line's width, metres (0: an unused slot).
+    pub radius: f32,
+    pub end: [f32; 3],
+    pub _padding: u32,
+    /// Emitted radiance, linear RGB (W·sr⁻¹·m⁻²); `w` unused.
+    pub radiance: [f32; 4],
+}
+const _: () = assert!(size_of::<GpuLine>() == 48);
+
 /// `GpuMaterial::kind`: Lambertian diffuse, two-sided.
 pub const MATERIAL_DIFFUSE: u32 = 0;
 /// `GpuMaterial::kind`: conductor; GGX microfacets, a perfect mirror when `roughness == 0`.
@@ -195,6 +212,11 @@ pub const MATERIAL_METAL_ROUGH: u32 = 3;
 
 /// `GpuMaterial::flags`: emits from both faces (otherwise only along the geometric normal).
 pub const MATERIAL_FLAG_TWO_SIDED_EMISSION: u32 = 1;
+/// `GpuMaterial::flags`: a thin line emitter (a laser beam, `assets::Material::line`). Rays from
+/// the camera (directly or through perfect mirrors and smooth glass) pass through its triangles
+/// and see the prefiltered line of [`GpuLine`] instead, so it reads as a continuous line at any
+/// resolution; every other ray (bounces off rough surfaces, light sampling) meets the triangles.
+pub const MATERIAL_FLAG_LINE: u32 = 2;
 
 /// A material as the tracers evaluate it. Texture fields index the texture table or are
 /// [`INVALID`]. Texture lookups multiply the matching factor.

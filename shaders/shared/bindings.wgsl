@@ -23,3 +23,6 @@
 // The hit lookup: [0] instances covered, [1 + i] instance i's table (INVALID: none), then per
 // mesh-local triangle its leaf node or INVALID.
 @group(0) @binding(14) var<storage, read> light_lookup: array<u32>;
+// The line emitters the camera sees prefiltered (engine/src/scene/lines.rs): MAX_LINES + 1
+// entries, the scene's first; a zero radius ends the list.
+@group(0) @binding(15) var<storage, read> lines: array<GpuLine>;

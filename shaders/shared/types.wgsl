@@ -19,6 +19,9 @@ const MATERIAL_CONDUCTOR: u32 = 1u;
 const MATERIAL_DIELECTRIC: u32 = 2u;
 const MATERIAL_METAL_ROUGH: u32 = 3u;
 const MATERIAL_FLAG_TWO_SIDED_EMISSION: u32 = 1u;
+const MATERIAL_FLAG_LINE: u32 = 2u;
+// Most line emitters a render sees (engine/src/scene/lines.rs MAX_LINES).
+const MAX_LINES: u32 = 256u;
 
 const WRAP_REPEAT: u32 = 0u;
 const WRAP_CLAMP: u32 = 1u;
@@ -126,6 +129,15 @@ struct GpuLight {
 
 // One node of the light tree: box, power and normal cone of the emitters below. Interior: the
 // first child is the next node, the second `child`; leaf: `child` is the light index.
+// A thin emissive line seen from the camera (engine/src/layout.rs GpuLine).
+struct GpuLine {
+    start: vec3<f32>,
+    radius: f32,
+    end: vec3<f32>,
+    _padding: u32,
+    radiance: vec4<f32>,
+}
+
 struct GpuLightNode {
     bounds_min: vec3<f32>,
     phi: f32,

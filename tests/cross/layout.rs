@@ -92,6 +92,13 @@ fn rust_layouts() -> Vec<RustLayout> {
             alias_index,
             _padding
         }),
+        rust_layout!(GpuLine {
+            start,
+            radius,
+            end,
+            _padding,
+            radiance
+        }),
         rust_layout!(GpuLightNode {
             bounds_min,
             phi,
@@ -239,6 +246,12 @@ fn rust_and_wgsl_constants_agree() {
         ("METHOD_LIGHT_TREE", METHOD_LIGHT_TREE),
         ("LIGHT_NODE_LEAF", LIGHT_NODE_LEAF),
         ("LIGHT_NODE_TWO_SIDED", LIGHT_NODE_TWO_SIDED),
+        (
+            "MATERIAL_FLAG_TWO_SIDED_EMISSION",
+            MATERIAL_FLAG_TWO_SIDED_EMISSION,
+        ),
+        ("MATERIAL_FLAG_LINE", MATERIAL_FLAG_LINE),
+        ("MAX_LINES", candela::scene::MAX_LINES as u32),
     ] {
         assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
     }

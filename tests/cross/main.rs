@@ -8,6 +8,7 @@
 
 mod accuracy;
 mod analytic;
+mod beams;
 mod bvh;
 mod capture_budget;
 mod demo;

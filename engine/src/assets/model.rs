@@ -81,6 +81,10 @@ pub struct Material {
     pub emission_texture: Option<TextureRef>,
     /// Emits from both faces (glTF `doubleSided`), otherwise along the geometric normal only.
     pub two_sided_emission: bool,
+    /// A thin line emitter (a laser beam): seen from the camera as a prefiltered line, so it
+    /// stays a continuous line at any resolution (`layout::MATERIAL_FLAG_LINE`). Only for
+    /// emitters whose mesh is the unit beam prism (`sim::triggers::beam_model`).
+    pub line: bool,
     /// Perceptual roughness in [0, 1] (GGX α = roughness²).
     pub roughness: f32,
     pub metallic: f32,
@@ -108,6 +112,7 @@ impl Default for Material {
             emission: Vec3::ZERO,
             emission_texture: None,
             two_sided_emission: false,
+            line: false,
             roughness: 1.0,
             metallic: 0.0,
             metal_rough_texture: None,

@@ -10,8 +10,8 @@ use half::f16;
 use crate::assets::{Material, MaterialKind, Model, Texture, Wrap};
 use crate::layout::{
     GpuMaterial, GpuTexture, INVALID, MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_DIFFUSE,
-    MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH, TEXTURE_FLAG_NEAREST, WRAP_CLAMP,
-    WRAP_MIRROR, WRAP_REPEAT,
+    MATERIAL_FLAG_LINE, MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH,
+    TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR, WRAP_REPEAT,
 };
 
 fn wrap_bits(w: Wrap) -> u32 {
@@ -185,7 +185,7 @@ pub fn to_gpu_material(m: &Material, texture_base: u32, texture_means: &[f32]) -
             MATERIAL_FLAG_TWO_SIDED_EMISSION
         } else {
             0
-        },
+        } | if m.line { MATERIAL_FLAG_LINE } else { 0 },
         base_color_texture: tex(m.base_color_texture),
         normal_texture: tex(m.normal_texture),
         emission_texture,

@@ -51,6 +51,7 @@ pub(super) fn trace_unit(
         scene,
         &tracer,
         u,
+        &scene.lines(),
         0..u.width,
         unit_rows(unit, u.height),
         &mut counts,

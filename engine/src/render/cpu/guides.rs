@@ -15,6 +15,7 @@
 use glam::Vec3;
 use rayon::prelude::*;
 
+use super::lines::past_lines;
 use super::microfacet::reflect;
 use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{GpuFrameUniforms, MATERIAL_CONDUCTOR};
@@ -56,7 +57,9 @@ fn guide_pixel(
     let mut first: Option<(Vec3, f32, u32, bool)> = None;
     let mut tint = Vec3::ONE;
     for k in 0..=MAX_SPECULAR {
-        let Some(hit) = tracer.closest(&ray) else {
+        // Line emitters are seen prefiltered, not as surfaces (`lines.rs`): look past them.
+        let hit = tracer.closest(&ray);
+        let Some(hit) = past_lines(scene, tracer, &mut ray, hit) else {
             break;
         };
         let surface = resolve(scene, &hit, ray.direction);

@@ -5,20 +5,22 @@
 //! table, uniformly, or by importance from the light tree (`light_tree.rs`); point uniform on
 //! the triangle) and on the sun, combined with BSDF sampling by multiple importance
 //! sampling (power heuristic); Russian roulette after `roulette_start` scattering events;
-//! Beer–Lambert absorption inside dielectrics; sky radiance for escaping rays.
+//! Beer–Lambert absorption inside dielectrics; sky radiance for escaping rays; line emitters
+//! seen prefiltered along camera rays and their perfect specular turns (`lines.rs`).
 //! Must not: write the film or know about tiles and threads.
 
 use glam::{Vec2, Vec3};
 
 use super::bsdf::Bsdf;
+use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::rng::Rng;
 use super::sampling::{
     basis, concentric_disc, power_heuristic, to_local, to_world, uniform_cone, uniform_triangle,
 };
 use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{
-    GpuFrameUniforms, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE,
-    SKY_GRADIENT,
+    GpuFrameUniforms, GpuLine, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS,
+    METHOD_NEE, SKY_GRADIENT,
 };
 use crate::scene::RenderScene;
 use crate::trace::{Ray, TraceScene};
@@ -83,11 +85,14 @@ pub fn camera_ray(u: &GpuFrameUniforms, px: u32, py: u32, rng: &mut Rng) -> Ray 
     }
 }
 
-/// One sample's radiance estimate (linear RGB) for pixel (px, py).
+/// One sample's radiance estimate (linear RGB) for pixel (px, py). `lines` are the scene's line
+/// emitters ([`RenderScene::lines`]), seen prefiltered by the camera (`lines.rs`).
+#[allow(clippy::too_many_arguments)]
 pub fn radiance(
     scene: &RenderScene,
     tracer: &TraceScene,
     u: &GpuFrameUniforms,
+    lines: &[GpuLine],
     px: u32,
     py: u32,
     sample: u32,
@@ -108,8 +113,21 @@ pub fn radiance(
     let sun_direction = Vec3::from(u.sun_direction);
     let sun_radiance = Vec3::from(u.sun_radiance);
     let mut bounce = 0u32;
+    // The path so far is the camera ray and perfect mirror or glass turns: it sees line
+    // emitters prefiltered over the pixel, `travelled` metres from the camera.
+    let mut camera_chain = !lines.is_empty();
+    let mut travelled = 0.0f32;
+    let pixel_angle =
+        LINE_FOOTPRINT_PIXELS * 2.0 * Vec3::from(u.camera_up).length() / u.height.max(1) as f32;
     loop {
-        let Some(hit) = tracer.closest(&ray) else {
+        let mut hit = tracer.closest(&ray);
+        if camera_chain {
+            hit = past_lines(scene, tracer, &mut ray, hit);
+            let t_end = hit.map_or(f32::INFINITY, |h| h.t);
+            result += throughput * seen_lines(lines, &ray, t_end, travelled, pixel_angle);
+            travelled += t_end;
+        }
+        let Some(hit) = hit else {
             let mut escaped = sky_radiance(u, ray.direction);
             if sun_solid_angle > 0.0 && ray.direction.dot(sun_direction) >= u.sun_cos_radius {
                 let w = bsdf_hit_weight(u.method, last_delta, last_pdf, 1.0 / sun_solid_angle);
@@ -208,6 +226,7 @@ pub fn radiance(
         }
         last_pdf = s.pdf;
         last_delta = s.delta;
+        camera_chain &= s.delta;
         last_position = surface.position;
         last_normal = ns;
         let side = if transmitted { -ng } else { ng };

@@ -5,6 +5,7 @@ pub mod bsdf;
 pub mod guides;
 pub mod integrator;
 pub mod light_tree;
+pub mod lines;
 pub mod microfacet;
 pub mod rng;
 pub mod sampling;

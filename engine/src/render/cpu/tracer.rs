@@ -12,7 +12,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::integrator::{RayCounts, radiance};
-use crate::layout::GpuFrameUniforms;
+use crate::layout::{GpuFrameUniforms, GpuLine};
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
 use crate::scene::RenderScene;
@@ -29,6 +29,7 @@ pub fn trace_rect(
     scene: &RenderScene,
     tracer: &TraceScene<'_>,
     u: &GpuFrameUniforms,
+    lines: &[GpuLine],
     xs: Range<u32>,
     ys: Range<u32>,
     counts: &mut RayCounts,
@@ -38,7 +39,7 @@ pub fn trace_rect(
         for x in xs.clone() {
             let mut sum = Vec3::ZERO;
             for s in 0..u.spp {
-                sum += radiance(scene, tracer, u, x, y, u.sample_base + s, counts);
+                sum += radiance(scene, tracer, u, lines, x, y, u.sample_base + s, counts);
             }
             sums.push(sum);
         }
@@ -93,13 +94,14 @@ impl Tracer for CpuTracer {
         let tiles_x = u.width.div_ceil(TILE);
         let tiles_y = u.height.div_ceil(TILE);
         let tracer = scene.trace_scene();
+        let lines = scene.lines();
         let results: Vec<(u32, Vec<Vec3>, RayCounts)> = (0..tiles_x * tiles_y)
             .into_par_iter()
             .map(|tile| {
                 let (x0, y0) = ((tile % tiles_x) * TILE, (tile / tiles_x) * TILE);
                 let (x1, y1) = ((x0 + TILE).min(u.width), (y0 + TILE).min(u.height));
                 let mut counts = RayCounts::default();
-                let sums = trace_rect(scene, &tracer, u, x0..x1, y0..y1, &mut counts);
+                let sums = trace_rect(scene, &tracer, u, &lines, x0..x1, y0..y1, &mut counts);
                 (tile, sums, counts)
             })
             .collect();

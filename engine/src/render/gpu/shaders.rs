@@ -32,6 +32,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/texture.wgsl"),
     shader!("shared/traverse.wgsl"),
     shader!("shared/surface.wgsl"),
+    shader!("shared/lines.wgsl"),
 ];
 
 /// The path tracing pass (entry point `trace_main`).

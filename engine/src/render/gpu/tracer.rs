@@ -13,10 +13,10 @@ use wgpu::util::DeviceExt;
 
 use super::context::GpuContext;
 use super::shaders::{TRACE, compose};
-use crate::layout::{GpuFrameUniforms, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
+use crate::layout::{GpuFrameUniforms, GpuLine, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
-use crate::scene::RenderScene;
+use crate::scene::{MAX_LINES, RenderScene};
 
 /// Workgroup edge of `trace_main` (8×8 invocations).
 pub(super) const WORKGROUP: u32 = 8;
@@ -27,7 +27,8 @@ pub struct GpuTracer {
     pub(super) pipeline: wgpu::ComputePipeline,
     pub(super) layout: wgpu::BindGroupLayout,
     /// Uniforms, then the nine scene buffers (bindings 0..=9), then the light tree's nodes and
-    /// lookup (bindings 13 and 14): binding [`scene_binding`]`(i)` of each index `i`.
+    /// lookup (bindings 13 and 14) and the line emitters (15, rewritten whole on each update):
+    /// binding [`scene_binding`]`(i)` of each index `i`.
     pub(super) scene_buffers: Vec<wgpu::Buffer>,
     pub(super) film: Option<FilmBuffers>,
     pub(super) samples: u32,
@@ -45,13 +46,21 @@ pub(super) struct FilmBuffers {
     pub(super) bind_group: wgpu::BindGroup,
 }
 
-/// The binding of `scene_buffers[index]`: 0..=9, then 13, 14 (10..=12 are the film's).
+/// The binding of `scene_buffers[index]`: 0..=9, then 13, 14, 15 (10..=12 are the film's).
 pub(super) fn scene_binding(index: usize) -> u32 {
     if index <= 9 {
         index as u32
     } else {
         index as u32 + 3
     }
+}
+
+/// The line emitters' buffer (binding 15): always [`MAX_LINES`]` + 1` lines, the scene's
+/// first, then zeroed ones (a zero radius ends the list in `shaders/shared/lines.wgsl`).
+pub(super) fn line_bytes(scene: &RenderScene) -> Vec<u8> {
+    let mut lines = scene.lines();
+    lines.resize(MAX_LINES + 1, GpuLine::default());
+    bytemuck::cast_slice(&lines).to_vec()
 }
 
 /// Bytes of `data`, or one zeroed element when it is empty (bindings may not be empty).
@@ -68,7 +77,7 @@ impl GpuTracer {
     pub fn new(context: Arc<GpuContext>, scene: &RenderScene) -> Result<Self, RenderError> {
         let device = &context.device;
         let max_binding = context.limits.max_storage_buffer_binding_size as u64;
-        let contents: [(&str, Vec<u8>); 11] = [
+        let contents: [(&str, Vec<u8>); 12] = [
             ("nodes", non_empty(&scene.nodes)),
             ("blocks", non_empty::<GpuTri4>(&scene.blocks)),
             ("instances", non_empty(&scene.instances)),
@@ -80,6 +89,7 @@ impl GpuTracer {
             ("lights", non_empty(&scene.lights.lights)),
             ("light nodes", non_empty(&scene.lights.tree.nodes)),
             ("light lookup", non_empty(&scene.lights.tree.lookup)),
+            ("lines", line_bytes(scene)),
         ];
         for (name, bytes) in &contents {
             if bytes.len() as u64 > max_binding {
@@ -133,6 +143,7 @@ impl GpuTracer {
         entries.push(storage(12, true));
         entries.push(storage(13, true));
         entries.push(storage(14, true));
+        entries.push(storage(15, true));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("trace bindings"),
             entries: &entries,

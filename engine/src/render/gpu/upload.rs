@@ -10,6 +10,9 @@ use crate::render::tracer::RenderError;
 use crate::scene::RenderScene;
 use crate::scene::SceneWrite;
 
+/// Index of the line emitters' buffer in `GpuTracer::scene_buffers` (binding 15).
+const LINES: usize = 12;
+
 /// The write of `data` at element `first` of binding `index`: the binding, the byte offset (from
 /// the element type's size) and the bytes.
 fn at<T: bytemuck::Pod>(index: usize, first: u32, data: &[T]) -> (usize, u64, &[u8]) {
@@ -21,11 +24,11 @@ fn at<T: bytemuck::Pod>(index: usize, first: u32, data: &[T]) -> (usize, u64, &[
 }
 
 impl GpuTracer {
-    /// Applies `writes` (already applied to `scene`, which is unused here but kept for symmetry
-    /// with the CPU tracer) to the GPU buffers.
+    /// Applies `writes` (already applied to `scene`) to the GPU buffers, and rewrites the line
+    /// emitters from `scene`.
     pub(super) fn upload(
         &mut self,
-        _scene: &RenderScene,
+        scene: &RenderScene,
         writes: &[SceneWrite],
     ) -> Result<(), RenderError> {
         let mut grown = false;
@@ -55,6 +58,13 @@ impl GpuTracer {
             self.context
                 .queue
                 .write_buffer(&self.scene_buffers[index], offset, bytes);
+        }
+        if !writes.is_empty() {
+            // The line emitters follow the instances and materials: rewritten whole (12 KiB).
+            let lines = super::tracer::line_bytes(scene);
+            self.context
+                .queue
+                .write_buffer(&self.scene_buffers[LINES], 0, &lines);
         }
         if grown {
             self.rebind();
@@ -88,6 +98,7 @@ impl GpuTracer {
                     "lights",
                     "light nodes",
                     "light lookup",
+                    "lines",
                 ][index],
             ),
             size: size.next_multiple_of(4),

@@ -1,5 +1,6 @@
 //! Visible laser beams: each straight piece of a [`LaserPath`] drawn as a thin emissive square
-//! prism, so the beam shows and lights the rooms it crosses.
+//! prism, so the beam shows and lights the rooms it crosses. Its material is a line emitter
+//! (`Material::line`): the camera sees it as a prefiltered line, continuous at any resolution.
 //!
 //! Owns: the unit beam model ([`beam_model`]: one per laser, for its colour), the pool of
 //! segment entities on each laser ([`BeamPool`], [`BeamSegment`]) and placing them
@@ -72,6 +73,8 @@ pub fn beam_model(beam: &PlannedBeam) -> Model {
             kind: MaterialKind::Diffuse,
             base_color: Vec3::ZERO,
             emission: beam.radiance,
+            // Seen from the camera as a prefiltered line: continuous at any resolution.
+            line: true,
             ..Default::default()
         }],
         textures: Vec::new(),
