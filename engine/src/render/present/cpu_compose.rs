@@ -46,12 +46,6 @@ fn finite(c: Vec3) -> Vec3 {
         .clamp(Vec3::splat(-1e30), Vec3::splat(1e30))
 }
 
-/// One tonemapped channel as an 8-bit sRGB value.
-fn encode(x: f32, table: &[u8; SRGB_TABLE]) -> u8 {
-    let x = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
-    table[(x * (SRGB_TABLE - 1) as f32 + 0.5) as usize]
-}
-
 /// Catmull-Rom weights of the four film pixels at `base − 1 … base + 2` for a sample `t` ∈ [0, 1)
 /// past `base` (they sum to 1; `t = 0` gives `[0, 1, 0, 0]`, so equal sizes copy exactly). The
 /// same cubic as `catmull_rom` in `shaders/present.wgsl`.
@@ -105,15 +99,23 @@ pub fn compose_host_film(
     let filmic = tonemap.filmic;
     let table = srgb_table();
     let fw = film.width as usize;
-    // Each film pixel made finite once (the window has several pixels per film pixel).
-    let texels: Vec<Vec3> = film.mean[..fw * film.height as usize]
-        .par_iter()
-        .map(|&c| finite(c))
-        .collect();
-    // Across first: each film row widened to the window's width (4 taps a pixel), then down.
-    let mut wide = vec![Vec3::ZERO; w * film.height as usize];
+    let fh = film.height as usize;
+    // Each film pixel made finite once, in three planes (one per channel) so that the loops
+    // below run over contiguous floats (the compiler vectorises them).
+    let mut planes = vec![0.0f32; 3 * fw * fh];
+    {
+        let (r, gb) = planes.split_at_mut(fw * fh);
+        let (g, b) = gb.split_at_mut(fw * fh);
+        for (i, &c) in film.mean[..fw * fh].iter().enumerate() {
+            let c = finite(c);
+            (r[i], g[i], b[i]) = (c.x, c.y, c.z);
+        }
+    }
+    // Across first: each film row of each plane widened to the window's width (4 taps a
+    // pixel), then down. `wide` holds plane k's row y at `(k * fh + y) * w`.
+    let mut wide = vec![0.0f32; 3 * w * fh];
     wide.par_chunks_mut(w)
-        .zip(texels.par_chunks(fw))
+        .zip(planes.par_chunks(fw))
         .for_each(|(line, row)| {
             for (px, (taps, wx)) in line.iter_mut().zip(&columns) {
                 *px = row[taps[0]] * wx[0]
@@ -124,21 +126,32 @@ pub fn compose_host_film(
         });
     out.par_chunks_mut(w * 4)
         .zip(rows.par_iter())
-        .for_each(|(line, (taps, wy))| {
-            let lines = taps.map(|t| &wide[t * w..][..w]);
-            for (x, px) in line.chunks_exact_mut(4).enumerate() {
-                let mut c = (lines[0][x] * wy[0]
-                    + lines[1][x] * wy[1]
-                    + lines[2][x] * wy[2]
-                    + lines[3][x] * wy[3])
-                    * exposure;
-                if filmic {
-                    c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
+        .for_each_init(
+            || vec![0.0f32; 3 * w],
+            |sum, (line, (taps, wy))| {
+                for k in 0..3 {
+                    let at = |t: usize| &wide[(k * fh + t) * w..][..w];
+                    let (l0, l1, l2, l3) = (at(taps[0]), at(taps[1]), at(taps[2]), at(taps[3]));
+                    let s = &mut sum[k * w..][..w];
+                    for x in 0..w {
+                        let mut c = (l0[x] * wy[0] + l1[x] * wy[1] + l2[x] * wy[2] + l3[x] * wy[3])
+                            * exposure;
+                        if filmic {
+                            c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
+                        }
+                        // NaN (the filmic curve of a huge value) to 0, then [0, 1] → table index.
+                        let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
+                        s[x] = c * (SRGB_TABLE - 1) as f32 + 0.5;
+                    }
                 }
-                let [r, g, b] = c.to_array().map(|x| encode(x, table));
-                px.copy_from_slice(&if bgra { [b, g, r, 255] } else { [r, g, b, 255] });
-            }
-        });
+                let (r, gb) = sum.split_at(w);
+                let (g, b) = gb.split_at(w);
+                for (x, px) in line.chunks_exact_mut(4).enumerate() {
+                    let [r, g, b] = [r[x], g[x], b[x]].map(|i| table[i as usize]);
+                    px.copy_from_slice(&if bgra { [b, g, r, 255] } else { [r, g, b, 255] });
+                }
+            },
+        );
     out
 }
 
