@@ -3,7 +3,7 @@
 //! laser beams, and the rules that turn what happens in volumes into actions.
 //!
 //! Owns: the serde types of the level's `gameplay` section. Checking the names they use is
-//! `level::gameplay_check`; running them is `sim::triggers`. Must not: load files or spawn
+//! `level::validate_level` (and `level::plan_gameplay` resolves them); running them is `sim::triggers`. Must not: load files or spawn
 //! anything.
 //!
 //! Names refer to other items: instances by their `name`, level materials, sounds, clips and
