@@ -56,7 +56,7 @@ fn find(
 
 /// Resolves `level.gameplay` (read from `level_path`, which [`super::validate_level`] found no
 /// problem in), decoding its sounds from `root`.
-pub fn plan_gameplay(
+pub(super) fn plan_gameplay(
     level_path: &Path,
     level: &Level,
     root: &AssetRoot,

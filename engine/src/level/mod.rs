@@ -22,7 +22,6 @@ mod validate_gameplay;
 pub use body::{InstanceBody, resolve_body};
 pub use character::{PlayableCharacter, load_characters};
 pub use compose::{compose_levels, load_composed};
-pub use gameplay_plan::plan_gameplay;
 pub use item::ItemRef;
 pub use load::{PlayableLevel, level_problems, load_level, playable_from_level};
 pub use problem::LevelProblem;
