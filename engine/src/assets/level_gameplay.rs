@@ -3,8 +3,8 @@
 //! laser beams, and the rules that turn what happens in volumes into actions.
 //!
 //! Owns: the serde types of the level's `gameplay` section. Checking the names they use is
-//! `level::gameplay_check`; running them is `sim::triggers`. Must not: load files or spawn
-//! anything.
+//! `level::validate_level` (resolving them, `level/gameplay_plan.rs`); running them is
+//! `sim::triggers`. Must not: load files or spawn anything.
 //!
 //! Names refer to other items: instances by their `name`, level materials, sounds, clips and
 //! volumes by theirs. Units: seconds, metres, linear amplitude (volume 1 = as recorded).

@@ -11,14 +11,12 @@
 //! layer. See `docs/EDITOR.md`.
 
 mod check;
-mod check_gameplay;
 mod command;
 mod comment_scan;
 mod comments;
 mod document;
 mod fields;
 mod history;
-mod item;
 mod layout;
 mod pick;
 mod recovery;
@@ -29,14 +27,14 @@ mod state;
 pub mod ui;
 mod write;
 
-pub use check::{Problem, check_level, check_references};
+pub use crate::level::ItemRef;
+pub use check::{Problem, check_level, check_references, instance_to_select};
 pub use command::{
     Edit, EditError, InstanceField, LaserField, MaterialField, MergeKey, Shift, Touch, VolumeField,
 };
 pub use comments::{Anchored, Comments};
 pub use document::{Document, DocumentError};
 pub use history::{History, HistoryEntry};
-pub use item::ItemRef;
 pub use pick::{Picked, ViewBasis, pick, pixel_ray};
 pub use recovery::{
     RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,

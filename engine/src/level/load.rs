@@ -1,15 +1,20 @@
-//! Loading a level to play: what it renders (`assets::load_scene`), its bodies, its gameplay,
-//! and the check that its declared `needs` cover what it uses.
+//! Loading a level to play: the level's rules checked (`validate_level`), what it renders
+//! (`assets::load_scene`), its bodies, its gameplay, and the check that its declared `needs`
+//! cover what it uses.
 //!
-//! Owns: [`PlayableLevel`], [`load_level`] and [`playable_from_level`]. Every problem is an [`AssetError`] naming the
-//! level file and the item. Main thread (or a loader thread).
+//! Owns: [`PlayableLevel`], [`load_level`], [`playable_from_level`] and [`level_problems`].
+//! Every problem is an [`AssetError`] naming the level file and the item; [`level_problems`]
+//! gives the same problems typed ([`LevelProblem`]). Main thread (or a loader thread).
 //! Must not: spawn entities (`Engine::spawn_level` does) or touch the GPU.
 
 use std::path::Path;
 
 use super::body::{InstanceBody, resolve_body};
 use super::character::{PlayableCharacter, load_characters};
-use super::gameplay_check::plan_gameplay;
+use super::gameplay_plan::plan_gameplay;
+use super::item::ItemRef;
+use super::problem::LevelProblem;
+use super::validate::validate_level;
 use crate::assets::{
     AssetError, AssetResult, AssetRoot, Level, Needs, SceneDesc, scene_from_level,
 };
@@ -48,24 +53,63 @@ pub fn load_level(level_path: &Path, root: &AssetRoot) -> AssetResult<PlayableLe
     playable_from_level(level_path, &level, root)
 }
 
-/// [`load_level`] of an already parsed `level` (read from `level_path`).
+/// [`load_level`] of an already parsed `level` (read from `level_path`): the first problem
+/// [`validate_level`] finds, or the first the load finds, is the error.
 pub fn playable_from_level(
     level_path: &Path,
     level: &Level,
     root: &AssetRoot,
 ) -> AssetResult<PlayableLevel> {
+    load_checked(level_path, level, root).map_err(|failure| match failure {
+        LoadFailure::Problem(problem) => problem.into_error(level_path),
+        LoadFailure::Asset(error) => error,
+    })
+}
+
+/// Every problem that keeps `level` (as if read from `level_path`) from loading: all those
+/// [`validate_level`] finds, or else the first one the full load from `root` finds (models,
+/// bodies, sounds, clips, `needs`, characters). Empty: the level loads.
+pub fn level_problems(level_path: &Path, level: &Level, root: &AssetRoot) -> Vec<LevelProblem> {
+    let problems = validate_level(level);
+    if !problems.is_empty() {
+        return problems;
+    }
+    match load_checked(level_path, level, root) {
+        Ok(_) => Vec::new(),
+        Err(LoadFailure::Problem(problem)) => vec![problem],
+        Err(LoadFailure::Asset(AssetError::Level { message, .. })) => {
+            vec![LevelProblem::of_level(message)]
+        }
+        Err(LoadFailure::Asset(other)) => vec![LevelProblem::of_level(other.to_string())],
+    }
+}
+
+/// Why [`load_checked`] stopped: a problem of one item, or an error of the files it reads.
+#[derive(Debug, thiserror::Error)]
+enum LoadFailure {
+    #[error(transparent)]
+    Problem(#[from] LevelProblem),
+    #[error(transparent)]
+    Asset(#[from] AssetError),
+}
+
+fn load_checked(
+    level_path: &Path,
+    level: &Level,
+    root: &AssetRoot,
+) -> Result<PlayableLevel, LoadFailure> {
+    if let Some(problem) = validate_level(level).into_iter().next() {
+        return Err(problem.into());
+    }
     let scene = scene_from_level(level_path, level, root)?;
-    let level_error = |message: String| AssetError::Level {
-        path: level_path.to_path_buf(),
-        message,
-    };
     let mut bodies = Vec::with_capacity(level.instances.len());
     for (i, (entry, instance)) in level.instances.iter().zip(&scene.instances).enumerate() {
         let body = match (&entry.body, scene.models.get(instance.model)) {
             (Some(body), Some(model)) => Some(
                 resolve_body(body, model, instance.world_from_model).map_err(|message| {
                     let name = entry.name.as_deref().unwrap_or(&entry.model);
-                    level_error(format!("instance {i} ({name:?}): body: {message}"))
+                    let message = format!("instance {i} ({name:?}): body: {message}");
+                    LevelProblem::new(ItemRef::Instance(i), "body", message)
                 })?,
             ),
             _ => None,

@@ -183,7 +183,7 @@ fn saving_refuses_unresolved_references_and_names_each_item() -> anyhow::Result<
     let items: Vec<_> = problems.iter().map(|p| p.item).collect();
     assert_eq!(
         items,
-        [Some(ItemRef::Instance(3)), Some(ItemRef::Rule(0))],
+        [ItemRef::Instance(3), ItemRef::Rule(0)],
         "{problems:?}"
     );
     assert!(
@@ -225,12 +225,7 @@ fn the_engines_own_load_refuses_what_the_reference_check_cannot_see() -> anyhow:
     assert_eq!(check_references(&level), []);
     let problems = check_level(&path, &level, Some(&root));
     assert_eq!(problems.len(), 1, "{problems:?}");
-    assert_eq!(
-        problems[0].item,
-        Some(ItemRef::Instance(9)),
-        "{}",
-        problems[0]
-    );
+    assert_eq!(problems[0].item, ItemRef::Instance(9), "{}", problems[0]);
     Ok(())
 }
 

@@ -112,20 +112,17 @@ impl EditTarget {
         let check = Rc::new(move |level: &Level| {
             let n = level.instances.len();
             match with_part(level) {
-                Err(e) => vec![Problem {
-                    item: None,
-                    message: e.to_string(),
-                }],
+                Err(e) => vec![Problem::of_level(e.to_string())],
                 Ok(world) => check_level(&check_path, &world, Some(&check_root))
                     .into_iter()
                     .map(|mut p| {
                         p.item = match p.item {
-                            Some(ItemRef::Instance(i))
+                            ItemRef::Instance(i)
                                 if i >= first_instance && i < first_instance + n =>
                             {
-                                Some(ItemRef::Instance(i - first_instance))
+                                ItemRef::Instance(i - first_instance)
                             }
-                            _ => None,
+                            _ => ItemRef::Level,
                         };
                         p
                     })

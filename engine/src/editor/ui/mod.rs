@@ -16,8 +16,8 @@ mod gameplay;
 mod inspector;
 pub mod outliner;
 
+use super::check::instance_to_select;
 use super::command::{Edit, Touch};
-use super::item::ItemRef;
 pub use super::selection::SelectMode;
 use super::state::EditorState;
 
@@ -163,7 +163,7 @@ fn problems(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     ui.label("The level was not saved:");
     for problem in &state.problems {
         let clicked = ui.selectable_label(false, problem.to_string()).clicked();
-        if clicked && let Some(ItemRef::Instance(i)) = problem.item {
+        if clicked && let Some(i) = instance_to_select(problem, &state.doc.level) {
             p.select = Some((Some(i), SelectMode::Replace));
         }
     }

@@ -2,8 +2,9 @@
 //! level order, clips, sounds, volumes, level materials), so running it cannot fail on a name.
 //!
 //! Owns: [`GameplayPlan`] and its parts, plain data made by the level loader
-//! (`assets::level_gameplay_check`) or by code. Must not: hold entities (instances become
-//! entities at spawn time; [`super::LevelLogic`] maps them) or run anything.
+//! (`level/gameplay_plan.rs`, after `level::validate_level`) or by code. Must not: hold
+//! entities (instances become entities at spawn time; [`super::LevelLogic`] maps them) or run
+//! anything.
 
 use std::path::PathBuf;
 

@@ -1,7 +1,8 @@
-//! [`ItemRef`]: one item of a level by its list and index, what a problem, the outliner and
-//! the selection name so that a UI can select it.
+//! [`ItemRef`]: one item of a level by its kind (the list it is in) and its index there — what
+//! a [`super::LevelProblem`] names, and what the editor's outliner and problems panel select.
 //!
-//! Main thread. Must not: hold references into the level (indices only, checked on use).
+//! Any thread (plain data). Must not: hold references into the level (indices only, checked on
+//! use).
 
 use std::fmt;
 
@@ -28,6 +29,22 @@ pub enum ItemRef {
     Laser(usize),
     Rule(usize),
     Usable(usize),
+}
+
+impl ItemRef {
+    /// Whether the item is in the level's `gameplay` section.
+    pub fn is_gameplay(self) -> bool {
+        !matches!(
+            self,
+            ItemRef::Level
+                | ItemRef::Model(_)
+                | ItemRef::Material(_)
+                | ItemRef::Grid(_)
+                | ItemRef::Box(_)
+                | ItemRef::Instance(_)
+                | ItemRef::Camera
+        )
+    }
 }
 
 impl fmt::Display for ItemRef {
