@@ -50,6 +50,7 @@ mod picture;
 mod picture_check;
 mod picture_metrics;
 mod picture_plot;
+mod picture_report;
 mod picture_run;
 mod picture_stability;
 mod picture_tracer;

@@ -8,13 +8,13 @@
 //! at the traced size (the comparison is at the traced size, before the window's upscale).
 //! Figures (`picture_metrics.rs`): relative MSE on linear radiance and RMSE of the tonemapped
 //! sRGB picture, beside the reference's own noise; then the temporal stability
-//! (`picture_stability.rs`). Prints Markdown tables, writes `picture.csv` into `--out-dir` and
-//! the chart (`picture_plot.rs`). `--quick` runs the same code at a tiny size in seconds.
+//! (`picture_stability.rs`). Prints Markdown tables and writes `picture.csv` into `--out-dir`
+//! (`picture_report.rs`) and the chart (`picture_plot.rs`). `--quick` runs the same code at a
+//! tiny size in seconds.
 //!
-//! Owns: the plan and the tables. Main thread. Must not: draw (see `picture_plot.rs`).
+//! Owns: the plan and the measurement loop. Main thread. Must not: draw or format.
 
 use std::collections::{BTreeMap, BTreeSet};
-use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex};
 
@@ -23,7 +23,8 @@ use indicatif::{ProgressBar, ProgressStyle};
 use reflect::world::ReflectWorld;
 
 use super::picture_metrics::{reference_noise, rel_mse, rmse, srgb};
-use super::picture_run::{Config, Drive, FRAME_SECONDS, play, replay_frames};
+use super::picture_report::{tables, write_csv};
+use super::picture_run::{Config, Drive, play, replay_frames};
 use super::picture_stability::{Stability, stability};
 use super::picture_tracer::References;
 
@@ -276,119 +277,6 @@ pub fn measure(
         frame_ms,
         stability,
     })
-}
-
-/// Mean of the compared frames of `config` (all chambers): relative MSE, sRGB RMSE (RMS over
-/// frames), reference noise of each.
-pub fn summary(outcome: &Outcome, config: &Config) -> [f64; 4] {
-    let rows: Vec<&Compared> = outcome
-        .compared
-        .iter()
-        .filter(|c| c.config == *config)
-        .collect();
-    let n = rows.len().max(1) as f64;
-    let mean = |f: fn(&Compared) -> f64| rows.iter().map(|c| f(c)).sum::<f64>() / n;
-    [
-        mean(|c| c.rel_mse),
-        mean(|c| c.srgb_rmse.powi(2)).sqrt(),
-        mean(|c| c.reference_rel_mse),
-        mean(|c| c.reference_srgb_rmse.powi(2)).sqrt(),
-    ]
-}
-
-/// The Markdown tables.
-pub fn tables(outcome: &Outcome) -> String {
-    let mut out = String::new();
-    let _ = writeln!(
-        out,
-        "| configuration | frame ms (trace + denoise, median) | relative MSE | sRGB RMSE | reference spp | reference's own: rel. MSE | sRGB RMSE |\n|---|---:|---:|---:|---:|---:|---:|"
-    );
-    for (config, ms) in outcome.configs.iter().zip(&outcome.frame_ms) {
-        let [rel, rgb, ref_rel, ref_rgb] = summary(outcome, config);
-        let spp = outcome
-            .compared
-            .iter()
-            .find(|c| c.config == *config)
-            .map_or(0, |c| c.reference_spp);
-        let _ = writeln!(
-            out,
-            "| {} | {ms:.1} | {rel:.4} | {rgb:.4} | {spp} | {ref_rel:.5} | {ref_rgb:.4} |",
-            config.label()
-        );
-    }
-    let _ = writeln!(
-        out,
-        "\nPer chamber, relative MSE / sRGB RMSE (mean over its compared frames):\n"
-    );
-    let chambers: BTreeSet<&str> = outcome
-        .compared
-        .iter()
-        .map(|c| c.chamber.as_str())
-        .collect();
-    out += "| chamber | frames |";
-    for c in &outcome.configs {
-        let _ = write!(out, " {} |", c.label());
-    }
-    out += "\n|---|---|";
-    out += &"---:|".repeat(outcome.configs.len());
-    out += "\n";
-    for ch in chambers {
-        let frames: BTreeSet<u64> = outcome
-            .compared
-            .iter()
-            .filter(|c| c.chamber == ch)
-            .map(|c| c.frame)
-            .collect();
-        let list: Vec<String> = frames.iter().map(u64::to_string).collect();
-        let _ = write!(out, "| {ch} | {} |", list.join(", "));
-        for config in &outcome.configs {
-            let rows: Vec<&Compared> = outcome
-                .compared
-                .iter()
-                .filter(|c| c.chamber == ch && c.config == *config)
-                .collect();
-            let n = rows.len().max(1) as f64;
-            let rel = rows.iter().map(|c| c.rel_mse).sum::<f64>() / n;
-            let rgb = (rows.iter().map(|c| c.srgb_rmse.powi(2)).sum::<f64>() / n).sqrt();
-            let _ = write!(out, " {rel:.4} / {rgb:.4} |");
-        }
-        out += "\n";
-    }
-    out += "\n";
-    out += &super::picture_stability::table(&outcome.stability);
-    let _ = writeln!(
-        out,
-        "\nFrames of {:.1} ms game time (two fixed steps); compared at the traced size.",
-        FRAME_SECONDS * 1e3
-    );
-    out
-}
-
-/// `picture.csv`: one row per compared frame.
-fn write_csv(dir: &Path, outcome: &Outcome) -> anyhow::Result<PathBuf> {
-    std::fs::create_dir_all(dir)?;
-    let mut csv = String::from(
-        "chamber,width,height,denoise,frame,rel_mse,srgb_rmse,reference_spp,reference_rel_mse,reference_srgb_rmse\n",
-    );
-    for c in &outcome.compared {
-        let _ = writeln!(
-            csv,
-            "{},{},{},{},{},{},{},{},{},{}",
-            c.chamber,
-            c.config.width,
-            c.config.height,
-            c.config.denoise,
-            c.frame,
-            c.rel_mse,
-            c.srgb_rmse,
-            c.reference_spp,
-            c.reference_rel_mse,
-            c.reference_srgb_rmse
-        );
-    }
-    let path = dir.join("picture.csv");
-    std::fs::write(&path, csv)?;
-    Ok(path)
 }
 
 pub fn run(args: &PictureArgs) -> anyhow::Result<()> {

@@ -82,7 +82,7 @@ fn quick_figures_are_finite_and_converged_beats_one_spp() {
         .stability
         .iter()
         .find(|s| s.drive == "turn")
-        .unwrap();
+        .expect("a turn row");
     assert!(
         turn.degrees_per_frame > 0.05,
         "the turn did not turn: {turn:?}"

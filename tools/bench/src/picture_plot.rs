@@ -9,7 +9,8 @@ use std::path::Path;
 
 use plotters::prelude::*;
 
-use super::picture::{Outcome, summary};
+use super::picture::Outcome;
+use super::picture_report::summary;
 use super::plot::register_font;
 
 const COLOURS: [RGBColor; 4] = [
