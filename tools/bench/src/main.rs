@@ -23,6 +23,10 @@
 //! * `bench denoise` — the denoiser's time per frame at 320×180 and 1280×720 (CPU, GPU twin)
 //!   and its RMSE at 1, 2 and 4 spp with and without, and its bias
 //!   (`docs/charts/denoise_rmse.png`, `docs/ACCURACY.md`, `docs/PERFORMANCE.md`).
+//! * `bench picture [--quick]` — the error of the picture a Reflect player sees: each chamber's
+//!   replay through the game's frame loop at 160×90 and 320×180, denoiser off and on, against
+//!   converged renders of the same views, and its frame-to-frame stability
+//!   (`docs/charts/picture_error.png`, `docs/ACCURACY.md`).
 
 mod balance;
 mod balance_plot;
@@ -41,6 +45,15 @@ mod denoise_reference;
 mod error;
 mod ghosting;
 mod machine;
+mod picture;
+#[cfg(test)]
+mod picture_check;
+mod picture_metrics;
+mod picture_plot;
+mod picture_report;
+mod picture_run;
+mod picture_stability;
+mod picture_tracer;
 mod pipeline;
 mod pipeline_overlap;
 mod pipeline_queries;
@@ -76,6 +89,9 @@ enum Command {
     Ghosting(ghosting::GhostingArgs),
     /// The denoiser: time per frame (CPU, GPU twin) and RMSE at 1, 2, 4 spp with and without.
     Denoise(denoise::DenoiseArgs),
+    /// The error and stability of the picture a Reflect player sees, against converged renders
+    /// of the same views.
+    Picture(picture::PictureArgs),
     /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
     Balance(balance::BalanceArgs),
 }
@@ -104,5 +120,6 @@ fn main() -> anyhow::Result<()> {
         Command::Ghosting(a) => ghosting::run(&a),
         Command::Denoise(a) => denoise::run(&a),
         Command::Balance(a) => balance::run(&a),
+        Command::Picture(a) => picture::run(&a),
     }
 }
