@@ -16,10 +16,10 @@ mod draw;
 mod gizmo;
 mod mode;
 mod recover;
-mod target;
 mod view_input;
 mod world;
 
+pub use crate::app::runner::{BuildWorld, CheckWorld, EditTarget};
 pub use box_select::{BoxDrag, MIN_BOX_POINTS, instances_in};
 pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
 pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};
@@ -29,5 +29,4 @@ pub use gizmo::{
 };
 pub use mode::{EditFrame, EditMode};
 pub use recover::older_recovery_path;
-pub use target::{BuildWorld, CheckWorld, EditTarget};
 pub use world::{Bounds, EditWorld, Followed};

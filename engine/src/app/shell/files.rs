@@ -7,10 +7,10 @@
 //! that fails is logged and shown the same way; the previous file stays intact.
 //! Main thread. Must not: apply settings (the runner does) or decide when to save.
 
-use super::super::action_set::ActionSet;
-use super::super::saves::Progress;
-use super::super::settings::Settings;
-use super::super::user_dirs::UserDirs;
+use crate::app::input::ActionSet;
+use crate::app::persist::Progress;
+use crate::app::persist::Settings;
+use crate::app::persist::UserDirs;
 
 /// A problem with one of the player's files, for the title menu.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -15,7 +15,6 @@ mod ending;
 mod files;
 mod headless;
 mod hud;
-mod info;
 mod pause;
 mod run;
 mod settings_edit;
@@ -24,15 +23,15 @@ mod state;
 mod theme;
 mod title;
 
+pub use crate::app::runner::{
+    GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo,
+};
 pub use cues::{Cue, CueAction, EditorCue};
 pub use ending::clock_text;
 pub use files::{Notice, PlayerFiles};
 pub use headless::run_headless;
-pub use info::{GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo};
 pub use run::{ShellConfig, ShellRun, WindowWants};
 pub use settings_edit::{Conflict, FRAME_RATES, SettingsEditor, action_label, binding_label};
 pub use state::{Screen, ShellEffect, ShellInput, ShellState};
 pub use theme::style;
 pub use title::continue_point;
-
-pub use super::window::run_game;
