@@ -24,16 +24,35 @@
 //! Everything games, tools and tests use is re-exported here, so `candela::app::X` paths do
 //! not depend on the folders.
 
+/// Devices, input maps, named actions, action frames, gamepads.
+mod input;
+
+/// The player's folders: settings with their rebinding, progress saves, stored RON.
+mod persist;
+
+/// Each step's input recorded and replayed; the monkey; `StepInput`.
+mod replay;
+
+/// The `Engine`, its frame loop and phases, the `Game` trait, clock, level spawning.
+mod runner;
+
+/// Capture scripts (RON) run for a fixed number of frames.
+mod script;
+
+/// What consumes actions: player input, the first-person game, the fly camera, steering.
+mod play;
+
+/// The editor in a running game (F1).
 pub mod edit;
-pub mod harness;
-pub mod input;
-pub mod persist;
-pub mod play;
-pub mod replay;
-pub mod runner;
-pub mod script;
+
+/// The screens around a game: title, HUD, pause, settings, ending.
 pub mod shell;
-pub mod window;
+
+/// The winit window runner and the stats overlay.
+mod window;
+
+/// The soak and the ghosting measurement.
+mod harness;
 
 // Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).
 pub use crate::assets::atomic_file::{AtomicFileError, keep_aside, write_atomic};

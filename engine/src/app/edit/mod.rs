@@ -5,10 +5,14 @@
 //! document ([`EditWorld`]), the free editor camera ([`EditorCamera`]), the transform
 //! [`Gizmo`], the selection highlight and the toolbar.
 //!
-//! One file per job: `target` (what a game hands the editor), `world` (the world in step),
+//! [`EditTarget`] (what a game hands the editor) is plain data the `Game` trait names, so it
+//! lives in the runner (`app/runner/edit_target.rs`) and is re-exported here.
+//!
+//! One file per job: `world` (the world in step),
 //! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass), `recover` (the recovery file), `view_input` (pointer and keys
 //! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
-//! game's hooks (the runner holds the game while editing).
+//! game's hooks (the runner holds the game while editing); may use only `input`, `persist`,
+//! `replay`, `runner`, `script` and `play` of `app` (the layers before it).
 
 mod box_select;
 mod camera;

@@ -4,7 +4,7 @@
 //! jump, run, use, fire, pause, editor); a game adds its own with [`ActionSet::with`].
 //!
 //! Owns: action names, kinds, ids and default bindings. Data only; main thread. Must not: hold
-//! input state (`input.rs`) or the player's choices (`bindings.rs`, in the settings file).
+//! input state (`map.rs`) or the player's choices (`persist/bindings.rs`, in the settings file).
 
 use std::collections::HashMap;
 

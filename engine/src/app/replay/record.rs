@@ -1,5 +1,5 @@
 //! Recording the player's input per fixed step and playing it back: [`Recorder`] collects one
-//! [`ActionFrame`] per step and writes the file atomically (format: `replay_format.rs`);
+//! [`ActionFrame`] per step and writes the file atomically (format: `format.rs`);
 //! [`Replay`] reads a file, checks it belongs to this game, level and step rate, and yields
 //! its frames one step at a time, laid out by the *current* [`ActionSet`] (recordings store
 //! action names, so a game may add or reorder actions without breaking its replays).
@@ -24,7 +24,7 @@ pub struct Recorder {
 
 impl Recorder {
     /// A recorder for `game` on the level `level_id` whose file has content hash
-    /// `level_hash` (see `replay_format::level_hash`), stepping `step_hz` times per second,
+    /// `level_hash` (see `format::level_hash`), stepping `step_hz` times per second,
     /// with frames laid out by `set`.
     pub fn new(game: &str, level_id: &str, level_hash: u64, step_hz: f64, set: &ActionSet) -> Self {
         let actions = set
@@ -103,7 +103,7 @@ impl Recorder {
 pub struct ReplayTarget<'a> {
     pub game: &'a str,
     pub level_id: &'a str,
-    /// Content hash of the level file now (`replay_format::level_hash`).
+    /// Content hash of the level file now (`format::level_hash`).
     pub level_hash: u64,
     pub step_hz: f64,
     pub actions: &'a ActionSet,

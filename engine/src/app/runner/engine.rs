@@ -1,7 +1,7 @@
 //! [`Engine`]: the engine a game runs on, headless or in a window, and its public surface: the
 //! world, level spawning, light groups, physics, the level's logic, audio, ray queries, input,
 //! the clock and the environment. One frame of the Brigade pipeline is [`Engine::frame`]
-//! (`app/frame.rs`, phase by phase as `app/phase.rs` lists them).
+//! (`frame.rs`, phase by phase as `phase.rs` lists them).
 //!
 //! Owns: the world (hecs), its [`PhysicsWorld`] and [`LevelLogic`], the game side's [`Upkeep`]
 //! (and so the ray-query scene), the [`Extractor`], the fixed-step clock, the actions' state
@@ -13,6 +13,7 @@ use hecs::World;
 
 use super::clock::FixedClock;
 use super::commands::Commands;
+use super::environment::Environment;
 use super::game_info::ProgressEvent;
 use crate::accel::Upkeep;
 use crate::app::input::ActionFrame;
@@ -21,7 +22,7 @@ use crate::app::input::{InputMap, InputState};
 use crate::app::persist::Settings;
 use crate::app::replay::ReplayError;
 use crate::app::replay::StepInput;
-use crate::assets::{CameraDesc, Model, RenderSettings, SkyDesc, SunDesc};
+use crate::assets::{CameraDesc, Model};
 use crate::audio::Audio;
 use crate::commit::{Motion, PresentRequest};
 use crate::ecs::ModelHandle;
@@ -32,16 +33,6 @@ use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
 use crate::scene::RenderScene;
 use crate::sim::physics::PhysicsWorld;
 use crate::sim::triggers::LevelLogic;
-
-/// Everything about the scene that is not an entity: sun, sky, render settings, and the view to
-/// use when no entity carries a camera.
-#[derive(Clone, Copy, Debug)]
-pub struct Environment {
-    pub sun: Option<SunDesc>,
-    pub sky: SkyDesc,
-    pub render: RenderSettings,
-    pub default_camera: CameraDesc,
-}
 
 /// Errors of the runner.
 #[derive(Debug, thiserror::Error)]

@@ -1,5 +1,5 @@
 //! [`Engine::frame`]: one frame of the Brigade pipeline on the main thread, one function per
-//! [`Phase`] (`app/phase.rs` lists them and says what each does).
+//! [`Phase`] (`phase.rs` lists them and says what each does).
 //!
 //! Owns: the order of the engine's work in a frame, carrying out the game's [`Commands`] and
 //! the level logic's effects, and delivering [`LevelEvent`]s to the game. Main thread.

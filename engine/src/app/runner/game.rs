@@ -1,11 +1,11 @@
 //! The game-facing API: what a game implements ([`Game`]) and what it gets in each hook
 //! ([`Step`], [`FrameInput`]), the level events delivered to it ([`LevelEvent`]) and the
-//! commands it queues for the engine ([`Commands`]). [`super::engine::Engine`]'s public methods are the
+//! commands it queues for the engine ([`Commands`]). [`Engine`]'s public methods are the
 //! rest of the surface (spawning levels, light groups, physics, audio, queries).
 //!
-//! A game is a thin crate over this module and [`super::engine::Engine`]'s public methods: it never
+//! A game is a thin crate over this module and [`Engine`]'s public methods: it never
 //! reaches into the renderer, the upkeep or the commit. Hooks run on the main thread, inside
-//! [`super::engine::Engine::frame`]: `frame` once per frame (phase `Input`), `fixed_step` and then
+//! [`Engine::frame`]: `frame` once per frame (phase `Input`), `fixed_step` and then
 //! `level_event` for each event of that step (phase `Steps`), all before the scene is posed
 //! and sealed. The window runner also calls `ui` while it builds the frame's overlay.
 //!
@@ -21,6 +21,7 @@ use hecs::World;
 
 use super::commands::Commands;
 use super::edit_target::EditTarget;
+use super::engine::Engine;
 use super::game_info::{GameSummary, HudInfo, LevelStart, ShellInfo};
 use super::spawned::SpawnedLevel;
 use crate::app::input::ActionFrame;
@@ -39,7 +40,7 @@ pub type SetupError = Box<dyn std::error::Error + Send + Sync>;
 pub trait Game {
     /// Once the engine exists (and, in a window, the window): spawn the level, cameras,
     /// players. Runs before the first frame.
-    fn setup(&mut self, _engine: &mut super::engine::Engine) -> Result<(), SetupError> {
+    fn setup(&mut self, _engine: &mut Engine) -> Result<(), SetupError> {
         Ok(())
     }
 
@@ -73,11 +74,7 @@ pub trait Game {
     /// Shell: the player chose to play `start` (New game, Continue, a level): put the level
     /// and the player in place (at `start.checkpoint` when given). An error returns to the
     /// title with a notice.
-    fn begin_level(
-        &mut self,
-        _engine: &mut super::engine::Engine,
-        _start: &LevelStart,
-    ) -> Result<(), SetupError> {
+    fn begin_level(&mut self, _engine: &mut Engine, _start: &LevelStart) -> Result<(), SetupError> {
         Ok(())
     }
 
@@ -99,7 +96,7 @@ pub trait Game {
 
     /// Editor: the level was spawned again from the edited file (opening the editor, a
     /// structural edit); `spawned` replaces the game's handles of the level's entities.
-    fn level_respawned(&mut self, _engine: &mut super::engine::Engine, _spawned: &SpawnedLevel) {}
+    fn level_respawned(&mut self, _engine: &mut Engine, _spawned: &SpawnedLevel) {}
 }
 
 /// A [`Game`] that is one closure run every fixed step (tools, tests, scripts).

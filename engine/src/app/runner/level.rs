@@ -11,28 +11,16 @@
 
 use glam::Vec3;
 
-use super::engine::{Engine, Environment};
+use super::engine::Engine;
+use super::environment::Environment;
 use super::spawned::{SpawnedCharacter, SpawnedLevel};
 use super::waves::Waves;
-use crate::assets::SceneDesc;
 use crate::audio::{Bus, SoundEmitter};
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Parent, Renderable, Static, Transform};
 use crate::level::{PlayableCharacter, PlayableLevel};
 use crate::sim::animation::{CharacterAnimation, SkinnedAnimator};
 use crate::sim::physics::{SensorContacts, character_bundle};
 use crate::sim::triggers::{LevelLogic, beam_model, spawn_beam_pool};
-
-impl Environment {
-    /// The environment a level describes (its camera becomes the default view).
-    pub fn of(desc: &SceneDesc) -> Self {
-        Self {
-            sun: desc.sun,
-            sky: desc.sky,
-            render: desc.render,
-            default_camera: desc.camera,
-        }
-    }
-}
 
 impl Engine {
     /// Registers the level's models and materials with the upkeep and spawns one entity per

@@ -7,7 +7,7 @@
 //! ([`Engine::state_hash`]).
 //!
 //! One file per job: `clock`, `frame_limiter`, `work`, `phase`, `stats`, `waves`, `commands`,
-//! `game_info`, `edit_target`, `spawned`, `game`, `engine`, `level`, `frame`, `step_scene`,
+//! `game_info`, `edit_target`, `spawned`, `game`, `environment`, `engine`, `level`, `frame`, `step_scene`,
 //! `state_hash`. Main thread (the render thread is reached only through the commit hand-off).
 //! Must not: name the shell, the editor, the window, scripts or a particular game: those are
 //! the layers above it and build on it.
@@ -16,6 +16,7 @@ mod clock;
 mod commands;
 mod edit_target;
 mod engine;
+mod environment;
 mod frame;
 mod frame_limiter;
 mod game;
@@ -32,7 +33,8 @@ mod work;
 pub use clock::FixedClock;
 pub use commands::{Command, Commands};
 pub use edit_target::{BuildWorld, CheckWorld, EditTarget};
-pub use engine::{Engine, EngineError, Environment};
+pub use engine::{Engine, EngineError};
+pub use environment::Environment;
 pub use frame_limiter::FrameLimiter;
 pub use game::{FrameInput, Game, LevelEvent, SetupError, Step};
 pub use game_info::{GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo};

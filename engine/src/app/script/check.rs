@@ -3,7 +3,7 @@
 //! screenshot names. Every failure names the script file and the item (`camera[2]`,
 //! `motions[1] ("car_*") key[3]`, `screenshots[0]`).
 //!
-//! Owns: [`Script::validate`]. Main thread. Must not: look at the level (`script_bind` does).
+//! Owns: [`Script::validate`]. Main thread. Must not: look at the level (`bind` does).
 
 use std::collections::HashSet;
 

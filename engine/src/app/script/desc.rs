@@ -3,9 +3,9 @@
 //! flythrough, a benchmark or a CI check is the same run every time.
 //!
 //! Owns: the serde types of a script and parsing them (unknown fields refused, with line and
-//! column). Parsing also runs the checks that need no level (`script_check`: frames in range,
+//! column). Parsing also runs the checks that need no level (`check`: frames in range,
 //! keys in order, positive periods and sizes, safe screenshot names); names are checked against
-//! the loaded level by `script_bind`, evaluation is `script_motion`, running is `script_run`.
+//! the loaded level by `bind`, evaluation is `motion`, running is `run`.
 //! Main thread. Must not: touch the engine or the file system beyond reading the script.
 //!
 //! Units: metres, seconds, degrees where a field name says `_deg`. Frames count from 0; frame

@@ -1,15 +1,15 @@
 //! The window runner's per-run work (winit 0.30; the `ApplicationHandler` is in
-//! `window_events.rs`): open the window and the engine, run one engine frame per redraw (game frame hook → overlay → present request → `Engine::frame` →
+//! `events.rs`): open the window and the engine, run one engine frame per redraw (game frame hook → overlay → present request → `Engine::frame` →
 //! collect render results), react to the runner's own actions, and end cleanly: the render
 //! thread is joined before the event loop exits, whether the window closed, Ctrl-C set the
 //! stop flag, the frame count was reached or a render failed.
 //!
 //! With the shell (`run_game`) each frame also goes through [`ShellRun`]: before the overlay
 //! (menus' transitions, settings), its screens inside the overlay, after it, and after the
-//! engine frame; the window follows what it wants (`window_running.rs`), key and mouse presses
+//! engine frame; the window follows what it wants (`running.rs`), key and mouse presses
 //! reach it for rebinding, losing focus pauses, and cue screenshots are saved.
 //!
-//! Owns: the per-run state (`Running`, in `window_running.rs`). Main thread.
+//! Owns: the per-run state (`Running`, in `running.rs`). Main thread.
 //! Must not: render, or block on anything but the hand-off and, at the end, the last results.
 
 use std::sync::Arc;
@@ -47,7 +47,7 @@ pub(super) struct WindowApp<'g> {
     pub(super) shell: Option<ShellRun>,
     /// Screenshots the shell's cues asked for: (frame, where to write it).
     pub(super) shots: Vec<(u64, std::path::PathBuf)>,
-    /// The editor (F1), opened the first time it is asked for (`window_edit.rs`).
+    /// The editor (F1), opened the first time it is asked for (`edit.rs`).
     pub(super) edit: Option<EditMode>,
     /// Without the shell: F1 was pressed (the editor toggles at the next frame).
     pub(super) edit_toggle: bool,

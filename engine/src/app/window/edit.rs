@@ -4,7 +4,7 @@
 //! Turning it on frees the mouse and, without the shell, holds the engine (`set_paused`);
 //! whenever the editor spawns the level again the game hears it (`Game::level_respawned`).
 //!
-//! Main thread. Must not: draw (the editor draws in the overlay pass, `window_app.rs`).
+//! Main thread. Must not: draw (the editor draws in the overlay pass, `app.rs`).
 
 use super::app::WindowApp;
 use crate::app::edit::EditMode;

@@ -1,5 +1,4 @@
-//! The window runner: a winit 0.30 window driving the same [`crate::app::runner::Engine`]
-//! frame loop as headless runs, with the stats overlay, the shell's screens and the editor
+//! The window runner: a winit 0.30 window driving the same `Engine::frame` loop as headless runs, with the stats overlay, the shell's screens and the editor
 //! (F1); the render thread presents every frame.
 //!
 //! One file per job: `config` (what a run is given and what it gives back: [`WindowConfig`],

@@ -2,7 +2,7 @@
 //! limiter, stats, mouse capture) and the window changes it makes: capturing the mouse, and
 //! following what the shell wants (capture, fullscreen, vsync, frame limiter).
 //!
-//! Main thread. Must not: run frames (`window_app.rs` does) or render.
+//! Main thread. Must not: run frames (`app.rs` does) or render.
 
 use std::sync::Arc;
 use std::time::Instant;
