@@ -1,6 +1,7 @@
 //! The game platform over the engine: the runner that drives the world, the upkeep and the
-//! render thread, headless ([`Engine`]) or in a window ([`run_window`]), phase by phase
-//! ([`Phase`]); the game-facing API ([`Game`]); and the pieces games are built from.
+//! render thread, headless ([`Engine`](crate::app::Engine)) or in a window
+//! ([`run_window`](crate::app::run_window)), phase by phase ([`Phase`](crate::app::Phase)); the
+//! game-facing API ([`Game`](crate::app::Game)); and the pieces games are built from.
 //!
 //! The sub-modules form layers, like the crate's top-level modules: each uses only the ones
 //! declared before it here (`engine/tests/engine/structure_layers.rs` checks every
@@ -24,34 +25,34 @@
 //! Everything games, tools and tests use is re-exported here, so `candela::app::X` paths do
 //! not depend on the folders.
 
-/// Devices, input maps, named actions, action frames, gamepads.
+// Devices, input maps, named actions, action frames, gamepads.
 mod input;
 
-/// The player's folders: settings with their rebinding, progress saves, stored RON.
+// The player's folders: settings with their rebinding, progress saves, stored RON.
 mod persist;
 
-/// Each step's input recorded and replayed; the monkey; `StepInput`.
+// Each step's input recorded and replayed; the monkey; `StepInput`.
 mod replay;
 
-/// The `Engine`, its frame loop and phases, the `Game` trait, clock, level spawning.
+// The `Engine`, its frame loop and phases, the `Game` trait, clock, level spawning.
 mod runner;
 
-/// Capture scripts (RON) run for a fixed number of frames.
+// Capture scripts (RON) run for a fixed number of frames.
 mod script;
 
-/// What consumes actions: player input, the first-person game, the fly camera, steering.
+// What consumes actions: player input, the first-person game, the fly camera, steering.
 mod play;
 
-/// The editor in a running game (F1).
+// The editor in a running game (F1).
 pub mod edit;
 
-/// The screens around a game: title, HUD, pause, settings, ending.
+// The screens around a game: title, HUD, pause, settings, ending.
 pub mod shell;
 
-/// The winit window runner and the stats overlay.
+// The winit window runner and the stats overlay.
 mod window;
 
-/// The soak and the ghosting measurement.
+// The soak and the ghosting measurement.
 mod harness;
 
 // Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).

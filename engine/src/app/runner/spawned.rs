@@ -11,7 +11,7 @@ use hecs::Entity;
 
 use crate::ecs::ModelHandle;
 
-/// What [`Engine::spawn_level`] created.
+/// What [`Engine::spawn_level`](super::Engine::spawn_level) created.
 #[derive(Clone, Debug, Default)]
 pub struct SpawnedLevel {
     /// Handle of each of the level's models, in `SceneDesc::models` order.
