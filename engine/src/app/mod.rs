@@ -1,114 +1,97 @@
-//! The runner: the frame loop that drives the world, the upkeep and the render thread, headless
-//! ([`Engine`]) or in a window ([`run_window`]), phase by phase ([`Phase`]); the game-facing API
-//! ([`Game`]); the fixed-step clock; input mapped to actions;
-//! the fly camera; the stats overlay; capture scripts (RON) that drive the loop for a fixed
-//! number of frames. The game platform's pieces: named game actions and the player's
-//! bindings, gamepads, per-step action frames with recording and replay, settings and
-//! progress saves in the user's folders, written atomically; the shell around a game
-//! (`shell`: title, HUD, pause, settings, ending; [`run_game`]).
+//! The game platform over the engine: the runner that drives the world, the upkeep and the
+//! render thread, headless ([`Engine`](crate::app::Engine)) or in a window
+//! ([`run_window`](crate::app::run_window)), phase by phase ([`Phase`](crate::app::Phase)); the
+//! game-facing API ([`Game`](crate::app::Game)); and the pieces games are built from.
+//!
+//! The sub-modules form layers, like the crate's top-level modules: each uses only the ones
+//! declared before it here (`engine/tests/engine/structure_layers.rs` checks every
+//! `crate::app::<sub>` path and every `super::` chain that climbs into `app`):
+//!
+//! ```text
+//! input → persist → replay → runner → script → play → edit → shell → window → harness
+//! ```
+//! - `input`: devices, bindings maps, named actions, per-step action frames, gamepads.
+//! - `persist`: the player's folders, settings with their rebinding, progress saves.
+//! - `replay`: recording and replaying each step's input, the soak's monkey, `StepInput`.
+//! - `runner`: the `Engine`, its frame loop and phases, the `Game` trait, clock, spawning.
+//! - `script`: capture scripts (RON) run for a fixed number of frames.
+//! - `play`: what consumes actions, next to `crate::player`: `player_input`, the
+//!   first-person game, the fly camera, the bots' steering.
+//! - `edit`: the editor in a running game (F1).
+//! - `shell`: the screens around a game (title, HUD, pause, settings, ending).
+//! - `window`: the winit window runner, the stats overlay.
+//! - `harness`: the soak and the ghosting measurement.
+//!
+//! Everything games, tools and tests use is re-exported here, so `candela::app::X` paths do
+//! not depend on the folders.
 
-mod action_frame;
-mod action_set;
-mod bindings;
-mod clock;
-pub mod edit;
-mod engine;
-mod first_person_game;
-mod fly_camera;
-mod frame;
-mod frame_limiter;
-mod game;
-mod gamepad;
-mod ghosting;
+// Devices, input maps, named actions, action frames, gamepads.
 mod input;
-mod level;
-mod monkey;
-mod pad;
-mod phase;
-mod player_input;
+
+// The player's folders: settings with their rebinding, progress saves, stored RON.
+mod persist;
+
+// Each step's input recorded and replayed; the monkey; `StepInput`.
 mod replay;
-mod replay_error;
-mod replay_format;
-mod saves;
+
+// The `Engine`, its frame loop and phases, the `Game` trait, clock, level spawning.
+mod runner;
+
+// Capture scripts (RON) run for a fixed number of frames.
 mod script;
-mod script_bind;
-mod script_check;
-mod script_error;
-mod script_motion;
-mod script_run;
-mod settings;
+
+// What consumes actions: player input, the first-person game, the fly camera, steering.
+mod play;
+
+// The editor in a running game (F1).
+pub mod edit;
+
+// The screens around a game: title, HUD, pause, settings, ending.
 pub mod shell;
-pub mod soak;
-mod state_hash;
-mod stats;
-mod stats_overlay;
-pub mod steer;
-mod step_input;
-mod step_scene;
-mod stored;
-mod user_dirs;
-mod waves;
+
+// The winit window runner and the stats overlay.
 mod window;
-mod window_app;
-mod window_edit;
-mod window_events;
-mod window_running;
-mod work;
+
+// The soak and the ghosting measurement.
+mod harness;
 
 // Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).
-use crate::assets::atomic_file;
+pub use crate::assets::atomic_file::{AtomicFileError, keep_aside, write_atomic};
 
-pub use action_frame::{AXIS_ONE, ActionFrame, MOTION_PER_COUNT, quantise_axis, quantise_motion};
-pub use action_set::{
-    ActionDef, ActionId, ActionKind, ActionSet, ActionSetError, MAX_ACTIONS, game_actions,
+pub use harness::soak;
+pub use harness::{GhostError, GhostSetup, measure_ghosting};
+pub use input::fly_actions;
+pub use input::{
+    AXIS_ONE, ActionDef, ActionFrame, ActionId, ActionKind, ActionSet, ActionSetError,
+    DEFAULT_DEAD_ZONE, Gamepads, MAX_ACTIONS, MOTION_PER_COUNT, PadAxis, PadButton,
+    apply_dead_zone, game_actions, pad_button, quantise_axis, quantise_motion,
 };
-pub use atomic_file::{AtomicFileError, keep_aside, write_atomic};
-pub use bindings::{BindingProblem, Bindings, BindingsError};
-pub use clock::FixedClock;
-pub use engine::{Engine, EngineError, Environment};
-pub use first_person_game::{
-    CARRY_PROMPT, FIRST_PERSON_GAME, FirstPersonGame, Happened, MESSAGE_STEPS, TOO_FAR,
-};
-pub use fly_camera::{FlyCamera, fly_camera_system};
-pub use frame_limiter::FrameLimiter;
-pub use game::{Command, Commands, FrameInput, Game, LevelEvent, SetupError, Step};
-pub use gamepad::{DEFAULT_DEAD_ZONE, Gamepads, apply_dead_zone, pad_button};
-pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
-pub use level::{SpawnedCharacter, SpawnedLevel};
-pub use monkey::Monkey;
-pub use pad::{PadAxis, PadButton};
-pub use phase::{FrameReport, Phase, PhaseTimes};
-pub use player_input::{MOUSE_RADIANS_PER_COUNT, PAD_RADIANS_PER_SECOND, player_input};
-pub use replay::{Recorder, Replay, ReplayTarget};
-pub use replay_error::ReplayError;
-pub use replay_format::{
-    FORMAT_VERSION, OLDEST_VERSION, RecordedAction, RecordedLook, Recording, RecordingHeader, Run,
-    fnv1a64, level_hash,
+pub use persist::{
+    BindingProblem, Bindings, BindingsError, LoadWarning, Loaded, Progress, Settings, StoreError,
+    UserDirs, UserDirsError, describe_ron_error, load_or_default, parse_checked, save_ron,
 };
-pub use saves::Progress;
+pub use play::steer;
+pub use play::{
+    CARRY_PROMPT, FIRST_PERSON_GAME, FirstPersonGame, FlyCamera, Happened, MESSAGE_STEPS,
+    MOUSE_RADIANS_PER_COUNT, PAD_RADIANS_PER_SECOND, TOO_FAR, fly_camera_system, player_input,
+};
+pub use replay::{
+    FORMAT_VERSION, Monkey, OLDEST_VERSION, RecordedAction, RecordedLook, Recorder, Recording,
+    RecordingHeader, Replay, ReplayError, ReplayTarget, Run, StepInput, fnv1a64, level_hash,
+};
+pub use runner::{
+    Command, Commands, Engine, EngineError, Environment, FixedClock, FrameInput, FrameLimiter,
+    FrameReport, FrameStats, FrameWork, Game, LevelEvent, Phase, PhaseTimes, SetupError,
+    SpawnedCharacter, SpawnedLevel, Step, Waves, WorkTotals, waves_system,
+};
 pub use script::{
-    CameraKey, Interpolation, LightSwitch, Motion, MotionEntry, ObjectKey, Screenshot, Script,
-    ScriptError, ScriptLevel, ScriptRender, ScriptTracer,
+    BoundScript, CameraKey, FrameTiming, Interpolation, LightSwitch, Motion, MotionEntry,
+    ObjectKey, RunOptions, Screenshot, Script, ScriptError, ScriptLevel, ScriptRender,
+    ScriptReport, ScriptTracer, ShotResult, apply_motion, camera_at, camera_transform, cut_at,
+    matches, run_script,
 };
-pub use script_bind::{BoundScript, matches};
-pub use script_motion::{apply_motion, camera_at, camera_transform, cut_at};
-pub use script_run::{FrameTiming, RunOptions, ScriptReport, ShotResult, run_script};
-pub use settings::Settings;
-pub use stats::FrameStats;
-pub use stats_overlay::StatsOverlay;
-pub use step_input::StepInput;
-pub use stored::{
-    LoadWarning, Loaded, StoreError, describe_ron_error, load_or_default, parse_checked, save_ron,
-};
-pub use user_dirs::{UserDirs, UserDirsError};
-pub use waves::{Waves, waves_system};
 pub use window::{
-    WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_game, run_window,
+    StatsOverlay, WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_game,
+    run_window,
 };
-pub use work::{FrameWork, WorkTotals};
-
-/// Action names of the fly camera.
-pub mod fly_actions {
-    pub use super::fly_camera::actions::*;
-}

@@ -17,7 +17,7 @@
 //! −Z, positive turning left; pitch positive up, clamped to ±`max_pitch`; no roll. The eye
 //! follows the body's simulated pose as of the last physics step (it lags the body by one
 //! fixed step, 1/60 s). What is under the crosshair comes from ray queries on the scene as the
-//! previous fixed step left it, at any frame rate (`app/step_scene.rs`).
+//! previous fixed step left it, at any frame rate (`app/runner/step_scene.rs`).
 //! Main thread, fixed step, before physics. Must not: read devices or send events itself.
 
 use glam::{EulerRot, Quat, Vec2, Vec3};

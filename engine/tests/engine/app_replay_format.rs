@@ -1,4 +1,4 @@
-//! The recording file's bytes are the layout `replay_format.rs` documents, its checksum is
+//! The recording file's bytes are the layout `app/replay/format.rs` documents, its checksum is
 //! FNV-1a 64 (checked against the published test vector), and the per-step fixed point of
 //! axes and motions rounds and saturates as `action_frame.rs` says.
 

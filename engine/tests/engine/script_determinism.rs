@@ -1,5 +1,5 @@
 //! With the CPU tracer the same capture script gives the same images bit for bit (the reasons
-//! are in `engine/src/app/script_run.rs`): two runs of a script that uses every feature (camera
+//! are in `engine/src/app/script/run.rs`): two runs of a script that uses every feature (camera
 //! keys with a cut, every motion kind, light switches, waves) write byte-identical EXR and PNG
 //! files and bit-identical films. A third run with another seed must differ, so that the
 //! comparison can fail.

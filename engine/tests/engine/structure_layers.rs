@@ -2,7 +2,8 @@
 //! `engine/src/lib.rs` declares before it. This test reads every `crate::` path (plain,
 //! grouped as `crate::{a::…, b::…}`, and `super::` chains that climb to the crate root) in the
 //! code of `engine/src`, comments left out, and fails naming the file, the line and the two
-//! modules of every upward use.
+//! modules of every upward use. The sub-modules of `app` are checked the same way against the
+//! order `engine/src/app/mod.rs` declares them.
 
 use std::collections::BTreeSet;
 use std::fs;
@@ -14,8 +15,13 @@ fn src() -> PathBuf {
 
 /// The top-level modules in the order `lib.rs` declares them (`pub mod x;` / `mod x;`).
 fn layers() -> Vec<String> {
-    let lib = fs::read_to_string(src().join("lib.rs")).expect("engine/src/lib.rs");
-    lib.lines()
+    declared(&src().join("lib.rs"))
+}
+
+/// The modules `file` declares (`pub mod x;` / `mod x;`), in order.
+fn declared(file: &Path) -> Vec<String> {
+    let text = fs::read_to_string(file).unwrap_or_else(|e| panic!("{}: {e}", file.display()));
+    text.lines()
         .map(str::trim)
         .filter_map(|l| {
             l.strip_prefix("pub mod ")
@@ -115,20 +121,41 @@ fn ident(rest: &str) -> String {
 /// Top-level modules named by `crate::` paths in `code` (the whole file's code, so that a
 /// grouped `use` over several lines is read whole), with the line each appears on.
 fn crate_uses(code: &[String], file_depth: usize) -> Vec<(usize, String)> {
+    // `super::super::x` from a file `file_depth` folders below the crate root.
+    path_uses(code, "crate::", |supers| supers >= file_depth && supers > 0)
+}
+
+/// Sub-modules of `app` named in the code of a file `file_depth` folders below the crate root
+/// (`app/input/map.rs` is 3, `app/input/mod.rs` 2): `crate::app::x` paths (plain or grouped as
+/// `crate::app::{x::…, y::…}`) and `super::` chains that climb exactly to `app`.
+fn app_uses(code: &[String], file_depth: usize) -> Vec<(usize, String)> {
+    path_uses(code, "crate::app::", |supers| {
+        supers > 0 && supers + 1 == file_depth
+    })
+}
+
+/// The first identifier after each `prefix` path in `code` (each item of a grouped
+/// `prefix{a::…, b::…}`), and after each `super::` chain of a length `climbs` accepts, with
+/// the line each appears on.
+fn path_uses(
+    code: &[String],
+    prefix: &str,
+    climbs: impl Fn(usize) -> bool,
+) -> Vec<(usize, String)> {
     let joined: String = code.iter().map(|l| format!("{l}\n")).collect();
     let line_of = |offset: usize| joined[..offset].matches('\n').count() + 1;
     let mut uses = Vec::new();
     let bytes = joined.as_bytes();
     let mut at = 0;
-    while let Some(found) = joined[at..].find("crate::") {
+    while let Some(found) = joined[at..].find(prefix) {
         let start = at + found;
-        at = start + "crate::".len();
+        at = start + prefix.len();
         if start > 0 && is_ident(bytes[start - 1] as char) {
             continue; // `mycrate::`
         }
         let rest = &joined[at..];
         if rest.trim_start().starts_with('{') {
-            // crate::{a::x, b::{y, z}}: the first identifier of each top-level item.
+            // prefix{a::x, b::{y, z}}: the first identifier of each top-level item.
             let open = at + rest.find('{').unwrap_or(0);
             let mut depth = 0;
             let mut item_start = true;
@@ -163,7 +190,6 @@ fn crate_uses(code: &[String], file_depth: usize) -> Vec<(usize, String)> {
             uses.push((line_of(start), ident(rest)));
         }
     }
-    // `super::super::x` from a file `file_depth` folders below the crate root.
     for (n, line) in code.iter().enumerate() {
         let mut from = 0;
         while let Some(found) = line[from..].find("super::") {
@@ -175,7 +201,7 @@ fn crate_uses(code: &[String], file_depth: usize) -> Vec<(usize, String)> {
                 rest = r;
             }
             from = line.len() - rest.len();
-            if supers >= file_depth && supers > 0 {
+            if climbs(supers) {
                 uses.push((n + 1, ident(rest)));
             }
         }
@@ -248,4 +274,78 @@ fn the_path_reader_sees_every_form_of_use() {
     );
     let names: Vec<String> = crate_uses(&code, 2).into_iter().map(|(_, n)| n).collect();
     assert_eq!(names, ["a", "b", "e", "k"]);
+}
+
+/// The sub-modules of `app` form layers too: each uses only the ones `app/mod.rs` declares
+/// before it. Read from `crate::app::<sub>` paths and `super::` chains that climb into `app`;
+/// a file inside a sub-module that names a re-export at `app`'s root (`crate::app::Engine`)
+/// fails too, since the re-export hides which layer it reaches.
+#[test]
+fn app_sub_modules_only_use_the_ones_declared_before_them() {
+    let app = src().join("app");
+    let layers = declared(&app.join("mod.rs"));
+    assert!(
+        layers.len() >= 8,
+        "app/mod.rs declares only {layers:?}: the layer list was not read"
+    );
+    let position = |m: &str| layers.iter().position(|l| l == m);
+    let mut files = Vec::new();
+    rust_files(&app, &mut files);
+    let mut problems = Vec::new();
+    let mut edges = BTreeSet::new();
+    for file in &files {
+        let relative = file.strip_prefix(src()).expect("under src");
+        let parts: Vec<&str> = relative
+            .iter()
+            .map(|p| p.to_str().expect("utf-8 path"))
+            .collect();
+        if parts == ["app", "mod.rs"] {
+            continue; // the table of contents: re-exports of every layer
+        }
+        let sub = parts[1].trim_end_matches(".rs");
+        let Some(own) = position(sub) else {
+            problems.push(format!(
+                "{}: sub-module `{sub}` is not declared in app/mod.rs",
+                relative.display()
+            ));
+            continue;
+        };
+        let is_mod = parts.last().is_some_and(|p| *p == "mod.rs");
+        let depth = parts.len() - usize::from(is_mod);
+        let text = fs::read_to_string(file).expect("readable source");
+        for (line, used) in app_uses(&code_lines(&text), depth) {
+            if used == sub || used.is_empty() {
+                continue;
+            }
+            let Some(theirs) = position(&used) else {
+                problems.push(format!(
+                    "{}:{line}: `{sub}` names `app::{used}`, a re-export at app's root: name the sub-module it lives in",
+                    relative.display()
+                ));
+                continue;
+            };
+            edges.insert((sub.to_string(), used.clone()));
+            if theirs > own {
+                problems.push(format!(
+                    "{}:{line}: `{sub}` uses `{used}`, which app/mod.rs declares after it (a sub-module of app may use only the ones before it)",
+                    relative.display()
+                ));
+            }
+        }
+    }
+    assert!(
+        edges.len() > 10,
+        "only {} sub-module-to-sub-module uses found in app: the path reader is broken ({edges:?})",
+        edges.len()
+    );
+    assert!(problems.is_empty(), "{}", problems.join("\n"));
+}
+
+#[test]
+fn the_app_path_reader_sees_every_form_of_use() {
+    let code = code_lines(
+        "use crate::app::{input::X,\n    runner::{Y, Z}};\n// crate::app::hidden::H\nfn f() { crate::app::replay::g(); }\nuse super::super::shell::S;\nuse super::sibling::T;\nuse crate::assets::A;",
+    );
+    let names: Vec<String> = app_uses(&code, 3).into_iter().map(|(_, n)| n).collect();
+    assert_eq!(names, ["input", "runner", "replay", "shell"]);
 }

@@ -39,7 +39,7 @@ pub struct CaptureArgs {
     /// The level file (RON); not with `--script`.
     #[arg(required_unless_present = "script", conflicts_with = "script")]
     pub level: Option<PathBuf>,
-    /// Run a capture script (RON, see `engine/src/app/script.rs`): its frames, camera, motions,
+    /// Run a capture script (RON, see `engine/src/app/script/desc.rs`): its frames, camera, motions,
     /// light switches and screenshots. `--tracer`, `--spp`, `--width`, `--height` override it.
     #[arg(long)]
     pub script: Option<PathBuf>,

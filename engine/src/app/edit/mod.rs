@@ -5,10 +5,14 @@
 //! document ([`EditWorld`]), the free editor camera ([`EditorCamera`]), the transform
 //! [`Gizmo`], the selection highlight and the toolbar.
 //!
-//! One file per job: `target` (what a game hands the editor), `world` (the world in step),
+//! [`EditTarget`] (what a game hands the editor) is plain data the `Game` trait names, so it
+//! lives in the runner (`app/runner/edit_target.rs`) and is re-exported here.
+//!
+//! One file per job: `world` (the world in step),
 //! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass), `recover` (the recovery file), `view_input` (pointer and keys
 //! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
-//! game's hooks (the runner holds the game while editing).
+//! game's hooks (the runner holds the game while editing); may use only `input`, `persist`,
+//! `replay`, `runner`, `script` and `play` of `app` (the layers before it).
 
 mod box_select;
 mod camera;
@@ -16,10 +20,10 @@ mod draw;
 mod gizmo;
 mod mode;
 mod recover;
-mod target;
 mod view_input;
 mod world;
 
+pub use crate::app::runner::{BuildWorld, CheckWorld, EditTarget};
 pub use box_select::{BoxDrag, MIN_BOX_POINTS, instances_in};
 pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
 pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};
@@ -29,5 +33,4 @@ pub use gizmo::{
 };
 pub use mode::{EditFrame, EditMode};
 pub use recover::older_recovery_path;
-pub use target::{BuildWorld, CheckWorld, EditTarget};
 pub use world::{Bounds, EditWorld, Followed};

@@ -15,10 +15,10 @@ use hecs::Entity;
 use super::box_select::BoxDrag;
 use super::camera::EditorCamera;
 use super::gizmo::Gizmo;
-use super::target::EditTarget;
 use super::world::{EditWorld, Followed};
-use crate::app::engine::Engine;
-use crate::app::level::SpawnedLevel;
+use crate::app::runner::EditTarget;
+use crate::app::runner::Engine;
+use crate::app::runner::SpawnedLevel;
 use crate::ecs::{CameraRig, Transform};
 use crate::editor::{
     DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, Touch, find_recovery,
@@ -159,7 +159,7 @@ impl EditMode {
             Some(found) => found,
             None => {
                 let desc = engine.environment().default_camera;
-                let (_, transform, rig) = crate::app::FlyCamera::from_view(&desc, 4.0);
+                let (_, transform, rig) = crate::app::play::FlyCamera::from_view(&desc, 4.0);
                 let entity = engine.world.spawn((transform, rig));
                 self.own_camera = Some(entity);
                 (entity, rig, transform)

@@ -11,7 +11,7 @@
 use std::path::{Path, PathBuf};
 
 use super::mode::EditMode;
-use crate::app::engine::Engine;
+use crate::app::runner::Engine;
 use crate::editor::{EditorState, Touch, discard_recovery, recovery_path, restore_recovery};
 
 /// `<level>.recovery.old`: where an offered recovery file goes when new edits are made before

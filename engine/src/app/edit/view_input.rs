@@ -16,7 +16,7 @@ use glam::{Vec2, Vec3};
 use super::box_select::{BoxDrag, instances_in};
 use super::gizmo::{Gizmo, Space, Tool};
 use super::mode::EditMode;
-use crate::app::engine::Engine;
+use crate::app::runner::Engine;
 use crate::assets::CameraDesc;
 use crate::editor::{Touch, pick, pixel_ray};
 

@@ -21,9 +21,9 @@ use std::collections::HashSet;
 use glam::{Vec3, Vec4Swizzles};
 use hecs::Entity;
 
-use super::target::EditTarget;
-use crate::app::engine::Engine;
-use crate::app::level::SpawnedLevel;
+use crate::app::runner::EditTarget;
+use crate::app::runner::Engine;
+use crate::app::runner::SpawnedLevel;
 use crate::assets::{AssetError, Level, SceneDesc};
 use crate::ecs::{ModelHandle, Parent, Restyled, Static, Transform};
 use crate::editor::Touch;

@@ -5,9 +5,9 @@
 
 use egui::RichText;
 
-use super::info::GameSummary;
 use super::state::ShellInput;
 use super::theme;
+use crate::app::runner::GameSummary;
 use crate::sim::triggers::Outcome;
 
 /// `seconds` as `m:ss` (or `h:mm:ss`).

@@ -1,16 +1,16 @@
 //! The player's two files as the shell keeps them: settings (`<config>/settings.ron`) and
 //! progress (`<data>/progress.ron`), loaded once at start and saved atomically on change.
 //!
-//! A corrupt or invalid file never stops the game: `stored.rs` gives the defaults, keeps the bad
+//! A corrupt or invalid file never stops the game: `persist/stored.rs` gives the defaults, keeps the bad
 //! file as `<name>.corrupt` and logs a warning; this keeps each warning as a [`Notice`] that the
 //! title menu shows (the file, the problem, where the bad file went) until dismissed. A save
 //! that fails is logged and shown the same way; the previous file stays intact.
 //! Main thread. Must not: apply settings (the runner does) or decide when to save.
 
-use super::super::action_set::ActionSet;
-use super::super::saves::Progress;
-use super::super::settings::Settings;
-use super::super::user_dirs::UserDirs;
+use crate::app::input::ActionSet;
+use crate::app::persist::Progress;
+use crate::app::persist::Settings;
+use crate::app::persist::UserDirs;
 
 /// A problem with one of the player's files, for the title menu.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -7,8 +7,8 @@
 //! Main thread. Must not: open a window (there is none).
 
 use super::run::ShellRun;
-use crate::app::engine::{Engine, EngineError};
-use crate::app::game::Game;
+use crate::app::runner::Game;
+use crate::app::runner::{Engine, EngineError};
 use crate::commit::PresentRequest;
 use crate::render::film::TonemapSettings;
 

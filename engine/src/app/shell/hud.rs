@@ -8,8 +8,8 @@
 
 use egui::{Align2, Color32, Pos2, RichText, Stroke, Vec2};
 
-use super::info::HudInfo;
 use super::theme;
+use crate::app::runner::HudInfo;
 
 /// The crosshair's arm length and its gap from the centre, points.
 pub const ARM: f32 = 10.0;

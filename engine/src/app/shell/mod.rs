@@ -1,21 +1,23 @@
 //! The game runner's shell: the screens around a [`crate::app::Game`] — title menu, playing
 //! (HUD), pause menu, settings, the editor hook (F1) and the ending — with one consistent look,
 //! the player's settings applied live and saved atomically, and progress saved at checkpoints
-//! and level ends. The same [`ShellRun`] drives a window ([`run_game`]) or headless
+//! and level ends. The same [`ShellRun`] drives a window ([`crate::app::run_game`], in `app/window/`) or headless
 //! ([`run_headless`]).
 //!
 //! One file per job: `state` (the screens' state machine, pure), `settings_edit` (the settings
 //! screen's model, pure), `files` (settings and progress files, notices of corrupt ones),
 //! `cues` (scripted input), `run` (the per-frame glue), `theme` (the look), `title`, `hud`,
 //! `pause` (with the editor placeholder), `settings_screen`, `ending` (egui screens) and
-//! `headless`. Main thread. Must not: render or own the window (the window runner does).
+//! `headless`. What a game tells the shell ([`ShellInfo`], [`HudInfo`], [`GameSummary`], …) is
+//! plain data the `Game` trait names, so it lives in the runner (`app/runner/game_info.rs`)
+//! and is re-exported here. Main thread. Must not: render or own the window (the window runner
+//! does), or use `app`'s `window` or `harness` (the layers after it).
 
 mod cues;
 mod ending;
 mod files;
 mod headless;
 mod hud;
-mod info;
 mod pause;
 mod run;
 mod settings_edit;
@@ -24,15 +26,15 @@ mod state;
 mod theme;
 mod title;
 
+pub use crate::app::runner::{
+    GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo,
+};
 pub use cues::{Cue, CueAction, EditorCue};
 pub use ending::clock_text;
 pub use files::{Notice, PlayerFiles};
 pub use headless::run_headless;
-pub use info::{GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo};
 pub use run::{ShellConfig, ShellRun, WindowWants};
 pub use settings_edit::{Conflict, FRAME_RATES, SettingsEditor, action_label, binding_label};
 pub use state::{Screen, ShellEffect, ShellInput, ShellState};
 pub use theme::style;
 pub use title::continue_point;
-
-pub use super::window::run_game;

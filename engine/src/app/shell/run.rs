@@ -19,17 +19,17 @@ use std::path::PathBuf;
 
 use super::cues::{Cue, CueAction, EditorCue};
 use super::files::{Notice, PlayerFiles};
-use super::info::{GameSummary, HudInfo, ProgressEvent, ShellInfo};
 use super::settings_edit::SettingsEditor;
 use super::state::{Screen, ShellEffect, ShellInput, ShellState};
 use super::{ending, hud, pause, settings_screen, theme, title};
-use crate::app::action_set::game_actions;
-use crate::app::engine::Engine;
-use crate::app::game::Game;
+use crate::app::input::game_actions;
 use crate::app::input::{Binding, InputMap, actions};
-use crate::app::phase::FrameReport;
-use crate::app::settings::Settings;
-use crate::app::user_dirs::UserDirs;
+use crate::app::persist::Settings;
+use crate::app::persist::UserDirs;
+use crate::app::runner::Engine;
+use crate::app::runner::FrameReport;
+use crate::app::runner::Game;
+use crate::app::runner::{GameSummary, HudInfo, ProgressEvent, ShellInfo};
 use crate::commit::ScalingRequest;
 use crate::sim::triggers::Outcome;
 

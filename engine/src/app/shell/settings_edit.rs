@@ -8,9 +8,9 @@
 //! when it changed and no drag is under way. Main thread. Must not: draw, read devices or
 //! write files.
 
-use super::super::action_set::{ActionKind, ActionSet};
-use super::super::input::{Binding, KeyCode};
-use super::super::settings::Settings;
+use crate::app::input::{ActionKind, ActionSet};
+use crate::app::input::{Binding, KeyCode};
+use crate::app::persist::Settings;
 
 /// Frame rates the settings screen offers (`None`: unlimited).
 pub const FRAME_RATES: [Option<f32>; 6] = [

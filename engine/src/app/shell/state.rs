@@ -8,7 +8,7 @@
 //! out. Only [`Screen::Playing`] runs the game's hooks and fixed steps and captures the mouse.
 //! Main thread. Must not: touch the engine, the window or files (the runner does).
 
-use super::info::LevelStart;
+use crate::app::runner::LevelStart;
 use crate::sim::triggers::Outcome;
 
 /// What the shell shows.

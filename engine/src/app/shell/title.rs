@@ -7,10 +7,10 @@
 use egui::{Align2, RichText, Vec2};
 
 use super::files::Notice;
-use super::info::{LevelStart, ShellInfo};
 use super::state::ShellInput;
 use super::theme;
-use crate::app::saves::Progress;
+use crate::app::persist::Progress;
+use crate::app::runner::{LevelStart, ShellInfo};
 
 /// Where Continue starts: the first unfinished level, from its checkpoint (`None` when every
 /// level is finished or nothing was played yet).

@@ -1,0 +1,108 @@
+//! [`StatsOverlay`]: the egui stats window (F3), run on the main thread where the window's
+//! events are, tessellated there, and handed to the render thread inside the commit.
+//!
+//! Owns: the egui context and its winit glue (pointer, keyboard, scale factor). Produces an
+//! [`Overlay`] per frame while visible. Must not: touch the device (the render thread draws)
+//! or the world.
+
+use winit::window::Window;
+
+use crate::app::runner::FrameStats;
+use crate::commit::Overlay;
+
+/// The stats overlay.
+pub struct StatsOverlay {
+    context: egui::Context,
+    state: egui_winit::State,
+    pub visible: bool,
+}
+
+impl StatsOverlay {
+    pub fn new(window: &Window, visible: bool) -> Self {
+        let context = egui::Context::default();
+        let state = egui_winit::State::new(
+            context.clone(),
+            egui::ViewportId::ROOT,
+            window,
+            Some(window.scale_factor() as f32),
+            window.theme(),
+            None,
+        );
+        Self {
+            context,
+            state,
+            visible,
+        }
+    }
+
+    /// Feeds a window event to egui; returns whether egui used it (a click on the overlay
+    /// should not also capture the mouse). Ignored while hidden, unless the game draws a UI.
+    pub fn on_window_event(
+        &mut self,
+        window: &Window,
+        event: &winit::event::WindowEvent,
+        game_ui: bool,
+    ) -> bool {
+        (self.visible || game_ui) && self.state.on_window_event(window, event).consumed
+    }
+
+    /// Whether the pointer is over the overlay.
+    pub fn wants_pointer(&self) -> bool {
+        self.visible && self.context.egui_wants_pointer_input()
+    }
+
+    /// Runs egui for this frame: the game's `ui` (its HUD and menus) when `game_ui` is given,
+    /// then the stats window when it is shown; tessellates both. `None` when there is neither.
+    pub fn build(
+        &mut self,
+        window: &Window,
+        stats: &FrameStats,
+        mut game_ui: Option<&mut dyn FnMut(&egui::Context)>,
+    ) -> Option<Overlay> {
+        if !self.visible && game_ui.is_none() {
+            return None;
+        }
+        let input = self.state.take_egui_input(window);
+        let visible = self.visible;
+        let output = self.context.run_pass(input, |context| {
+            if let Some(ui) = game_ui.as_mut() {
+                ui(context);
+            }
+            if !visible {
+                return;
+            }
+            // Bottom right, in a small fixed font: clear of the games' HUD (objective top left,
+            // counters top right, crosshair in the middle).
+            egui::Window::new("Candela stats (F3)")
+                .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
+                .resizable(false)
+                .title_bar(false)
+                .show(context, |ui| {
+                    ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
+                    ui.spacing_mut().interact_size.y = 13.0;
+                    ui.spacing_mut().item_spacing.y = 1.0;
+                    ui.label(egui::RichText::new("Candela stats (F3)").strong());
+                    egui::Grid::new("stats")
+                        .num_columns(2)
+                        .spacing([8.0, 1.0])
+                        .show(ui, |ui| {
+                            for (label, value) in stats.lines() {
+                                ui.label(label);
+                                ui.label(egui::RichText::new(value).monospace().size(11.0));
+                                ui.end_row();
+                            }
+                        });
+                });
+        });
+        self.state
+            .handle_platform_output(window, output.platform_output);
+        let primitives = self
+            .context
+            .tessellate(output.shapes, output.pixels_per_point);
+        Some(Overlay {
+            primitives,
+            textures_delta: output.textures_delta,
+            pixels_per_point: output.pixels_per_point,
+        })
+    }
+}
