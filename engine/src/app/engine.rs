@@ -25,7 +25,7 @@ use crate::assets::{CameraDesc, Model, RenderSettings, SkyDesc, SunDesc};
 use crate::audio::Audio;
 use crate::commit::{Motion, PresentRequest};
 use crate::ecs::ModelHandle;
-use crate::extract::Extractor;
+use crate::extract::{Extractor, RenderCamera};
 use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
@@ -80,7 +80,7 @@ pub struct Engine {
     pub(super) extractor: Extractor,
     pub(super) render: RenderThread,
     pub(super) frame: u64,
-    pub(super) camera: CameraDesc,
+    pub(super) camera: RenderCamera,
     pub(super) cut: bool,
     pub(super) capture_next: bool,
     pub(super) present_next: Option<PresentRequest>,
@@ -148,7 +148,7 @@ impl Engine {
         Self {
             world: World::new(),
             upkeep: Upkeep::new(),
-            camera: environment.default_camera,
+            camera: RenderCamera::from_desc(&environment.default_camera),
             environment,
             clock: FixedClock::default(),
             physics: PhysicsWorld::new(),
@@ -179,7 +179,7 @@ impl Engine {
     /// The view used while no entity carries a camera.
     pub fn set_default_camera(&mut self, camera: CameraDesc) {
         self.environment.default_camera = camera;
-        self.camera = camera;
+        self.camera = RenderCamera::from_desc(&camera);
         self.cut = true;
     }
 
