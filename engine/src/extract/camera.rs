@@ -10,8 +10,13 @@
 //!
 //! Owns: turning a [`CameraDesc`] (the level file's authoring form: position, look-at, up hint,
 //! degrees) into that basis, with the very float operations the frame uniforms used before the
-//! basis was built here (issue 31): every committed replay's state hash and every image stays
-//! the same bit for bit. Main thread. Must not: know which tracer, listener or game reads it.
+//! basis was built here (issue 31), so nothing changed bit for bit: not a committed replay's
+//! state hash, not the listener, not an image while render space's origin is the world origin
+//! (every committed level and test scene). The frame uniforms used to build the basis from the
+//! eye and look-at *after* subtracting the origin; where the origin had moved and that
+//! subtraction rounded, the world-space basis differs from the old one by a rounding of the
+//! direction (about 1e-7 rad). Main thread. Must not: know which tracer, listener or game reads
+//! it.
 
 use glam::{Mat3, Quat, Vec3};
 
@@ -198,6 +203,69 @@ mod tests {
             c.focus_distance_meters(),
             (Vec3::new(3.0, -1.5, -5.0)).length()
         );
+    }
+
+    /// The basis, focus distance and listener as the frame uniforms and audio rebuilt them from
+    /// a `CameraDesc` before issue 31 (render space's origin at the world origin), kept here to
+    /// pin the move to no change of a bit.
+    fn before(desc: &CameraDesc) -> ([Vec3; 3], f32, Option<Quat>) {
+        let position = Vec3::from(desc.position);
+        let look_at = Vec3::from(desc.look_at);
+        let forward = (look_at - position).try_normalize().unwrap_or(Vec3::NEG_Z);
+        let right = forward
+            .cross(Vec3::from(desc.up))
+            .try_normalize()
+            .unwrap_or_else(|| forward.any_orthonormal_vector());
+        let up = right.cross(forward);
+        let focus = desc
+            .focus_distance
+            .unwrap_or_else(|| (look_at - position).length())
+            .max(1e-4);
+        let f = (look_at - position).normalize_or_zero();
+        let r = f.cross(Vec3::from(desc.up)).normalize_or_zero();
+        let listener = (f != Vec3::ZERO && r != Vec3::ZERO).then(|| {
+            let basis = Mat3::from_cols(r, r.cross(f), -f);
+            Quat::from_mat3(&basis).normalize()
+        });
+        ([right, up, forward], focus, listener)
+    }
+
+    #[test]
+    fn the_basis_is_the_one_rebuilt_before_bit_for_bit() {
+        let mut seed = 0x9e37_79b9u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (seed >> 8) as f32 / (1u32 << 24) as f32
+        };
+        let rig = CameraRig {
+            vertical_fov: 1.2,
+            aperture_radius: 0.01,
+            focus_distance: 3.0,
+        };
+        for _ in 0..20_000 {
+            let position = Vec3::new(next(), next(), next()) * 200.0 - 100.0;
+            let (yaw, pitch) = (next() * 6.3 - 3.15, next() * 3.1 - 1.55);
+            let rotation = Quat::from_euler(glam::EulerRot::YXZ, yaw, pitch, 0.0);
+            // What the extractor handed over before: the look-at form of the pose.
+            let desc = CameraDesc {
+                position: position.to_array(),
+                look_at: (position + rotation * Vec3::NEG_Z).to_array(),
+                up: (rotation * Vec3::Y).to_array(),
+                vertical_fov_deg: rig.vertical_fov.to_degrees(),
+                aperture_radius: rig.aperture_radius,
+                focus_distance: None,
+            };
+            let ([right, up, forward], focus, listener) = before(&desc);
+            let c = RenderCamera::from_pose(position, rotation, &rig);
+            assert_eq!((c.right(), c.up(), c.forward()), (right, up, forward));
+            assert_eq!(
+                c.vertical_fov_radians(),
+                desc.vertical_fov_deg.clamp(1e-3, 179.0).to_radians()
+            );
+            assert_eq!(Some(c.orientation()), listener);
+            let authored = RenderCamera::from_desc(&desc);
+            assert_eq!(authored.focus_distance_meters(), focus);
+        }
     }
 
     #[test]
