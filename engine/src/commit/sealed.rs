@@ -1,14 +1,16 @@
 //! [`Commit`]: one frame's deltas for the render thread (Brigade §4.4, Figure 7).
 //!
 //! Owns: the sealed frame — buffer writes (instances, refitted or rebuilt BLAS data, deformed
-//! vertices, materials, light table, TLAS) with the header they leave behind, the view, sun, sky
+//! vertices, materials, light table, TLAS) with the header they leave behind, the view (a
+//! `RenderCamera`, never the level file's `CameraDesc`), sun, sky
 //! and render settings, how much moved (for converging), and in a window what to present (with
 //! the stats overlay). Static data travels once, in the first commit after it is loaded.
 //! Must not: reference the ECS (the render thread never sees game state) or carry the main
 //! thread's telemetry (timers and upkeep counts stay in its `FrameReport`).
 
 use super::present::PresentRequest;
-use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
+use crate::assets::{RenderSettings, SkyDesc, SunDesc};
+use crate::extract::RenderCamera;
 use crate::scene::{SceneHeader, SceneWrite};
 
 /// What moved since the previous commit, for the converging policy.
@@ -28,7 +30,9 @@ pub struct Commit {
     pub frame: u64,
     pub writes: Vec<SceneWrite>,
     pub header: SceneHeader,
-    pub camera: CameraDesc,
+    /// The view, built once by the extractor (world space: eye, camera-to-world basis, field
+    /// of view, lens); the render side reads it as is.
+    pub camera: RenderCamera,
     pub sun: Option<SunDesc>,
     pub sky: SkyDesc,
     pub render: RenderSettings,

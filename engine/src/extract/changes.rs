@@ -2,7 +2,8 @@
 //! changed, once per entity (Bevy's extract phase, rapier's modified-set idea).
 //!
 //! Owns: the memory of what each renderable entity looked like at the last extraction, and the
-//! camera. Produces [`SceneChange`]s (place, remove, deform) and the view. Entities marked
+//! camera. Produces [`SceneChange`]s (place, remove, deform) and the view (a [`RenderCamera`],
+//! built here once per extraction). Entities marked
 //! [`Static`] are extracted once and never compared again, unless marked [`Restyled`]. Main thread, after transforms are
 //! propagated. Must not: touch BVHs or buffers (the upkeep applies the changes).
 
@@ -11,7 +12,7 @@ use std::collections::HashMap;
 use glam::{Mat4, Quat, Vec3};
 use hecs::{Entity, World};
 
-use crate::assets::CameraDesc;
+use super::camera::RenderCamera;
 use crate::ecs::{
     CameraRig, Deformable, GlobalTransform, LightGroup, ModelHandle, Renderable, Restyled, Static,
 };
@@ -52,7 +53,7 @@ struct Placed {
 pub struct Extracted {
     pub changes: Vec<SceneChange>,
     /// The view of the first entity with a [`CameraRig`], if any.
-    pub camera: Option<CameraDesc>,
+    pub camera: Option<RenderCamera>,
     /// How far that camera moved (metres + radians) since it last counted as moving: 0 while
     /// it stays within [`CAMERA_STILL_TOLERANCE`] of that pose; infinite for its first view.
     pub camera_motion: f32,
@@ -154,16 +155,7 @@ impl Extractor {
             .next()
         {
             let (_, rotation, position) = global.0.to_scale_rotation_translation();
-            let forward = rotation * Vec3::NEG_Z;
-            let up = rotation * Vec3::Y;
-            out.camera = Some(CameraDesc {
-                position: position.to_array(),
-                look_at: (position + forward).to_array(),
-                up: up.to_array(),
-                vertical_fov_deg: rig.vertical_fov.to_degrees(),
-                aperture_radius: rig.aperture_radius,
-                focus_distance: Some(rig.focus_distance),
-            });
+            out.camera = Some(RenderCamera::from_pose(position, rotation, rig));
             out.camera_motion = match self.camera {
                 Some((p, r)) => {
                     let moved = (position - p).length() + rotation_angle(r, rotation);

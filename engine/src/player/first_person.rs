@@ -25,8 +25,8 @@ use hecs::{Entity, World};
 
 use super::input::PlayerInput;
 use super::interact::{Focus, FocusKind, focus};
-use crate::assets::CameraDesc;
 use crate::ecs::{CameraRig, Transform};
+use crate::extract::RenderCamera;
 use crate::query::Queries;
 use crate::sim::physics::{
     Carrier, CarryRequest, CharacterController, CharacterInput, PhysicsWorld, Placement,
@@ -164,16 +164,17 @@ impl FirstPersonPlayer {
         Ok(player)
     }
 
-    /// Spawns a player whose eye is where `camera` (a level's camera) is, looking towards its
-    /// target horizontally.
+    /// Spawns a player whose eye is where `camera` (a level's camera) is, facing its view
+    /// direction horizontally (yaw about +Y, radians, 0 looking along −Z); yaw 0 when the view
+    /// has no horizontal part or no direction at all.
     pub fn at_view(
         world: &mut World,
-        camera: &CameraDesc,
+        camera: &RenderCamera,
         config: FirstPersonConfig,
     ) -> Result<Self, ShapeError> {
-        let eye = Vec3::from(camera.position);
-        let ahead = Vec3::from(camera.look_at) - eye;
-        let yaw = if ahead.x == 0.0 && ahead.z == 0.0 {
+        let eye = camera.position();
+        let ahead = camera.forward();
+        let yaw = if camera.forward_is_fallback() || (ahead.x == 0.0 && ahead.z == 0.0) {
             0.0
         } else {
             (-ahead.x).atan2(-ahead.z)

@@ -1,16 +1,16 @@
 //! The camera and the per-render uniforms built around it.
 //!
-//! Owns: turning a `CameraDesc` (position, look-at, up, vertical FOV, lens) plus image size,
-//! sampling settings, sun and sky into a `GpuFrameUniforms`. The pixel-to-ray mapping is the
+//! Owns: turning a `RenderCamera` (eye, camera-to-world basis, vertical FOV, lens; built once by
+//! `extract`, never rebuilt here) plus image size, sampling settings, sun and sky into a
+//! `GpuFrameUniforms`. The pixel-to-ray mapping is the
 //! one of the reference renders (`shared/external/reference/*/scene.md`): for pixel (px, py),
 //! py downward, sampled at (u, v) in [0,1)², `sx = 2 (px+u)/W − 1`, `sy = 1 − 2 (py+v)/H`,
 //! direction = normalize(forward + sx·right + sy·up) with right and up pre-scaled by
 //! tan(vfov/2)·aspect and tan(vfov/2).
 //! Must not: know which tracer consumes the uniforms.
 
-use glam::Vec3;
-
-use crate::assets::{CameraDesc, RenderSettings, SkyDesc, SunDesc};
+use crate::assets::{RenderSettings, SkyDesc, SunDesc};
+use crate::extract::RenderCamera;
 use crate::layout::GpuFrameUniforms;
 use crate::scene::SceneHeader;
 use crate::scene::lights::fill_sun_and_sky;
@@ -73,40 +73,32 @@ pub fn method_of(sampling: crate::assets::LightSampling) -> u32 {
 }
 
 /// Builds the uniforms of one render call. Light totals, the TLAS root and the render-space
-/// origin come from the scene's header: the camera (world metres) is placed in render space
-/// (world − origin, see `accel::origin`) here, so tracers only ever see render space.
+/// origin come from the scene's header: the camera's eye (world metres) is placed in render
+/// space (world − origin, see `accel::origin`) here, so tracers only ever see render space; its
+/// basis is direction only and is used as it is. `camera` is a `&RenderCamera` (a commit's), or
+/// a level's `&CameraDesc`, converted here by `RenderCamera::from_desc` (tools and tests that
+/// render a level's view).
 pub fn frame_uniforms(
-    camera: &CameraDesc,
+    camera: impl Into<RenderCamera>,
     sun: Option<&SunDesc>,
     sky: &SkyDesc,
     frame: &FrameSettings,
     scene: &SceneHeader,
 ) -> GpuFrameUniforms {
+    let camera: RenderCamera = camera.into();
     let (light_count, light_weight_total, tlas_root) =
         (scene.light_count, scene.light_weight_total, scene.tlas_root);
-    let position = Vec3::from(camera.position) - scene.origin;
-    let look_at = Vec3::from(camera.look_at) - scene.origin;
-    let forward = (look_at - position).try_normalize().unwrap_or(Vec3::NEG_Z);
-    let up_hint = Vec3::from(camera.up);
-    let right = forward
-        .cross(up_hint)
-        .try_normalize()
-        .unwrap_or_else(|| forward.any_orthonormal_vector());
-    let up = right.cross(forward);
-    let tan_half = (camera.vertical_fov_deg.clamp(1e-3, 179.0).to_radians() * 0.5).tan();
+    let position = camera.position() - scene.origin;
+    let tan_half = (camera.vertical_fov_radians() * 0.5).tan();
     let aspect = frame.width.max(1) as f32 / frame.height.max(1) as f32;
-    let focus_distance = camera
-        .focus_distance
-        .unwrap_or_else(|| (look_at - position).length())
-        .max(1e-4);
     let mut u = GpuFrameUniforms {
         camera_position: position.to_array(),
-        lens_radius: camera.aperture_radius.max(0.0),
-        camera_right: (right * tan_half * aspect).to_array(),
-        focus_distance,
-        camera_up: (up * tan_half).to_array(),
+        lens_radius: camera.lens_radius_meters(),
+        camera_right: (camera.right() * tan_half * aspect).to_array(),
+        focus_distance: camera.focus_distance_meters(),
+        camera_up: (camera.up() * tan_half).to_array(),
         film_blend: frame.film_blend,
-        camera_forward: forward.to_array(),
+        camera_forward: camera.forward().to_array(),
         method: frame.method,
         sun_direction: [0.0, 1.0, 0.0],
         sun_cos_radius: 1.0,

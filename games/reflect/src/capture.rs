@@ -30,7 +30,7 @@ pub fn capture_chambers(
     for (i, chamber) in world.chambers.iter().enumerate() {
         let camera = Level::read(&world.files[i + 1])?.camera;
         let mut game = ReflectGame::new(world.clone(), i);
-        game.start_at_view(&camera);
+        game.start_at_view(&candela::extract::RenderCamera::from_desc(&camera));
         let mut engine = Engine::new(RenderConfig::cpu(width, height), game.inner().environment())?;
         game.setup(&mut engine)
             .map_err(|e| anyhow::anyhow!("{e}"))?;

@@ -6,6 +6,7 @@
 
 use candela::app::{Engine, Game, KeyCode};
 use candela::assets::CameraDesc;
+use candela::extract::RenderCamera;
 use candela::render::RenderConfig;
 use glam::{Vec3, Vec3Swizzles};
 use reflect::game::{ReflectEvent, ReflectGame};
@@ -55,14 +56,14 @@ fn press_e(engine: &mut Engine, game: &mut ReflectGame) {
 fn holding_the_cube(world: &ReflectWorld, distance: f32) -> (Engine, ReflectGame, hecs::Entity) {
     let (mut engine, mut game, cube) = chamber_1(world);
     let eye = PLATE + Vec3::new(0.0, 1.65, distance);
-    game.start_at_view(&CameraDesc {
+    game.start_at_view(&RenderCamera::from_desc(&CameraDesc {
         position: eye.to_array(),
         look_at: (eye - Vec3::Z).to_array(),
         up: [0.0, 1.0, 0.0],
         vertical_fov_deg: 70.0,
         aperture_radius: 0.0,
         focus_distance: None,
-    });
+    }));
     frames(&mut engine, &mut game, 5);
     // The cube on the floor a metre ahead (south of the plate, so it does not press it), the
     // player looking at it, as one who walked up to it.

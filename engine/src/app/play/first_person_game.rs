@@ -226,7 +226,7 @@ impl Game for FirstPersonGame {
         // must give the same outcome at any frame rate.
         engine.settle_every_step(true);
         self.spawned = engine.spawn_level(&self.level);
-        let camera = self.level.scene.camera;
+        let camera = crate::extract::RenderCamera::from_desc(&self.level.scene.camera);
         let player = FirstPersonPlayer::at_view(engine.world_mut(), &camera, self.config)
             .map_err(|e| format!("{}: the player: {e}", self.level_path.display()))?;
         self.player = Some(player);

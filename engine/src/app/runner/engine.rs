@@ -26,7 +26,7 @@ use crate::assets::{CameraDesc, Model};
 use crate::audio::Audio;
 use crate::commit::{Motion, PresentRequest};
 use crate::ecs::ModelHandle;
-use crate::extract::Extractor;
+use crate::extract::{Extractor, RenderCamera};
 use crate::query::Queries;
 use crate::render::present::PresentTarget;
 use crate::render::{RenderConfig, RenderError, RenderThread, Rendered};
@@ -71,7 +71,7 @@ pub struct Engine {
     pub(in crate::app) extractor: Extractor,
     pub(in crate::app) render: RenderThread,
     pub(in crate::app) frame: u64,
-    pub(in crate::app) camera: CameraDesc,
+    pub(in crate::app) camera: RenderCamera,
     pub(in crate::app) cut: bool,
     pub(in crate::app) capture_next: bool,
     pub(in crate::app) present_next: Option<PresentRequest>,
@@ -139,7 +139,7 @@ impl Engine {
         Self {
             world: World::new(),
             upkeep: Upkeep::new(),
-            camera: environment.default_camera,
+            camera: RenderCamera::from_desc(&environment.default_camera),
             environment,
             clock: FixedClock::default(),
             physics: PhysicsWorld::new(),
@@ -170,7 +170,7 @@ impl Engine {
     /// The view used while no entity carries a camera.
     pub fn set_default_camera(&mut self, camera: CameraDesc) {
         self.environment.default_camera = camera;
-        self.camera = camera;
+        self.camera = RenderCamera::from_desc(&camera);
         self.cut = true;
     }
 

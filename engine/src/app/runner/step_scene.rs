@@ -42,22 +42,16 @@ impl Engine {
         }
         self.follow_with_audio();
         // Camera-relative rendering: keep render space's origin near the camera.
-        self.upkeep
-            .follow_camera(glam::Vec3::from(self.camera.position));
+        self.upkeep.follow_camera(self.camera.position());
     }
 
-    /// Puts the listener at the camera and moves spatial emitters with their entities.
+    /// Puts the listener at the camera (its basis as built by the extractor; a stand-in
+    /// basis leaves the listener turned as it was) and moves spatial emitters with their
+    /// entities.
     fn follow_with_audio(&mut self) {
-        let c = &self.camera;
-        let position = glam::Vec3::from(c.position);
-        let forward = (glam::Vec3::from(c.look_at) - position).normalize_or_zero();
-        let right = forward.cross(glam::Vec3::from(c.up)).normalize_or_zero();
-        if forward != glam::Vec3::ZERO && right != glam::Vec3::ZERO {
-            // The listener looks along its local −Z with +Y up (right-handed).
-            let up = right.cross(forward);
-            let basis = glam::Mat3::from_cols(right, up, -forward);
+        if !self.camera.is_fallback() {
             self.audio
-                .set_listener(position, glam::Quat::from_mat3(&basis).normalize());
+                .set_listener(self.camera.position(), self.camera.orientation());
         }
         sync_emitters(&mut self.audio, &mut self.world);
     }

@@ -106,11 +106,17 @@ impl ReflectGame {
         }
     }
 
-    /// Puts the player's eye at `camera` (its position and the direction to its `look_at`)
-    /// at the first step, after the chamber's start: a chamber's preview view.
-    pub fn start_at_view(&mut self, camera: &candela::assets::CameraDesc) {
-        let eye = glam::Vec3::from(camera.position);
-        let d = glam::Vec3::from(camera.look_at) - eye;
+    /// Puts the player's eye at `camera` (its eye, world metres, and its view direction as
+    /// yaw about +Y and pitch, radians) at the first step, after the chamber's start: a
+    /// chamber's preview view. A view with no direction of its own (`look_at` at the eye)
+    /// reads as yaw −π, pitch 0, as it always has.
+    pub fn start_at_view(&mut self, camera: &candela::extract::RenderCamera) {
+        let eye = camera.position();
+        let d = if camera.forward_is_fallback() {
+            glam::Vec3::ZERO
+        } else {
+            camera.forward()
+        };
         let yaw = (-d.x).atan2(-d.z);
         let pitch = d.y.atan2(d.with_y(0.0).length());
         self.pending_view = Some((eye, yaw, pitch));
