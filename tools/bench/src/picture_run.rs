@@ -109,7 +109,7 @@ pub fn play(
         Drive::Still | Drive::Turn(_) => {
             let camera = Level::read(&world.files[chamber + 1])?.camera;
             let mut game = ReflectGame::new(world.clone(), chamber);
-            game.start_at_view(&camera);
+            game.start_at_view(&candela::extract::RenderCamera::from_desc(&camera));
             game
         }
     };
