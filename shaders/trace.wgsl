@@ -268,7 +268,9 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             if (hit.found) {
                 t_end = hit.t;
             }
-            result += throughput * seen_lines(ray, t_end, travelled, pixel_angle);
+            let seen = seen_lines(ray, t_end, travelled, pixel_angle);
+            result += throughput * seen.xyz;
+            throughput *= 1.0 - seen.w;
             travelled += t_end;
         }
         if (!hit.found) {

@@ -54,11 +54,13 @@ fn closest_approach(o: vec3<f32>, d: vec3<f32>, t_end: f32, a: vec3<f32>, e: vec
     return vec2<f32>(t, length(o + d * t - (a + e * s)));
 }
 
-// Radiance the camera sees of the lines along `ray` before `t_end`, prefiltered over a pixel
-// footprint (LINE_FOOTPRINT_PIXELS pixels) at distance t is (travelled + t) * pixel_angle metres wide.
-fn seen_lines(ray: Ray, t_end_in: f32, travelled: f32, pixel_angle: f32) -> vec3<f32> {
+// What the camera sees of the lines along `ray` before `t_end`, prefiltered over a pixel whose
+// footprint (LINE_FOOTPRINT_PIXELS pixels) at distance t is (travelled + t) * pixel_angle metres
+// wide: radiance in xyz, in w the share of the footprint the line covers (what lies behind is
+// weighted by 1 - w). Overlapping lines: the most covering one shows.
+fn seen_lines(ray: Ray, t_end_in: f32, travelled: f32, pixel_angle: f32) -> vec4<f32> {
     let t_end = min(t_end_in, LINE_FAR);
-    var sum = vec3<f32>(0.0);
+    var seen = vec4<f32>(0.0);
     for (var i = 0u; i < MAX_LINES; i += 1u) {
         let line = lines[i];
         if (line.radius <= 0.0) {
@@ -67,9 +69,10 @@ fn seen_lines(ray: Ray, t_end_in: f32, travelled: f32, pixel_angle: f32) -> vec3
         let ct = closest_approach(ray.origin, ray.direction, t_end, line.start, line.end - line.start);
         let footprint = max((travelled + ct.x) * pixel_angle, 1e-6);
         let covered = min(ct.y + 0.5 * footprint, line.radius) - max(ct.y - 0.5 * footprint, -line.radius);
-        if (covered > 0.0) {
-            sum += line.radiance.xyz * (covered / footprint);
+        let share = clamp(covered / footprint, 0.0, 1.0);
+        if (share > seen.w) {
+            seen = vec4<f32>(line.radiance.xyz * share, share);
         }
     }
-    return sum;
+    return seen;
 }

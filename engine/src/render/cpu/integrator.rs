@@ -124,7 +124,9 @@ pub fn radiance(
         if camera_chain {
             hit = past_lines(scene, tracer, &mut ray, hit);
             let t_end = hit.map_or(f32::INFINITY, |h| h.t);
-            result += throughput * seen_lines(lines, &ray, t_end, travelled, pixel_angle);
+            let (seen, coverage) = seen_lines(lines, &ray, t_end, travelled, pixel_angle);
+            result += throughput * seen;
+            throughput *= 1.0 - coverage;
             travelled += t_end;
         }
         let Some(hit) = hit else {

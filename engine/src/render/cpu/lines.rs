@@ -66,31 +66,36 @@ pub fn past_lines(
     hit
 }
 
-/// Radiance the camera sees of `lines` along `ray` (unit direction) before `t_end`, prefiltered
-/// over a pixel: `travelled` is the distance the camera path covered before this ray (metres,
-/// through mirrors) and `pixel_angle` the footprint's angular size (radians: one pixel's times
-/// [`LINE_FOOTPRINT_PIXELS`]), so the footprint at distance `t` along the ray is
-/// `(travelled + t) · pixel_angle` metres wide.
+/// What the camera sees of `lines` along `ray` (unit direction) before `t_end`, prefiltered over
+/// a footprint: (radiance, coverage). The coverage in [0, 1] is the share of the footprint the
+/// line hides: the caller weights what lies behind by `1 − coverage`, as an opaque prism covering
+/// that share of the pixel would. Where lines overlap (a beam's pieces meet at each turn) the
+/// most covering one shows, as the front prism would. `travelled` is the distance the camera
+/// path covered before this ray (metres, through mirrors) and `pixel_angle` the footprint's
+/// angular size (radians: one pixel's times [`LINE_FOOTPRINT_PIXELS`]), so the footprint at
+/// distance `t` along the ray is `(travelled + t) · pixel_angle` metres wide.
 pub fn seen_lines(
     lines: &[GpuLine],
     ray: &Ray,
     t_end: f32,
     travelled: f32,
     pixel_angle: f32,
-) -> Vec3 {
+) -> (Vec3, f32) {
     let t_end = t_end.min(FAR);
-    let mut sum = Vec3::ZERO;
+    let (mut radiance, mut coverage) = (Vec3::ZERO, 0.0f32);
     for line in lines {
         let (a, b) = (Vec3::from(line.start), Vec3::from(line.end));
         let (t, distance) = closest_approach(ray.origin, ray.direction, t_end, a, b - a);
         let footprint = ((travelled + t) * pixel_angle).max(1e-6);
         let covered = (distance + 0.5 * footprint).min(line.radius)
             - (distance - 0.5 * footprint).max(-line.radius);
-        if covered > 0.0 {
-            sum += Vec3::from_slice(&line.radiance[..3]) * (covered / footprint);
+        let share = (covered / footprint).clamp(0.0, 1.0);
+        if share > coverage {
+            coverage = share;
+            radiance = Vec3::from_slice(&line.radiance[..3]) * share;
         }
     }
-    sum
+    (radiance, coverage)
 }
 
 /// The closest approach of the ray piece `o + t·d`, `t` in [0, `t_end`] (`d` unit), to the
@@ -203,7 +208,8 @@ mod tests {
         for k in 0..n {
             let y = -0.05 + 0.1 * (k as f32 + 0.5) / n as f32;
             let r = ray(Vec3::new(0.0, y, 2.0), Vec3::NEG_Z);
-            let seen = seen_lines(&l, &r, f32::INFINITY, 0.0, pixel_angle);
+            let (seen, coverage) = seen_lines(&l, &r, f32::INFINITY, 0.0, pixel_angle);
+            assert!((seen.x - 10.0 * coverage).abs() < 1e-4);
             integral += seen.x * 0.1 / n as f32;
             lit += usize::from(seen.x > 0.0);
         }
@@ -213,7 +219,7 @@ mod tests {
         assert!((strip - 0.024).abs() < 1e-3, "{strip}");
         // Behind the hit: nothing.
         let r = ray(Vec3::new(0.0, 0.0, 2.0), Vec3::NEG_Z);
-        assert_eq!(seen_lines(&l, &r, 1.0, 0.0, pixel_angle), Vec3::ZERO);
+        assert_eq!(seen_lines(&l, &r, 1.0, 0.0, pixel_angle), (Vec3::ZERO, 0.0));
     }
 
     /// A line wider than the footprint is seen at its full radiance inside and not outside.
@@ -226,7 +232,7 @@ mod tests {
         )];
         let at = |y: f32| {
             let r = ray(Vec3::new(0.0, y, 1.0), Vec3::NEG_Z);
-            seen_lines(&l, &r, f32::INFINITY, 0.0, 0.001).x
+            seen_lines(&l, &r, f32::INFINITY, 0.0, 0.001).0.x
         };
         assert!((at(0.0) - 10.0).abs() < 1e-4);
         assert!((at(0.04) - 10.0).abs() < 1e-4);
