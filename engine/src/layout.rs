@@ -7,6 +7,8 @@
 //! and size in `shaders/shared/types.wgsl`; `tests/cross/layout.rs` parses the WGSL with naga and
 //! compares sizes and offsets of every field.
 //!
+//! One file past the ~400-line guide on purpose: it is the one twin of `types.wgsl`, so a
+//! reader compares the two side by side, struct by struct, in the same order.
 //! Must not: hold logic beyond constructors and bit-packing helpers. This file is top-level
 //! (not under `render/` or `accel/`) because `accel` writes the BVH structs, `render` writes
 //! the rest, and both tracers and `query` read all of them.

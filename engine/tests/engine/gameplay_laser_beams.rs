@@ -265,18 +265,21 @@ fn the_beam_shows_its_emission_and_lights_the_floor() -> anyhow::Result<()> {
     // Seen head-on, a fully covered pixel is the beam's radiance: black, emitting, nothing
     // behind it, no noise (f32 sums: 1e-4 relative) where the prefilter's strip lies inside
     // the beam; near the square prism's edges (a cylinder of its half-width is what the
-    // prefilter covers) a little less, never more, and the background then shows through.
+    // prefilter covers) a little less, never more, and the background then shows through
+    // (measured: 1,481 of 1,872 pixel renders exact, the dimmest at 0.936 of the beam).
     let mut exact = 0;
+    let mut lowest = f32::INFINITY;
     for &p in &beam_pixels {
         for film in &lit {
             let seen = film[p];
             let share = seen / RADIANCE;
             assert!(
                 share.max_element() < 1.0 + 1e-4
-                    && share.min_element() > 0.85
+                    && share.min_element() > 0.9
                     && (share - Vec3::splat(share.x)).abs().max_element() < 0.02,
                 "pixel {p}: {seen}, the beam emits {RADIANCE}"
             );
+            lowest = lowest.min(share.min_element());
             exact += usize::from((seen - RADIANCE).abs().max_element() < 1e-4 * RADIANCE.x);
         }
         let behind = dark.iter().map(|f| f[p].x).fold(0.0, f32::max);
@@ -285,6 +288,10 @@ fn the_beam_shows_its_emission_and_lights_the_floor() -> anyhow::Result<()> {
             "without the beam pixel {p} is {behind}"
         );
     }
+    eprintln!(
+        "{} beam pixel renders: {exact} exact, the dimmest at {lowest:.3} of the beam",
+        beam_pixels.len() * lit.len()
+    );
     assert!(
         exact * 2 >= beam_pixels.len() * lit.len(),
         "only {exact} of {} beam pixel renders show exactly the beam's radiance",

@@ -18,7 +18,7 @@ use super::error::BalanceError;
 use super::measure::FrameTimes;
 use super::record::trace_unit;
 use super::split::{Split, unit_rows};
-use crate::layout::GpuFrameUniforms;
+use crate::layout::{GpuFrameUniforms, GpuLine};
 use crate::render::film::Film;
 use crate::render::tracer::RayCounts;
 use crate::scene::RenderScene;
@@ -102,6 +102,8 @@ impl CpuPool {
         start: Instant,
         unit_seconds: &mut [f64],
     ) -> PartTimes {
+        // The line emitters, gathered once for every unit of the part.
+        let lines = &scene.lines();
         let results: Vec<(Vec<UnitResult>, f64)> = std::thread::scope(|s| {
             let handles: Vec<_> = self
                 .pools
@@ -113,7 +115,7 @@ impl CpuPool {
                         let done = pool.install(|| {
                             units
                                 .par_iter()
-                                .map(|&unit| render_unit(scene, u, unit))
+                                .map(|&unit| render_unit(scene, u, lines, unit))
                                 .collect::<Vec<_>>()
                         });
                         (done, start.elapsed().as_secs_f64())
@@ -159,7 +161,12 @@ pub struct PartTimes {
 }
 
 /// Renders one unit on the calling thread.
-fn render_unit(scene: &RenderScene, u: &GpuFrameUniforms, unit: usize) -> UnitResult {
-    let (sums, counts, seconds) = trace_unit(scene, u, unit);
+fn render_unit(
+    scene: &RenderScene,
+    u: &GpuFrameUniforms,
+    lines: &[GpuLine],
+    unit: usize,
+) -> UnitResult {
+    let (sums, counts, seconds) = trace_unit(scene, u, lines, unit);
     (unit, sums, counts, seconds)
 }

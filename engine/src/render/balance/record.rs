@@ -9,7 +9,7 @@
 use rayon::prelude::*;
 
 use super::split::{unit_count, unit_rows};
-use crate::layout::GpuFrameUniforms;
+use crate::layout::{GpuFrameUniforms, GpuLine};
 use crate::render::cpu::integrator::RayCounts;
 use crate::render::cpu::trace_rect;
 use crate::scene::RenderScene;
@@ -38,10 +38,12 @@ pub(super) fn thread_cpu_seconds() -> f64 {
 }
 
 /// One unit rendered whole on the calling thread: its pixel sums (row-major), the rays traced
-/// and the thread's CPU seconds. The pool and the recorder both use it.
+/// and the thread's CPU seconds. The pool and the recorder both use it; `lines` are the scene's
+/// line emitters ([`RenderScene::lines`]), gathered once per frame by the caller.
 pub(super) fn trace_unit(
     scene: &RenderScene,
     u: &GpuFrameUniforms,
+    lines: &[GpuLine],
     unit: usize,
 ) -> (Vec<glam::Vec3>, RayCounts, f64) {
     let tracer = scene.trace_scene();
@@ -51,7 +53,7 @@ pub(super) fn trace_unit(
         scene,
         &tracer,
         u,
-        &scene.lines(),
+        lines,
         0..u.width,
         unit_rows(unit, u.height),
         &mut counts,
@@ -62,10 +64,11 @@ pub(super) fn trace_unit(
 /// Renders every unit of the frame `u` describes (all `u.spp` samples of every pixel) and
 /// returns each unit's cost, top to bottom.
 pub fn record_unit_costs(scene: &RenderScene, u: &GpuFrameUniforms) -> Vec<UnitCost> {
+    let lines = &scene.lines();
     (0..unit_count(u.height))
         .into_par_iter()
         .map(|unit| {
-            let (sums, counts, seconds) = trace_unit(scene, u, unit);
+            let (sums, counts, seconds) = trace_unit(scene, u, lines, unit);
             std::hint::black_box(sums);
             UnitCost {
                 seconds,

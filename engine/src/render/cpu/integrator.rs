@@ -7,6 +7,9 @@
 //! sampling (power heuristic); Russian roulette after `roulette_start` scattering events;
 //! Beer–Lambert absorption inside dielectrics; sky radiance for escaping rays; line emitters
 //! seen prefiltered along camera rays and their perfect specular turns (`lines.rs`).
+//! Past the ~400-line guide on purpose: the path loop and its next-event estimation are one
+//! algorithm read against `shaders/trace.wgsl` line by line (the same random draws in the same
+//! order); the pieces that stand alone live beside it (`bsdf`, `light_tree`, `lines`, `surface`).
 //! Must not: write the film or know about tiles and threads.
 
 use glam::{Vec2, Vec3};
