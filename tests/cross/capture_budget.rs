@@ -32,6 +32,16 @@ fn capture_stops_at_the_time_budget_and_spp_still_caps_it() {
         "stopped before the budget: {} s",
         report.render_seconds
     );
+    // The upper bound, from the run's own figures (no wall-clock limit): the budget is checked
+    // before each batch, so the run ends with the first batch that finishes past it, and
+    // without its last batch it was under the budget. A run that overshoots by even one more
+    // batch (a budget read in the wrong unit, a check after the loop) fails.
+    assert!(
+        report.render_seconds - report.slowest_batch_seconds < budget,
+        "ran past the budget by more than one batch: {} s in all, slowest batch {} s",
+        report.render_seconds,
+        report.slowest_batch_seconds
+    );
     assert!(
         report.spp >= 2 && report.spp % 2 == 0,
         "whole batches: {}",

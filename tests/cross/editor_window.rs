@@ -79,6 +79,12 @@ fn mean_luma(img: &RgbImage) -> f64 {
 
 #[test]
 fn the_editor_draws_its_windows_highlight_and_gizmo_over_the_traced_chamber() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "editor_window::the_editor_draws_its_windows_highlight_and_gizmo_over_the_traced_chamber",
+    ) {
+        return;
+    }
     let out = repo().join("target/editor_window");
     let _ = std::fs::remove_dir_all(&out);
     std::fs::create_dir_all(&out).expect("screenshot folder");

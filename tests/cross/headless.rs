@@ -23,7 +23,13 @@ fn mean_rgb(img: &image::RgbImage, x0: u32, y0: u32, x1: u32, y1: u32) -> [f64; 
 
 #[test]
 fn readme_render_command_writes_a_cornell_box_png_headless() {
-    // SAFETY: this test binary holds only this test, so no other thread reads the environment.
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "headless::readme_render_command_writes_a_cornell_box_png_headless",
+    ) {
+        return;
+    }
+    // SAFETY: alone in its process (above), so no other thread reads the environment.
     unsafe {
         std::env::remove_var("DISPLAY");
         std::env::remove_var("WAYLAND_DISPLAY");

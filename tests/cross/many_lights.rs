@@ -8,8 +8,8 @@
 //! * **No bias.** The tree's means over the whole image and 4×4 regions, per channel, agree
 //!   with the reference within 4.5 σ (σ from both renders' batch spreads), 51 checks.
 //! * **Less noise.** The relative MSE at 16 spp (per pixel and channel, (batch − ref)² minus the
-//!   reference's own variance, over ref² + 0.01, averaged over pixels and batches) is lower for
-//!   the tree than for the power table. The figures are printed (`--no-capture`); they are the
+//!   reference's own variance, over ref² + 0.01, averaged over pixels and batches) is at most
+//!   half the power table's for the tree (measured 0.20×). The figures are printed (`--no-capture`); they are the
 //!   ones `docs/ACCURACY.md` quotes.
 //!
 //! `reflect_chambers_power_against_tree` (ignored: minutes) measures the same two errors on
@@ -22,6 +22,10 @@ use candela::scene::RenderScene;
 use candela_tests::{Batches, Which, region_stat, render_scene_batches_with, repo};
 
 const TREE: u32 = METHOD_DEFAULT | METHOD_LIGHT_TREE;
+
+/// The largest tree/power ratio of relative MSE at equal samples the many-room test accepts
+/// (measured: 0.20).
+const MAX_TREE_OVER_POWER: f64 = 0.5;
 
 fn rooms() -> SceneDesc {
     let dir = repo().join("assets/test_scenes/many_lights");
@@ -146,9 +150,15 @@ fn light_tree_matches_the_power_table_with_less_noise() {
         scene.lights.count
     );
     let (power, tree, _) = compare("many rooms", &desc, (64, 40), 16, 512);
+    // Measured 0.20 (docs/ACCURACY.md). Each error averages 5 batches × 7,680 pixel channels,
+    // so it moves by a few per cent between seeds: half the power table's error is far
+    // outside that noise, and a tree that picks lights barely better than the table (a ratio
+    // near 1, e.g. one that ignores distance or orientation in its importance) fails.
     assert!(
-        tree < power,
-        "the light tree is noisier than the power table on the many-room scene: {tree:.4e} vs {power:.4e}"
+        tree <= MAX_TREE_OVER_POWER * power,
+        "the light tree's error is {:.3}× the power table's on the many-room scene \
+         (at most {MAX_TREE_OVER_POWER}): {tree:.4e} vs {power:.4e}",
+        tree / power
     );
 }
 

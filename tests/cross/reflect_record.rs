@@ -1,7 +1,8 @@
 //! `reflect --record FILE` in a real window under Xvfb: the shell starts the chamber to record
 //! at once, the run's fixed steps are recorded with no one at the controls, and the Quit cue
 //! closes the window, which writes the file. One window run per process (winit allows one
-//! event loop), so this file holds one test.
+//! event loop), so the test runs alone in its process under any runner
+//! (`candela_tests::alone`).
 //!
 //! Checked: the file exists and is a Reflect recording of the chamber asked for, against the
 //! world as it is now (it opens as a replay of that chamber); it holds the steps of the run;
@@ -19,12 +20,18 @@ use reflect::world::ReflectWorld;
 
 #[test]
 fn a_windowed_run_with_record_writes_a_replay_of_its_chamber() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "reflect_record::a_windowed_run_with_record_writes_a_replay_of_its_chamber",
+    ) {
+        return;
+    }
     let scratch = repo().join("target/reflect_record");
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).expect("scratch");
     let xvfb = start_xvfb();
     set_environment(&xvfb.display, &scratch);
-    // SAFETY: this test binary holds only this test; no other thread reads the environment.
+    // SAFETY: alone in its process (above); no other thread reads the environment.
     unsafe {
         std::env::set_var("XDG_CONFIG_HOME", scratch.join("config"));
         std::env::set_var("XDG_DATA_HOME", scratch.join("data"));

@@ -1,7 +1,8 @@
 //! Reflect in a real window under Xvfb (CPU tracer, workload scaling at 30 fps): the game
 //! starts at its title menu, the first chamber's committed replay plays in the window for 400
 //! frames (the steps follow wall time, as for a player), and the Quit cue ends the run cleanly.
-//! One window run per process (winit allows one event loop), so this file holds one test.
+//! One window run per process (winit allows one event loop), so the test runs alone in its process
+//! under any runner (`candela_tests::alone`).
 //!
 //! Checked: the run ends by Quit; the title screenshot has the menu (the shell's panel colours
 //! over a third of its centre box) and the game's name in the accent colour in its top band;
@@ -62,6 +63,12 @@ fn accent_fraction(img: &RgbImage, xs: (f32, f32), ys: (f32, f32)) -> f64 {
 
 #[test]
 fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "reflect_window::reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits",
+    ) {
+        return;
+    }
     let scratch = repo().join("target/reflect_window");
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).expect("scratch");

@@ -3,7 +3,8 @@
 //! playing (the HUD), the pause menu, the settings screen, the editor hook and the ending,
 //! with a screenshot of each
 //! (written to `target/shell_screens/`), a settings change on the way, and Quit. One window run
-//! per process (winit allows one event loop), so this file holds one test.
+//! per process (winit allows one event loop), so the test runs alone in its process
+//! under any runner (`candela_tests::alone`).
 //!
 //! The screenshots are checked by what each screen must draw, against the HUD screenshot (the
 //! same view without a menu), with margins far from the picture's noise:
@@ -152,6 +153,12 @@ fn open(path: &Path) -> RgbImage {
 
 #[test]
 fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "shell_screens::title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart",
+    ) {
+        return;
+    }
     let scratch = std::env::temp_dir().join(format!("candela_shell_{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&scratch);
     std::fs::create_dir_all(&scratch).expect("scratch folder");

@@ -1,5 +1,6 @@
 //! The `view` tool in a real window under Xvfb (lavapipe presents; no GPU needed). One window
-//! run per process: winit allows one event loop per process, so this file holds one test.
+//! run per process: winit allows one event loop per process, so the test runs alone in its process
+//! under any runner (`candela_tests::alone`).
 //!
 //! It starts `Xvfb :N -screen 0 1280x720x24 -nolisten tcp` on a free display, runs the view
 //! tool's library entry on the Cornell box (CPU tracer, 4 frames of 4 spp, 160×120, no overlay)
@@ -79,6 +80,12 @@ fn quantisation(s: u8) -> f64 {
 
 #[test]
 fn view_shows_the_headless_frame_in_an_xvfb_window() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "window::view_shows_the_headless_frame_in_an_xvfb_window",
+    ) {
+        return;
+    }
     let started = Instant::now();
     let scratch = std::env::temp_dir().join(format!("candela_window_{}", std::process::id()));
     std::fs::create_dir_all(&scratch).expect("scratch folder");

@@ -1,6 +1,7 @@
 //! The demo level in a real window under Xvfb, closed the way a player closes it: the window
 //! manager's close request (`WM_DELETE_WINDOW`). One window run per process (winit allows one
-//! event loop per process), so this file holds one test.
+//! event loop per process), so the test runs alone in its process
+//! under any runner (`candela_tests::alone`).
 //!
 //! It runs the view tool's library entry on the demo city (≥ 200k static triangles, 100+ movers,
 //! the waving pool; CPU tracer, 96 × 54, 1 spp) for 3 frames with `--hold 60`, waits for the
@@ -26,6 +27,12 @@ const CLOSE_LIMIT: Duration = Duration::from_secs(20);
 
 #[test]
 fn the_demo_runs_in_a_window_and_closing_the_window_ends_it_cleanly() {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !candela_tests::alone::alone_in_process(
+        "window_close::the_demo_runs_in_a_window_and_closing_the_window_ends_it_cleanly",
+    ) {
+        return;
+    }
     let scratch = std::env::temp_dir().join(format!("candela_close_{}", std::process::id()));
     std::fs::create_dir_all(&scratch).expect("scratch folder");
     let xvfb = start_xvfb();

@@ -6,6 +6,7 @@
 //! standard error of any region mean then follows from summing those variances, with thousands
 //! of pixels × (batches − 1) degrees of freedom, so the error estimate itself is precise.
 
+pub mod alone;
 pub mod furnace_bound;
 pub mod xvfb;
 

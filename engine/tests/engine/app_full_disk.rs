@@ -4,8 +4,9 @@
 //!
 //! A full disk is simulated with the file size limit (`RLIMIT_FSIZE`, with `SIGXFSZ` ignored
 //! so the write returns `EFBIG` instead of killing the process): it works as root, where
-//! `chmod` would not. The limit is per process: nextest runs each test in a process of its
-//! own, and this file holds one test, which restores the limit before it asserts.
+//! `chmod` would not. The limit is per process: the test runs alone in its process under any
+//! runner (nextest's process per test, or a child under `cargo test`: `tests/support/alone.rs`),
+//! and restores the limit before it asserts.
 //! Also: the longest file name the file system takes still leaves room for the temporary one.
 
 use crate::app_common;
@@ -16,8 +17,8 @@ use candela::app::{ActionSet, Progress, Settings, StoreError, write_atomic};
 
 /// Runs `f` with files limited to `bytes` bytes (a disk that fills up after `bytes`).
 fn with_file_size_limit<T>(bytes: u64, f: impl FnOnce() -> T) -> T {
-    // SAFETY: setting a signal disposition and this process's own resource limit; nextest
-    // runs this test in a process of its own.
+    // SAFETY: setting a signal disposition and this process's own resource limit; the test
+    // runs alone in its process (`alone_in_process`).
     let old_limit = unsafe {
         libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
         let mut lim = std::mem::zeroed::<libc::rlimit>();
@@ -54,6 +55,12 @@ fn assert_full_disk(result: Result<(), StoreError>, path: &std::path::Path) {
 
 #[test]
 fn a_failed_write_keeps_the_old_file_and_leaves_no_temporary() -> Result<()> {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !crate::app_common::alone::alone_in_process(
+        "app_full_disk::a_failed_write_keeps_the_old_file_and_leaves_no_temporary",
+    ) {
+        return Ok(());
+    }
     let dir = Scratch::new("full_disk");
     let path = dir.join("progress.ron");
     write_atomic(&path, b"the old save")?;

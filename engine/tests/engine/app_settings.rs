@@ -35,7 +35,7 @@ fn a_changed_setting_survives_a_restart() -> Result<()> {
     let path = dirs.settings_file();
     let mut s = Settings::load(&path, &set).value;
     s.resolution_scale = 0.5;
-    s.target_fps = Some(30.0);
+    s.target_fps = Some(60.0);
     s.vsync = false;
     s.fullscreen = true;
     s.master_volume = 0.25;

@@ -119,7 +119,7 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
             e.draft.master_volume = 0.3;
             e.draft.music_volume = 0.5;
             e.draft.invert_y = true;
-            e.draft.target_fps = Some(30.0);
+            e.draft.target_fps = Some(60.0);
             e.draft.resolution_scale = 0.5;
             e.start_rebind(game_actions::JUMP);
             e.offer(Binding::Key(KeyCode::KeyJ));
@@ -141,9 +141,9 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
     assert_eq!(engine.audio().volume(Bus::Master), 0.3);
     assert_eq!(engine.audio().volume(Bus::Music), 0.5);
     let goal = shell.scaling_goal();
-    assert_eq!(goal.frame_seconds, Some(1.0 / 30.0));
+    assert_eq!(goal.frame_seconds, Some(1.0 / 60.0));
     assert_eq!(goal.max_resolution, 0.5);
-    assert_eq!(shell.wants().max_fps, Some(30.0));
+    assert_eq!(shell.wants().max_fps, Some(60.0));
     engine.input_mut().key(KeyCode::KeyJ, true);
     assert!(engine.input().held(game_actions::JUMP), "J now jumps");
     engine.input_mut().key(KeyCode::Space, true);
@@ -166,7 +166,7 @@ fn a_changed_setting_applies_live_is_saved_and_survives_a_restart() -> Result<()
     assert!(shell.files().notices.is_empty());
     assert_eq!(shell.files().settings.master_volume, 0.3);
     assert!(shell.files().settings.invert_y);
-    assert_eq!(engine.settings().target_fps, Some(30.0));
+    assert_eq!(engine.settings().target_fps, Some(60.0));
     assert_eq!(engine.audio().volume(Bus::Master), 0.3);
     assert_eq!(
         shell

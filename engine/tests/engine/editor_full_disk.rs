@@ -2,8 +2,8 @@
 //! stage, the level file keeps its old bytes and no temporary file is left. A full disk is
 //! simulated as in `app_full_disk.rs`: the file size limit (`RLIMIT_FSIZE`, `SIGXFSZ`
 //! ignored so a write returns `EFBIG`) lets the backup of the old level (5 kB) through but
-//! not the grown level; it works as root. The limit is per process: this binary holds this
-//! one test only.
+//! not the grown level; it works as root. The limit is per process: the test runs alone in
+//! its process under any runner (`tests/support/alone.rs`).
 
 use crate::editor_common;
 
@@ -14,6 +14,12 @@ const LIMIT: u64 = 8 * 1024;
 
 #[test]
 fn saving_onto_a_full_disk_reports_it_and_keeps_the_old_level() -> anyhow::Result<()> {
+    // Changes process-wide state: alone in its process under any test runner.
+    if !crate::app_common::alone::alone_in_process(
+        "editor_full_disk::saving_onto_a_full_disk_reports_it_and_keeps_the_old_level",
+    ) {
+        return Ok(());
+    }
     let scratch = Scratch::new("full_disk");
     let path = scratch.path().join("first_person.ron");
     std::fs::copy(

@@ -310,7 +310,29 @@ fn a_failed_write_reports_it_and_leaves_the_old_file_intact() -> anyhow::Result<
         files_in(scratch.path())?,
         ["first_person.ron", "first_person.ron.bak"]
     );
-    // Fault 2: a folder that refuses writes (root writes anyway: then there is no fault).
+    // Fault 2, for any user, root included (CI runs as root, which ignores permissions): the
+    // document is saved where its folder is a regular file, so nothing can be created there.
+    let scratch = Scratch::new("fault_not_a_folder");
+    let (path, text) = write_platform(&scratch)?;
+    let blocker = scratch.path().join("not_a_folder");
+    std::fs::write(&blocker, b"a regular file")?;
+    let target = blocker.join("first_person.ron");
+    let err = save_document(&target, &doc, None).expect_err("no folder can hold the file");
+    assert!(matches!(err, SaveError::Write(_)), "{err}");
+    assert!(err.to_string().contains("not_a_folder"), "{err}");
+    assert_eq!(
+        std::fs::read_to_string(&path)?,
+        text,
+        "the opened file is intact"
+    );
+    assert_eq!(std::fs::read(&blocker)?, b"a regular file");
+    assert_eq!(
+        files_in(scratch.path())?,
+        ["first_person.ron", "not_a_folder"],
+        "no temporary or backup file left behind"
+    );
+    // Fault 3: a folder that refuses writes (root writes anyway: then there is no fault, and
+    // fault 2 above is the one that runs everywhere).
     let scratch = Scratch::new("fault_readonly");
     let (path, text) = write_platform(&scratch)?;
     std::fs::set_permissions(scratch.path(), std::fs::Permissions::from_mode(0o555))?;

@@ -107,6 +107,9 @@ pub struct CaptureReport {
     pub triangles: usize,
     pub build_seconds: f64,
     pub render_seconds: f64,
+    /// Render seconds of the slowest batch (with `--seconds`, the run stops at the first batch
+    /// that ends past the budget, so `render_seconds - slowest_batch_seconds` is under it).
+    pub slowest_batch_seconds: f64,
     /// Samples per pixel rendered (the requested count, or what fit in `--seconds`).
     pub spp: u32,
     pub samples: u64,
@@ -223,6 +226,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
     progress.set_message(format!("{} tracer", tracer.name()));
     let mut rays = 0u64;
     let mut render_seconds = 0.0;
+    let mut slowest_batch_seconds = 0.0f64;
     let mut done = 0;
     let mut denoiser = args
         .denoise
@@ -248,6 +252,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         let stats = tracer.render(&scene, &uniforms)?;
         rays += stats.rays();
         render_seconds += stats.seconds;
+        slowest_batch_seconds = slowest_batch_seconds.max(stats.seconds);
         if let Some(svgf) = denoiser.as_mut() {
             let g = guides.get_or_insert_with(|| trace_guides(&scene, &uniforms));
             denoised = Some(svgf.denoise(&tracer.film()?.mean, g, blend)?);
@@ -278,6 +283,7 @@ pub fn run(args: &CaptureArgs) -> anyhow::Result<CaptureReport> {
         triangles: scene.stats.instanced_triangles,
         build_seconds,
         render_seconds,
+        slowest_batch_seconds,
         spp: done,
         samples: done as u64 * width as u64 * height as u64,
         rays,

@@ -76,6 +76,24 @@ impl FrameStats {
         self.frames_rendered += 1;
     }
 
+    /// What workload scaling settled on, for the player (the settings screen shows it next to
+    /// the target frame rate): traced size, output size, samples per pixel and the frame rate
+    /// reached, e.g. "160×90 traced for 1280×720, 1 spp, 29.8 fps". `None` before the first
+    /// rendered frame.
+    pub fn workload_summary(&self) -> Option<String> {
+        if self.frames_rendered == 0 {
+            return None;
+        }
+        let fps = self
+            .frame
+            .filter(|s| *s > 0.0)
+            .map_or(String::new(), |s| format!(", {:.1} fps", 1.0 / s));
+        Some(format!(
+            "{}×{} traced for {}×{}, {} spp{fps}",
+            self.film_size.0, self.film_size.1, self.output_size.0, self.output_size.1, self.spp
+        ))
+    }
+
     /// (label, value) lines for the overlay, in frame order: the main thread's phases as
     /// [`Phase::name`] labels them, then the render thread's figures.
     pub fn lines(&self) -> Vec<(&'static str, String)> {
@@ -146,5 +164,20 @@ mod tests {
         assert_eq!(get(Phase::Steps.name()), "3.00 ms");
         assert_eq!(get("commit size"), "2.0 KiB");
         assert_eq!(get("render"), "–");
+    }
+
+    #[test]
+    fn the_workload_summary_says_what_scaling_settled_on() {
+        let mut stats = FrameStats::default();
+        assert_eq!(stats.workload_summary(), None, "nothing rendered yet");
+        stats.observe_frame(&FrameReport::default(), 0.040);
+        stats.spp = 2;
+        stats.film_size = (160, 90);
+        stats.output_size = (1280, 720);
+        stats.frames_rendered = 1;
+        assert_eq!(
+            stats.workload_summary().as_deref(),
+            Some("160×90 traced for 1280×720, 2 spp, 25.0 fps")
+        );
     }
 }

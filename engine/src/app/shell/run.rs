@@ -79,6 +79,8 @@ pub struct ShellRun {
     editor_drawn: bool,
     /// Editor cues played and not yet taken by the runner.
     editor_cues: Vec<EditorCue>,
+    /// What workload scaling settled on (`FrameStats::workload_summary`), from the window.
+    workload: Option<String>,
 }
 
 impl ShellRun {
@@ -113,6 +115,7 @@ impl ShellRun {
             summary: GameSummary::default(),
             editor_drawn: false,
             editor_cues: Vec::new(),
+            workload: None,
         };
         run.apply_settings(engine);
         engine.set_paused(true);
@@ -146,6 +149,17 @@ impl ShellRun {
     /// The editor cues played since the last call, for the runner's editor.
     pub fn take_editor_cues(&mut self) -> Vec<EditorCue> {
         std::mem::take(&mut self.editor_cues)
+    }
+
+    /// What workload scaling settled on, shown on the settings screen beside the target frame
+    /// rate (the window passes `FrameStats::workload_summary` each frame).
+    pub fn set_workload(&mut self, summary: Option<String>) {
+        self.workload = summary;
+    }
+
+    /// What the settings screen shows workload scaling settled on.
+    pub fn workload(&self) -> Option<&str> {
+        self.workload.as_deref()
     }
 
     /// Queues an input (carried out in the next `before_frame` or `after_ui`).
@@ -202,7 +216,9 @@ impl ShellRun {
                 None
             }
             Screen::Paused => pause::show(ctx, &self.level_name()),
-            Screen::Settings => settings_screen::show(ctx, &mut self.editor, true),
+            Screen::Settings => {
+                settings_screen::show(ctx, &mut self.editor, self.workload.as_deref(), true)
+            }
             Screen::Editor if self.editor_drawn => None,
             Screen::Editor => pause::editor(ctx),
             Screen::Ending => ending::show(

@@ -26,8 +26,14 @@ fn row(ui: &mut egui::Ui, label: &str, add: impl FnOnce(&mut egui::Ui)) {
     ui.end_row();
 }
 
-/// Draws the settings screen; `dim` darkens the picture first (opened from the pause menu).
-pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Option<ShellInput> {
+/// Draws the settings screen; `workload` is what workload scaling settled on (shown under the
+/// target frame rate); `dim` darkens the picture first (opened from the pause menu).
+pub fn show(
+    ctx: &egui::Context,
+    editor: &mut SettingsEditor,
+    workload: Option<&str>,
+    dim: bool,
+) -> Option<ShellInput> {
     if dim {
         theme::dim(ctx);
     }
@@ -41,7 +47,7 @@ pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Opti
             .max_height(max_height - 120.0)
             .show(ui, |ui| {
                 ui.columns(2, |cols| {
-                    general(&mut cols[0], editor);
+                    general(&mut cols[0], editor, workload);
                     bindings(&mut cols[1], editor);
                 });
             });
@@ -69,7 +75,7 @@ pub fn show(ctx: &egui::Context, editor: &mut SettingsEditor, dim: bool) -> Opti
 }
 
 /// Picture, sound and controls, in one grid so that every widget lines up.
-fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
+fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor, workload: Option<&str>) {
     let s = &mut editor.draft;
     let percent = |v: f64, _: std::ops::RangeInclusive<usize>| format!("{:.0} %", v * 100.0);
     egui::Grid::new("shell_settings_general")
@@ -93,6 +99,12 @@ fn general(ui: &mut egui::Ui, editor: &mut SettingsEditor) {
                         }
                     });
             });
+            if let Some(workload) = workload {
+                row(ui, "Holding now", |ui| {
+                    ui.label(workload)
+                        .on_hover_text("What workload scaling settled on to hold the target");
+                });
+            }
             row(ui, "Vsync", |ui| {
                 ui.checkbox(&mut s.vsync, "");
             });

@@ -327,6 +327,7 @@ impl<'g> WindowApp<'g> {
         let game = &mut *self.game;
         let built = match self.shell.as_mut() {
             Some(shell) => {
+                shell.set_workload(stats.workload_summary());
                 let playing = shell.screen() == crate::app::shell::Screen::Playing;
                 let overlay = overlay.build(
                     window,

@@ -4,6 +4,11 @@
 
 use std::path::{Path, PathBuf};
 
+/// Runs a test that changes process-wide state alone in its process (shared with the
+/// cross-crate tests).
+#[path = "../../../../tests/support/alone.rs"]
+pub mod alone;
+
 /// A fresh folder under the system temp folder, unique to this process and `tag`.
 pub struct Scratch(PathBuf);
 
