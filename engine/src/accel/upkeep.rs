@@ -315,6 +315,13 @@ impl Upkeep {
         }
     }
 
+    /// The light groups switched off, in increasing order.
+    pub fn light_groups_off(&self) -> Vec<u32> {
+        let mut off: Vec<u32> = self.groups_off.iter().copied().collect();
+        off.sort_unstable();
+        off
+    }
+
     /// Whether light group `group` is on (groups are on until switched off).
     pub fn light_group_on(&self, group: u32) -> bool {
         !self.groups_off.contains(&group)

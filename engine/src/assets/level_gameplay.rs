@@ -19,9 +19,13 @@
 //!     volumes: [(name: "plate", instance: "plate_sensor")],
 //!     usables: [(instance: "switch", prompt: "Press E to pull the lever", event: "lever")],
 //!     events: ["lever"],
+//!     counters: [(name: "pulls")],
 //!     rules: [(name: "open", when: Occupied("plate"),
 //!              then: [Play(clip: "door_open"), Lights(group: 2, on: true), Sound(sound: "chime")],
-//!              otherwise: [Reverse(clip: "door_open")])],
+//!              otherwise: [Reverse(clip: "door_open")]),
+//!             (name: "pulled", when: Event("lever"), then: [Count(counter: "pulls")]),
+//!             (name: "third_pull", when: Counter(counter: "pulls", at_least: Some(3)),
+//!              then: [Win])],
 //! )
 //! ```
 
@@ -70,6 +74,24 @@ pub struct GameplayEntry {
     /// use action sends its event to the rules (the event must be declared in `events`).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub usables: Vec<UsableEntry>,
+    /// Whole-number counters the rules keep (`Count`, `SetCounter` actions; `Counter`
+    /// conditions): weights on a scale, offerings made, torches lit.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub counters: Vec<CounterEntry>,
+}
+
+/// A counter of the rules: `(name: "weights", start: 0)`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct CounterEntry {
+    pub name: String,
+    /// Its value when the level starts.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub start: i32,
+}
+
+fn is_zero(v: &i32) -> bool {
+    *v == 0
 }
 
 impl GameplayEntry {
@@ -295,6 +317,25 @@ pub enum ConditionEntry {
         at_least: u32,
         of: Box<ConditionEntry>,
     },
+    /// Light group `group` is on (rules, the game or the level's `lights_off` switch it).
+    LightsOn(u32),
+    /// The named rule has run its `then` at least once since the level started (earlier
+    /// rules in level order count in the same step).
+    Fired(String),
+    /// The counter's value lies in `[at_least, at_most]` (a bound left out is open; at least
+    /// one must be given).
+    Counter {
+        counter: String,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        at_least: Option<i32>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        at_most: Option<i32>,
+    },
+    /// The steps became true in this order: each step's rising edge advances the sequence
+    /// when it is the next one, and any other step's rising edge is a wrong step, which
+    /// resets it (to the first step done, if the wrong step is the first). True from the
+    /// step the last one rises, and stays true (a shrine's braziers lit in order).
+    Sequence(Vec<ConditionEntry>),
 }
 
 /// Something a rule does.
@@ -328,10 +369,23 @@ pub enum ActionEntry {
         instance: String,
         material: Option<String>,
     },
+    /// Add `add` (negative: take away) to a counter; later rules in the same step see the
+    /// new value. Saturates at the `i32` bounds.
+    Count {
+        counter: String,
+        #[serde(default = "one_count")]
+        add: i32,
+    },
+    /// Set a counter to `value`.
+    SetCounter { counter: String, value: i32 },
     /// The player wins the level.
     Win,
     /// The player loses the level.
     Lose,
+}
+
+fn one_count() -> i32 {
+    1
 }
 
 fn once_mode() -> PlayMode {

@@ -54,8 +54,8 @@ pub use level_body::{BodyEntry, ShapeEntry};
 pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
 mod level_gameplay;
 pub use level_gameplay::{
-    ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, Detect, EmitterEntry, GameplayEntry,
-    LaserEntry, MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
+    ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, CounterEntry, Detect, EmitterEntry,
+    GameplayEntry, LaserEntry, MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
 };
 mod level_load;
 mod level_shapes;

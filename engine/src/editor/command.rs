@@ -337,12 +337,14 @@ fn rewire(c: &mut ConditionEntry, from: &str, to: &str) -> usize {
             swap(v)
         }
         ConditionEntry::Occupants { volume, .. } => swap(volume),
-        ConditionEntry::Event(_) => 0,
+        ConditionEntry::Event(_)
+        | ConditionEntry::LightsOn(_)
+        | ConditionEntry::Fired(_)
+        | ConditionEntry::Counter { .. } => 0,
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)
-        | ConditionEntry::AtLeast { of: cs, .. } => {
-            cs.iter_mut().map(|c| rewire(c, from, to)).sum()
-        }
+        | ConditionEntry::AtLeast { of: cs, .. }
+        | ConditionEntry::Sequence(cs) => cs.iter_mut().map(|c| rewire(c, from, to)).sum(),
         ConditionEntry::Not(c) | ConditionEntry::Times { of: c, .. } => rewire(c, from, to),
     }
 }

@@ -36,7 +36,7 @@ const LEVEL_FIELDS: [&str; 14] = [
 ];
 
 /// The gameplay section's fields in the type's order.
-const GAMEPLAY_FIELDS: [&str; 11] = [
+const GAMEPLAY_FIELDS: [&str; 12] = [
     "sounds",
     "music",
     "emitters",
@@ -48,6 +48,7 @@ const GAMEPLAY_FIELDS: [&str; 11] = [
     "rules",
     "events",
     "usables",
+    "counters",
 ];
 
 /// A field's value, ready to write.
@@ -106,7 +107,8 @@ fn gameplay_field(g: &GameplayEntry, name: &str) -> Res<(Value, bool)> {
         "lasers" => list(&g.lasers),
         "rules" => list(&g.rules),
         "events" => list(&g.events),
-        _ => list(&g.usables),
+        "usables" => list(&g.usables),
+        _ => list(&g.counters),
     }
 }
 

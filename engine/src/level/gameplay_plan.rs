@@ -28,6 +28,8 @@ struct Names<'a> {
     sounds: HashMap<&'a str, usize>,
     clips: HashMap<&'a str, usize>,
     volumes: HashMap<&'a str, usize>,
+    rules: HashMap<&'a str, usize>,
+    counters: HashMap<&'a str, usize>,
 }
 
 /// Name → index of the first item of each name (`None`: an item without a name).
@@ -68,6 +70,8 @@ pub(super) fn plan_gameplay(
         sounds: first(g.sounds.iter().map(|s| Some(s.name.as_str()))),
         clips: first(g.animations.iter().map(|c| Some(c.name.as_str()))),
         volumes: first(g.volumes.iter().map(|v| Some(v.name.as_str()))),
+        rules: first(g.rules.iter().map(|r| Some(r.name.as_str()))),
+        counters: first(g.counters.iter().map(|c| Some(c.name.as_str()))),
     };
     let instance = |name: &str, at| find(&n.instances, name, "instance", at);
     let mut plan = GameplayPlan::default();
@@ -126,6 +130,9 @@ pub(super) fn plan_gameplay(
         plan.autoplay.push((clip, a.mode));
     }
     plan.lights_off = g.lights_off.clone();
+    plan.counters = (g.counters.iter())
+        .map(|c| (c.name.clone(), c.start))
+        .collect();
     for (i, v) in g.volumes.iter().enumerate() {
         plan.volumes.push(PlannedVolume {
             name: v.name.clone(),
@@ -207,6 +214,20 @@ fn condition(n: &Names, c: &ConditionEntry, item: ItemRef) -> Result<Condition, 
             at_least: *at_least,
             of: Box::new(condition(n, of, item)?),
         },
+        ConditionEntry::LightsOn(group) => Condition::LightsOn(*group),
+        ConditionEntry::Fired(rule) => {
+            Condition::Fired(find(&n.rules, rule, "rule", (item, "when"))?)
+        }
+        ConditionEntry::Counter {
+            counter,
+            at_least,
+            at_most,
+        } => Condition::Counter {
+            counter: find(&n.counters, counter, "counter", (item, "when"))?,
+            at_least: at_least.unwrap_or(i32::MIN),
+            at_most: at_most.unwrap_or(i32::MAX),
+        },
+        ConditionEntry::Sequence(steps) => Condition::Sequence(list(steps)?),
     })
 }
 
@@ -247,6 +268,14 @@ fn action(
             material: (material.as_deref())
                 .map(|m| find(&n.materials, m, "material", at).map(|m| m as u32))
                 .transpose()?,
+        },
+        ActionEntry::Count { counter, add } => Action::Count {
+            counter: find(&n.counters, counter, "counter", at)?,
+            add: *add,
+        },
+        ActionEntry::SetCounter { counter, value } => Action::SetCounter {
+            counter: find(&n.counters, counter, "counter", at)?,
+            value: *value,
         },
         ActionEntry::Win => Action::Win,
         ActionEntry::Lose => Action::Lose,

@@ -29,6 +29,9 @@ pub enum ItemRef {
     Laser(usize),
     Rule(usize),
     Usable(usize),
+    /// A name in `gameplay.events`.
+    Event(usize),
+    Counter(usize),
 }
 
 impl ItemRef {
@@ -67,6 +70,8 @@ impl fmt::Display for ItemRef {
             ItemRef::Laser(i) => write!(f, "gameplay.lasers[{i}]"),
             ItemRef::Rule(i) => write!(f, "gameplay.rules[{i}]"),
             ItemRef::Usable(i) => write!(f, "gameplay.usables[{i}]"),
+            ItemRef::Event(i) => write!(f, "gameplay.events[{i}]"),
+            ItemRef::Counter(i) => write!(f, "gameplay.counters[{i}]"),
         }
     }
 }

@@ -18,6 +18,7 @@ mod load;
 mod problem;
 mod validate;
 mod validate_gameplay;
+mod validate_memory;
 
 pub use body::{InstanceBody, resolve_body};
 pub use character::{PlayableCharacter, load_characters};

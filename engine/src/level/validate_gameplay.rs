@@ -140,6 +140,7 @@ pub(super) fn gameplay(c: &mut Problems, names: &HashMap<&str, usize>, materials
     let groups: HashSet<u32> = (level.instances.iter().filter_map(|i| i.light_group))
         .chain(g.lasers.iter().filter_map(|l| l.beam?.light_group))
         .collect();
+    super::validate_memory::memory(c, level, &groups);
     let group = |c: &mut Problems, (item, field), user: &str, group: u32| {
         if !groups.contains(&group) {
             let message =
@@ -254,7 +255,11 @@ pub(super) fn gameplay(c: &mut Problems, names: &HashMap<&str, usize>, materials
                         known(c, materials, at, &user, "material", m);
                     }
                 }
-                ActionEntry::Win | ActionEntry::Lose => {}
+                // Counters are checked with the rules' memory (`validate_memory.rs`).
+                ActionEntry::Count { .. }
+                | ActionEntry::SetCounter { .. }
+                | ActionEntry::Win
+                | ActionEntry::Lose => {}
             }
         }
     }
@@ -296,7 +301,11 @@ fn condition_names<'a>(c: &'a ConditionEntry, out: &mut Vec<(bool, &'a str)>) {
         ConditionEntry::Event(e) => out.push((false, e)),
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)
-        | ConditionEntry::AtLeast { of: cs, .. } => cs.iter().for_each(|c| condition_names(c, out)),
+        | ConditionEntry::AtLeast { of: cs, .. }
+        | ConditionEntry::Sequence(cs) => cs.iter().for_each(|c| condition_names(c, out)),
         ConditionEntry::Not(c) | ConditionEntry::Times { of: c, .. } => condition_names(c, out),
+        // Checked with the rules' memory (`validate_memory.rs`).
+        ConditionEntry::LightsOn(_) | ConditionEntry::Fired(_) | ConditionEntry::Counter { .. } => {
+        }
     }
 }

@@ -40,7 +40,12 @@ pub(crate) const GOOD: &str = r#"Level(
              then: [Play(clip: "door_open"), Lights(group: 2, on: true)],
              otherwise: [Material(instance: "crate", material: "lamp")]),
             (name: "done", when: Event("opened"), then: [Win]),
+            (name: "pulled", when: Event("lever"), then: [Count(counter: "pulls")]),
+            (name: "in_order",
+             when: Sequence([Fired("press"), Counter(counter: "pulls", at_least: Some(2)), LightsOn(2)]),
+             then: [SetCounter(counter: "pulls", value: 0)]),
         ],
+        counters: [(name: "pulls")],
     ),
 )"#;
 
@@ -219,6 +224,85 @@ fn each_kind_of_problem_names_its_item_and_field() {
         );
         assert!(!problem.message.is_empty());
     }
+}
+
+#[test]
+fn the_rules_memory_is_checked() {
+    let sequence =
+        r#"Sequence([Fired("press"), Counter(counter: "pulls", at_least: Some(2)), LightsOn(2)])"#;
+    let cases: &[(&str, &str, ItemRef, &str)] = &[
+        (
+            r#"Count(counter: "pulls")"#,
+            r#"Count(counter: "pull")"#,
+            ItemRef::Rule(2),
+            "then",
+        ),
+        (
+            r#"SetCounter(counter: "pulls""#,
+            r#"SetCounter(counter: "weights""#,
+            ItemRef::Rule(3),
+            "then",
+        ),
+        (
+            r#"Fired("press")"#,
+            r#"Fired("pres")"#,
+            ItemRef::Rule(3),
+            "when",
+        ),
+        (
+            "at_least: Some(2))",
+            "at_least: Some(2), at_most: Some(1))",
+            ItemRef::Rule(3),
+            "when",
+        ),
+        (
+            r#"counter: "pulls", at_least: Some(2))"#,
+            r#"counter: "pulls")"#,
+            ItemRef::Rule(3),
+            "when",
+        ),
+        (
+            r#"counter: "pulls", at_least: Some(2))"#,
+            r#"counter: "weight", at_least: Some(2))"#,
+            ItemRef::Rule(3),
+            "when",
+        ),
+        ("LightsOn(2)", "LightsOn(7)", ItemRef::Rule(3), "when"),
+        (sequence, "Sequence([])", ItemRef::Rule(3), "when"),
+        (
+            r#"counters: [(name: "pulls")]"#,
+            r#"counters: [(name: "pulls"), (name: "pulls", start: 3)]"#,
+            ItemRef::Counter(1),
+            "name",
+        ),
+        (
+            r#"counters: [(name: "pulls")]"#,
+            r#"counters: [(name: "pulls"), (name: " ")]"#,
+            ItemRef::Counter(1),
+            "name",
+        ),
+    ];
+    for (from, to, item, field) in cases {
+        let p = only_problem(from, to);
+        assert_eq!((p.item, p.field), (*item, *field), "{from:?} → {to:?}: {p}");
+    }
+}
+
+#[test]
+fn a_declared_event_no_rule_waits_for_is_a_lever_wired_to_nothing() {
+    let p = only_problem(
+        r#"when: Event("lever"), then: [Count"#,
+        r#"when: Event("opened"), then: [Count"#,
+    );
+    assert_eq!((p.item, p.field), (ItemRef::Event(0), ""));
+    assert!(p.to_string().contains("wired to nothing"), "{p}");
+    assert!(p.to_string().contains("switch"), "names the lever: {p}");
+    // A rule that waits for it inside a sequence counts.
+    let level = with(
+        r#"when: Event("lever"), then: [Count"#,
+        r#"when: Sequence([Entered("plate"), Event("lever")]), then: [Count"#,
+    );
+    assert_eq!(validate_level(&level), []);
 }
 
 #[test]

@@ -72,6 +72,7 @@ mod faults_gpu_lost;
 mod faults_resource_limits;
 mod gameplay_bad_input;
 mod gameplay_laser_beams;
+mod gameplay_memory;
 mod gameplay_plate_door;
 mod gameplay_rules;
 mod ghosting;

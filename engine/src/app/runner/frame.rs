@@ -146,9 +146,14 @@ impl Engine {
         animate_characters(&mut self.world, dt);
         tick_skinned(&mut self.world, dt);
         let ended_before = self.logic.outcome().is_some();
-        let effects = self
-            .logic
-            .step(&mut self.world, &self.physics, self.upkeep.queries(), dt);
+        let lights_off = self.upkeep.light_groups_off();
+        let effects = self.logic.step(
+            &mut self.world,
+            &self.physics,
+            self.upkeep.queries(),
+            &lights_off,
+            dt,
+        );
         self.carry_out(effects);
         let events = self.level_events(ended_before);
         for event in &events {

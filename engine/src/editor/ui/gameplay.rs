@@ -79,10 +79,14 @@ fn volumes_of<'a>(c: &'a ConditionEntry, out: &mut Vec<&'a str>) {
             out.push(v)
         }
         ConditionEntry::Occupants { volume, .. } => out.push(volume),
-        ConditionEntry::Event(_) => {}
+        ConditionEntry::Event(_)
+        | ConditionEntry::LightsOn(_)
+        | ConditionEntry::Fired(_)
+        | ConditionEntry::Counter { .. } => {}
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)
-        | ConditionEntry::AtLeast { of: cs, .. } => cs.iter().for_each(|c| volumes_of(c, out)),
+        | ConditionEntry::AtLeast { of: cs, .. }
+        | ConditionEntry::Sequence(cs) => cs.iter().for_each(|c| volumes_of(c, out)),
         ConditionEntry::Not(c) | ConditionEntry::Times { of: c, .. } => volumes_of(c, out),
     }
 }

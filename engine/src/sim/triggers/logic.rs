@@ -1,25 +1,18 @@
-//! Rules: conditions evaluated every fixed step over volume counts and clip events, fired on
-//! their edges.
+//! Rules: conditions evaluated every fixed step over volume counts, clip events, light groups
+//! and the rules' own memory, fired on their edges.
 //!
 //! Owns: [`RuleBook`] (the rules and their state: the last value of each rule's condition,
-//! whether a `once` rule has fired, and the edge counters of `Times` conditions) and
-//! [`RuleFiring`]. A rule runs `then` when its condition goes from false to true and
-//! `otherwise` when it goes back; before the first step every condition counts as false.
-//! Every sub-condition is evaluated every step (no short-circuit), so `Times` counters never
-//! miss an edge. Rules run in level order: the same facts give the same firings.
-//! Must not: carry out actions (`LevelLogic` does) or look at the world.
+//! whether a `once` rule is spent, whether each rule has fired, the counters, and the
+//! remembering condition nodes, `conditions.rs`) and [`RuleFiring`]. A rule runs `then` when
+//! its condition goes from false to true and `otherwise` when it goes back; before the first
+//! step every condition counts as false. Rules run in level order: the same facts give the
+//! same firings, and a rule's counter actions and its having fired are seen by the rules
+//! after it in the same step. The counter actions are carried out here, as the rule fires.
+//! Must not: carry out the other actions (`LevelLogic` does) or look at the world.
 
+pub use super::conditions::Facts;
+use super::conditions::{Memory, NodeState, eval, node_states};
 use super::plan::{Action, Condition, Rule};
-use super::volumes::VolumeFacts;
-
-/// What the conditions read in one step.
-#[derive(Clone, Copy, Debug)]
-pub struct Facts<'a> {
-    /// Per volume, in level order.
-    pub volumes: &'a [VolumeFacts],
-    /// Names of the clip events fired in this step.
-    pub events: &'a [String],
-}
 
 /// A rule whose condition changed in a step.
 #[derive(Clone, Debug, PartialEq)]
@@ -34,8 +27,8 @@ pub struct RuleFiring {
 struct RuleState {
     was: bool,
     spent: bool,
-    /// Per `Times` node in pre-order: the sub-condition's last value and its rising edges.
-    times: Vec<(bool, u32)>,
+    /// The condition's remembering nodes, in pre-order.
+    nodes: Vec<NodeState>,
 }
 
 /// FNV-1a of `text` (names folded into state hashes).
@@ -50,104 +43,134 @@ pub(super) fn text_bits(text: &str) -> u64 {
 pub struct RuleBook {
     rules: Vec<Rule>,
     state: Vec<RuleState>,
+    /// Per rule: its `then` has run at least once.
+    fired: Vec<bool>,
+    /// Whether any condition reads `fired` (only then is it part of the state hash).
+    reads_fired: bool,
+    counters: Vec<i32>,
 }
 
-fn count_times(c: &Condition) -> usize {
+fn reads_fired(c: &Condition) -> bool {
     match c {
+        Condition::Fired(_) => true,
         Condition::All(cs) | Condition::Any(cs) | Condition::AtLeast { of: cs, .. } => {
-            cs.iter().map(count_times).sum()
+            cs.iter().any(reads_fired)
         }
-        Condition::Not(c) => count_times(c),
-        Condition::Times { of, .. } => 1 + count_times(of),
-        _ => 0,
-    }
-}
-
-fn eval(c: &Condition, facts: &Facts<'_>, times: &mut [(bool, u32)], next: &mut usize) -> bool {
-    let volume = |v: usize| facts.volumes.get(v).copied().unwrap_or_default();
-    let all = |cs: &[Condition], times: &mut [(bool, u32)], next: &mut usize| {
-        cs.iter()
-            .map(|c| eval(c, facts, times, next))
-            .collect::<Vec<bool>>()
-    };
-    match c {
-        Condition::Occupied(v) => volume(*v).inside > 0,
-        Condition::Entered(v) => volume(*v).entered > 0,
-        Condition::Exited(v) => volume(*v).exited > 0,
-        Condition::Occupants {
-            volume: v,
-            at_least,
-        } => volume(*v).inside >= *at_least,
-        Condition::Event(name) => facts.events.iter().any(|e| e == name),
-        Condition::All(cs) => all(cs, times, next).iter().all(|&b| b),
-        Condition::Any(cs) => all(cs, times, next).iter().any(|&b| b),
-        Condition::Not(c) => !eval(c, facts, times, next),
-        Condition::AtLeast { at_least, of } => {
-            all(of, times, next).iter().filter(|&&b| b).count() as u32 >= *at_least
-        }
-        Condition::Times { at_least, of } => {
-            let slot = *next;
-            *next += 1;
-            let now = eval(of, facts, times, next);
-            let Some((was, count)) = times.get_mut(slot) else {
-                return false;
-            };
-            if now && !*was {
-                *count = count.saturating_add(1);
-            }
-            *was = now;
-            *count >= *at_least
-        }
+        Condition::Sequence(cs) => cs.iter().any(reads_fired),
+        Condition::Not(c) | Condition::Times { of: c, .. } => reads_fired(c),
+        _ => false,
     }
 }
 
 impl RuleBook {
+    /// `rules` in level order, with no counters.
     pub fn new(rules: Vec<Rule>) -> Self {
         let state = rules
             .iter()
-            .map(|r| RuleState {
-                times: vec![(false, 0); count_times(&r.when)],
-                ..Default::default()
+            .map(|r| {
+                let mut nodes = Vec::new();
+                node_states(&r.when, &mut nodes);
+                RuleState {
+                    nodes,
+                    ..Default::default()
+                }
             })
             .collect();
-        Self { rules, state }
+        Self {
+            fired: vec![false; rules.len()],
+            reads_fired: rules.iter().any(|r| reads_fired(&r.when)),
+            rules,
+            state,
+            counters: Vec::new(),
+        }
+    }
+
+    /// The same with counters starting at `start` (by index, as the rules' counter indices).
+    pub fn with_counters(mut self, start: Vec<i32>) -> Self {
+        self.counters = start;
+        self
     }
 
     pub fn rules(&self) -> &[Rule] {
         &self.rules
     }
 
-    /// The rules' state as words, rule by rule (last value, spent, each `Times` node's value
-    /// and count), for state hashes.
+    /// The counters' values, by index.
+    pub fn counters(&self) -> &[i32] {
+        &self.counters
+    }
+
+    /// Whether rule `index` has run its `then` at least once.
+    pub fn fired(&self, index: usize) -> bool {
+        self.fired.get(index).copied().unwrap_or(false)
+    }
+
+    /// The rules' state as words, rule by rule (last value, spent, each remembering node),
+    /// then, where the level uses them, which rules have fired and the counters; for state
+    /// hashes. A level without counters or `Fired` conditions hashes as before they existed.
     pub fn state_words(&self, out: &mut Vec<u64>) {
         for s in &self.state {
             out.push(u64::from(s.was) | u64::from(s.spent) << 1);
-            out.extend(
-                s.times
-                    .iter()
-                    .map(|&(b, n)| u64::from(b) | u64::from(n) << 1),
-            );
+            s.nodes.iter().for_each(|n| n.words(out));
+        }
+        if self.reads_fired {
+            out.extend(self.fired.iter().map(|&f| u64::from(f)));
+        }
+        out.extend(self.counters.iter().map(|&v| u64::from(v as u32)));
+    }
+
+    /// Carries out a counter action now (the rules after this one see it); other actions are
+    /// left to the caller.
+    fn count(&mut self, action: &Action) {
+        match *action {
+            Action::Count { counter, add } => {
+                if let Some(v) = self.counters.get_mut(counter) {
+                    *v = v.saturating_add(add);
+                }
+            }
+            Action::SetCounter { counter, value } => {
+                if let Some(v) = self.counters.get_mut(counter) {
+                    *v = value;
+                }
+            }
+            _ => {}
         }
     }
 
     /// Evaluates every rule on `facts`; returns the rules that fired and, in order, the
-    /// actions to carry out.
+    /// actions to carry out (counter actions included, already carried out here).
     pub fn step(&mut self, facts: &Facts<'_>) -> (Vec<RuleFiring>, Vec<Action>) {
         let mut firings = Vec::new();
         let mut actions = Vec::new();
-        for (index, (rule, state)) in self.rules.iter().zip(&mut self.state).enumerate() {
-            let mut next = 0;
-            let now = eval(&rule.when, facts, &mut state.times, &mut next);
+        for index in 0..self.rules.len() {
+            let memory = Memory {
+                fired: &self.fired,
+                counters: &self.counters,
+            };
+            let state = &mut self.state[index];
+            let now = eval(
+                &self.rules[index].when,
+                facts,
+                &memory,
+                &mut state.nodes,
+                &mut 0,
+            );
             let was = std::mem::replace(&mut state.was, now);
             if now == was || state.spent {
                 continue;
             }
-            if now {
-                actions.extend(rule.then.iter().cloned());
+            let rule = &self.rules[index];
+            let list = if now {
                 state.spent = rule.once;
+                rule.then.clone()
             } else {
-                actions.extend(rule.otherwise.iter().cloned());
+                rule.otherwise.clone()
+            };
+            if now {
+                self.fired[index] = true;
             }
+            list.iter().for_each(|a| self.count(a));
+            actions.extend(list);
             firings.push(RuleFiring {
                 rule: index,
                 rising: now,
@@ -159,6 +182,7 @@ impl RuleBook {
 
 #[cfg(test)]
 mod tests {
+    use super::super::volumes::VolumeFacts;
     use super::*;
 
     fn rule(when: Condition, once: bool) -> Rule {
@@ -189,6 +213,7 @@ mod tests {
                 book.step(&Facts {
                     volumes: &volumes,
                     events: &[],
+                    lights_off: &[],
                 })
                 .1
             })
@@ -263,6 +288,7 @@ mod tests {
         let (firings, actions) = book.step(&Facts {
             volumes: &volumes,
             events: &["opened".to_string()],
+            lights_off: &[],
         });
         assert_eq!(
             firings,
@@ -275,6 +301,7 @@ mod tests {
         let (_, actions) = book.step(&Facts {
             volumes: &volumes,
             events: &[],
+            lights_off: &[],
         });
         assert_eq!(actions, vec![Action::Lose], "an event holds for one step");
     }

@@ -12,6 +12,7 @@
 //! carries out the [`Effect`]s).
 
 mod beam_geometry;
+mod conditions;
 mod laser;
 mod logic;
 mod plan;

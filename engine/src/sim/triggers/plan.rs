@@ -31,6 +31,8 @@ pub struct GameplayPlan {
     pub lasers: Vec<PlannedLaser>,
     pub rules: Vec<Rule>,
     pub usables: Vec<PlannedUsable>,
+    /// The rules' counters: name and starting value, by index.
+    pub counters: Vec<(String, i32)>,
 }
 
 /// An instance the player can use: its prompt and the event using it sends.
@@ -115,13 +117,34 @@ pub enum Condition {
     Occupied(usize),
     Entered(usize),
     Exited(usize),
-    Occupants { volume: usize, at_least: u32 },
+    Occupants {
+        volume: usize,
+        at_least: u32,
+    },
     Event(String),
     All(Vec<Condition>),
     Any(Vec<Condition>),
     Not(Box<Condition>),
-    AtLeast { at_least: u32, of: Vec<Condition> },
-    Times { at_least: u32, of: Box<Condition> },
+    AtLeast {
+        at_least: u32,
+        of: Vec<Condition>,
+    },
+    Times {
+        at_least: u32,
+        of: Box<Condition>,
+    },
+    /// Light group on.
+    LightsOn(u32),
+    /// Rule (index) has run its `then` at least once.
+    Fired(usize),
+    /// Counter (index) within `[at_least, at_most]` (open bounds as `i32::MIN`/`MAX`).
+    Counter {
+        counter: usize,
+        at_least: i32,
+        at_most: i32,
+    },
+    /// Steps risen in order; a wrong step resets (`ConditionEntry::Sequence`).
+    Sequence(Vec<Condition>),
 }
 
 /// An action with its references resolved.
@@ -152,6 +175,16 @@ pub enum Action {
     Material {
         instance: usize,
         material: Option<u32>,
+    },
+    /// Add to counter (index), saturating.
+    Count {
+        counter: usize,
+        add: i32,
+    },
+    /// Set counter (index).
+    SetCounter {
+        counter: usize,
+        value: i32,
     },
     Win,
     Lose,

@@ -66,6 +66,7 @@ pub struct LevelLogic {
     volumes: VolumeTracker,
     volume_names: Vec<String>,
     rules: RuleBook,
+    counter_names: Vec<String>,
     sounds: Vec<PlannedSound>,
     outcome: Option<Outcome>,
     last: StepLog,
@@ -113,7 +114,9 @@ impl LevelLogic {
             entities: entities.to_vec(),
             volumes,
             volume_names: plan.volumes.iter().map(|v| v.name.clone()).collect(),
-            rules: RuleBook::new(plan.rules.clone()),
+            rules: RuleBook::new(plan.rules.clone())
+                .with_counters(plan.counters.iter().map(|(_, start)| *start).collect()),
+            counter_names: plan.counters.iter().map(|(name, _)| name.clone()).collect(),
             sounds: plan.sounds.clone(),
             outcome: None,
             last: StepLog::default(),
@@ -164,6 +167,19 @@ impl LevelLogic {
         self.rules.rules().get(index).map(|r| r.name.as_str())
     }
 
+    /// The value of the rules' counter `name` (`gameplay.counters`).
+    pub fn counter(&self, name: &str) -> Option<i32> {
+        let index = self.counter_names.iter().position(|n| n == name)?;
+        self.rules.counters().get(index).copied()
+    }
+
+    /// Whether the rule named `name` has run its `then` at least once.
+    pub fn rule_fired(&self, name: &str) -> bool {
+        (self.rules.rules().iter())
+            .position(|r| r.name == name)
+            .is_some_and(|i| self.rules.fired(i))
+    }
+
     /// The name of volume `index` (level order).
     pub fn volume_name(&self, index: usize) -> Option<&str> {
         self.volume_names.get(index).map(String::as_str)
@@ -210,12 +226,15 @@ impl LevelLogic {
         out
     }
 
-    /// One fixed step of `dt_seconds`; returns the effects the engine carries out.
+    /// One fixed step of `dt_seconds`, with light groups `lights_off` switched off (as the
+    /// engine has them before the step; `LightsOn` conditions read them); returns the effects
+    /// the engine carries out.
     pub fn step(
         &mut self,
         world: &mut World,
         physics: &PhysicsWorld,
         queries: Queries<'_>,
+        lights_off: &[u32],
         dt_seconds: f64,
     ) -> Vec<Effect> {
         self.steps += 1;
@@ -234,6 +253,7 @@ impl LevelLogic {
         let (firings, actions) = self.rules.step(&Facts {
             volumes: &facts,
             events: &names,
+            lights_off,
         });
         let mut effects = Vec::new();
         let mut action_rule = firings.iter().flat_map(|f| {
@@ -263,6 +283,8 @@ impl LevelLogic {
                         set_material(world, e, material);
                     }
                 }
+                // Carried out by the rule book as the rule fired.
+                Action::Count { .. } | Action::SetCounter { .. } => {}
                 Action::Win => {
                     self.outcome.get_or_insert(Outcome::Won(rule));
                 }
