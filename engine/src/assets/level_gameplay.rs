@@ -319,6 +319,10 @@ pub enum ConditionEntry {
     },
     /// Light group `group` is on (rules, the game or the level's `lights_off` switch it).
     LightsOn(u32),
+    /// The named volume's centre sees the sun: a query ray from it towards the sun (on the
+    /// last commit's BVH, the one the picture is traced on) meets nothing but the volume's own
+    /// instance. False in a level without a sun.
+    SunLit(String),
     /// The named rule has run its `then` at least once since the level started (earlier
     /// rules in level order count in the same step).
     Fired(String),

@@ -336,7 +336,7 @@ fn rewire(c: &mut ConditionEntry, from: &str, to: &str) -> usize {
         ConditionEntry::Occupied(v) | ConditionEntry::Entered(v) | ConditionEntry::Exited(v) => {
             swap(v)
         }
-        ConditionEntry::Occupants { volume, .. } => swap(volume),
+        ConditionEntry::Occupants { volume, .. } | ConditionEntry::SunLit(volume) => swap(volume),
         ConditionEntry::Event(_)
         | ConditionEntry::LightsOn(_)
         | ConditionEntry::Fired(_)

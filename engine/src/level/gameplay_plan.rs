@@ -215,6 +215,7 @@ fn condition(n: &Names, c: &ConditionEntry, item: ItemRef) -> Result<Condition, 
             of: Box::new(condition(n, of, item)?),
         },
         ConditionEntry::LightsOn(group) => Condition::LightsOn(*group),
+        ConditionEntry::SunLit(v) => Condition::SunLit(volume(v)?),
         ConditionEntry::Fired(rule) => {
             Condition::Fired(find(&n.rules, rule, "rule", (item, "when"))?)
         }

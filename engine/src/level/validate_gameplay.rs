@@ -297,7 +297,9 @@ fn condition_names<'a>(c: &'a ConditionEntry, out: &mut Vec<(bool, &'a str)>) {
         ConditionEntry::Occupied(v) | ConditionEntry::Entered(v) | ConditionEntry::Exited(v) => {
             out.push((true, v))
         }
-        ConditionEntry::Occupants { volume, .. } => out.push((true, volume)),
+        ConditionEntry::Occupants { volume, .. } | ConditionEntry::SunLit(volume) => {
+            out.push((true, volume))
+        }
         ConditionEntry::Event(e) => out.push((false, e)),
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)

@@ -4,8 +4,6 @@
 //! switch them), and state hashes that hold the memory while the hashes of levels without it
 //! are unchanged.
 
-use std::path::PathBuf;
-
 use candela::app::{Engine, Step};
 use candela::assets::AssetRoot;
 use candela::level::load_level;
@@ -35,6 +33,7 @@ fn step(book: &mut RuleBook, inside: &[u32], events: &[&str], lights_off: &[u32]
         volumes: &volumes,
         events: &events,
         lights_off,
+        sun_lit: &[],
     });
     (firings.iter())
         .filter(|f| f.rising)

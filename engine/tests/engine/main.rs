@@ -75,6 +75,7 @@ mod gameplay_laser_beams;
 mod gameplay_memory;
 mod gameplay_plate_door;
 mod gameplay_rules;
+mod gameplay_sun_lit;
 mod ghosting;
 mod level_bad_input;
 mod level_character;

@@ -152,6 +152,9 @@ impl Engine {
             &self.physics,
             self.upkeep.queries(),
             &lights_off,
+            self.environment
+                .sun
+                .and_then(|s| glam::Vec3::from(s.direction).try_normalize()),
             dt,
         );
         self.carry_out(effects);

@@ -78,7 +78,9 @@ fn volumes_of<'a>(c: &'a ConditionEntry, out: &mut Vec<&'a str>) {
         ConditionEntry::Occupied(v) | ConditionEntry::Entered(v) | ConditionEntry::Exited(v) => {
             out.push(v)
         }
-        ConditionEntry::Occupants { volume, .. } => out.push(volume),
+        ConditionEntry::Occupants { volume, .. } | ConditionEntry::SunLit(volume) => {
+            out.push(volume)
+        }
         ConditionEntry::Event(_)
         | ConditionEntry::LightsOn(_)
         | ConditionEntry::Fired(_)

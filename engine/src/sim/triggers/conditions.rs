@@ -19,6 +19,9 @@ pub struct Facts<'a> {
     pub events: &'a [String],
     /// Light groups switched off now (any order).
     pub lights_off: &'a [u32],
+    /// Per volume: its centre sees the sun (computed only for volumes a `SunLit` condition
+    /// reads; `false` for the others and without a sun).
+    pub sun_lit: &'a [bool],
 }
 
 /// The rule book's memory, read by `Fired` and `Counter` conditions.
@@ -113,6 +116,7 @@ pub(super) fn eval(
             all(of, nodes, next).iter().filter(|&&b| b).count() as u32 >= *at_least
         }
         Condition::LightsOn(group) => !facts.lights_off.contains(group),
+        Condition::SunLit(v) => facts.sun_lit.get(*v).copied().unwrap_or(false),
         Condition::Fired(rule) => memory.fired.get(*rule).copied().unwrap_or(false),
         Condition::Counter {
             counter,

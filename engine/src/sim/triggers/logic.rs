@@ -100,6 +100,11 @@ impl RuleBook {
         &self.counters
     }
 
+    /// Whether rule `index`'s condition held in the last step.
+    pub fn holds(&self, index: usize) -> bool {
+        self.state.get(index).is_some_and(|s| s.was)
+    }
+
     /// Whether rule `index` has run its `then` at least once.
     pub fn fired(&self, index: usize) -> bool {
         self.fired.get(index).copied().unwrap_or(false)
@@ -214,6 +219,7 @@ mod tests {
                     volumes: &volumes,
                     events: &[],
                     lights_off: &[],
+                    sun_lit: &[],
                 })
                 .1
             })
@@ -289,6 +295,7 @@ mod tests {
             volumes: &volumes,
             events: &["opened".to_string()],
             lights_off: &[],
+            sun_lit: &[],
         });
         assert_eq!(
             firings,
@@ -302,6 +309,7 @@ mod tests {
             volumes: &volumes,
             events: &[],
             lights_off: &[],
+            sun_lit: &[],
         });
         assert_eq!(actions, vec![Action::Lose], "an event holds for one step");
     }

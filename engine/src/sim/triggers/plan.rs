@@ -135,6 +135,8 @@ pub enum Condition {
     },
     /// Light group on.
     LightsOn(u32),
+    /// Volume (index) centre sees the sun.
+    SunLit(usize),
     /// Rule (index) has run its `then` at least once.
     Fired(usize),
     /// Counter (index) within `[at_least, at_most]` (open bounds as `i32::MIN`/`MAX`).

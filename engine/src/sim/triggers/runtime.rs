@@ -11,18 +11,19 @@
 //! Main thread, fixed step, after physics. Deterministic: no clocks, no hash order.
 //! Must not: touch the upkeep, the audio device or the render thread.
 
-use glam::Mat4;
+use glam::{Mat4, Vec3};
 use hecs::{Entity, World};
 
 use super::beam_geometry::{is_beam, update_beams};
 use super::laser::{LaserBeam, LaserPath, trace_laser};
 use super::logic::{Facts, RuleBook, RuleFiring};
-use super::plan::{Action, GameplayPlan, PlannedSound};
+use super::plan::{Action, Condition, GameplayPlan, PlannedSound};
 use super::volumes::{VolumeEvent, VolumeTracker};
 use crate::ecs::{GlobalTransform, Parent, Renderable, Restyled, Transform};
 use crate::query::Queries;
 use crate::sim::animation::{EntityAnimations, FiredEvent};
 use crate::sim::physics::PhysicsWorld;
+use crate::trace::Ray;
 
 /// How the level ended.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -65,6 +66,8 @@ pub struct LevelLogic {
     entities: Vec<Entity>,
     volumes: VolumeTracker,
     volume_names: Vec<String>,
+    /// Per volume: its sensor's entity, and whether a `SunLit` condition reads it.
+    volume_entities: Vec<(Option<Entity>, bool)>,
     rules: RuleBook,
     counter_names: Vec<String>,
     sounds: Vec<PlannedSound>,
@@ -114,6 +117,15 @@ impl LevelLogic {
             entities: entities.to_vec(),
             volumes,
             volume_names: plan.volumes.iter().map(|v| v.name.clone()).collect(),
+            volume_entities: {
+                let mut read = vec![false; plan.volumes.len()];
+                plan.rules
+                    .iter()
+                    .for_each(|r| sun_volumes(&r.when, &mut read));
+                (plan.volumes.iter().zip(read))
+                    .map(|(v, read)| (entity(v.instance), read))
+                    .collect()
+            },
             rules: RuleBook::new(plan.rules.clone())
                 .with_counters(plan.counters.iter().map(|(_, start)| *start).collect()),
             counter_names: plan.counters.iter().map(|(name, _)| name.clone()).collect(),
@@ -173,6 +185,13 @@ impl LevelLogic {
         self.rules.counters().get(index).copied()
     }
 
+    /// Whether the condition of the rule named `name` held in the last step.
+    pub fn rule_holds(&self, name: &str) -> bool {
+        (self.rules.rules().iter())
+            .position(|r| r.name == name)
+            .is_some_and(|i| self.rules.holds(i))
+    }
+
     /// Whether the rule named `name` has run its `then` at least once.
     pub fn rule_fired(&self, name: &str) -> bool {
         (self.rules.rules().iter())
@@ -227,14 +246,17 @@ impl LevelLogic {
     }
 
     /// One fixed step of `dt_seconds`, with light groups `lights_off` switched off (as the
-    /// engine has them before the step; `LightsOn` conditions read them); returns the effects
-    /// the engine carries out.
+    /// engine has them before the step; `LightsOn` conditions read them) and the sun towards
+    /// `sun` (world space, unit; `SunLit` conditions cast a query ray that way); returns the
+    /// effects the engine carries out.
+    #[allow(clippy::too_many_arguments)]
     pub fn step(
         &mut self,
         world: &mut World,
         physics: &PhysicsWorld,
         queries: Queries<'_>,
         lights_off: &[u32],
+        sun: Option<Vec3>,
         dt_seconds: f64,
     ) -> Vec<Effect> {
         self.steps += 1;
@@ -250,10 +272,17 @@ impl LevelLogic {
             .map(|e| e.name.clone())
             .chain(self.sent.drain(..))
             .collect();
+        let sun_lit: Vec<bool> = (self.volume_entities.iter())
+            .map(|&(entity, read)| match (entity, sun, read) {
+                (Some(e), Some(towards), true) => sees_sun(world, &queries, e, towards),
+                _ => false,
+            })
+            .collect();
         let (firings, actions) = self.rules.step(&Facts {
             volumes: &facts,
             events: &names,
             lights_off,
+            sun_lit: &sun_lit,
         });
         let mut effects = Vec::new();
         let mut action_rule = firings.iter().flat_map(|f| {
@@ -300,6 +329,37 @@ impl LevelLogic {
         };
         effects
     }
+}
+
+/// Marks the volumes `SunLit` conditions in `c` read.
+fn sun_volumes(c: &Condition, read: &mut [bool]) {
+    match c {
+        Condition::SunLit(v) => {
+            if let Some(r) = read.get_mut(*v) {
+                *r = true;
+            }
+        }
+        Condition::All(cs)
+        | Condition::Any(cs)
+        | Condition::AtLeast { of: cs, .. }
+        | Condition::Sequence(cs) => cs.iter().for_each(|c| sun_volumes(c, read)),
+        Condition::Not(c) | Condition::Times { of: c, .. } => sun_volumes(c, read),
+        _ => {}
+    }
+}
+
+/// Whether the centre of `volume`'s entity sees the sun towards `sun` (unit): a query ray
+/// meets nothing but the volume's own instance and laser beams.
+fn sees_sun(world: &World, queries: &Queries<'_>, volume: Entity, sun: Vec3) -> bool {
+    let Some(placed) = world_from_model(world, volume) else {
+        return false;
+    };
+    let ray = Ray::new(placed.w_axis.truncate(), sun);
+    queries
+        .closest_where(&ray, |e| {
+            e != Some(volume) && !e.is_some_and(|e| is_beam(world, e))
+        })
+        .is_none()
 }
 
 /// Gives `entity` level material `material` (or its model's own back) and tells the extractor
