@@ -95,6 +95,7 @@ mod refit_degradation;
 mod scene_light_tree;
 mod script_determinism;
 mod script_format;
+mod sky_ephemeris;
 mod structure_layers;
 mod trace_agreement;
 mod upkeep_camera_motion;
