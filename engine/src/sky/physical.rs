@@ -59,6 +59,10 @@ pub struct PhysicalSky {
     /// Lambertian ground reflectance, linear RGB, each 0..=1.
     #[serde(default = "default_albedo")]
     pub ground_albedo: [f32; 3],
+    /// Multiplier of the sun disc's radiance, 0..=1000 (0: the sky alone, as Mitsuba's
+    /// `sun_scale`; the sky itself is not changed).
+    #[serde(default = "one")]
+    pub sun_scale: f32,
 }
 
 /// The haze whose diffuse-to-global horizontal ratio at 60° sun elevation matches Mitsuba's
@@ -93,6 +97,7 @@ impl PhysicalSky {
         check("sun_azimuth_deg", self.sun_azimuth_deg, -360.0, 360.0, "-360..=360")?;
         check("haze", self.haze, 0.0, 100.0, "0..=100")?;
         check("ozone", self.ozone, 0.0, 10.0, "0..=10")?;
+        check("sun_scale", self.sun_scale, 0.0, 1000.0, "0..=1000")?;
         for a in self.ground_albedo {
             check("ground_albedo", a, 0.0, 1.0, "0..=1")?;
         }
