@@ -88,7 +88,7 @@ fn diffuse_floor_under_the_physical_sky_conserves_energy() -> anyhow::Result<()>
     let z = (mean - expected).abs() / standard_error;
     println!(
         "floor radiance {mean:.6} expected {expected:.6} (ρ/π·E_h), standard error \
-         {standard_error:.2e}, deviation {z:.2} standard errors"
+         {standard_error:.7}, deviation {z:.2} standard errors"
     );
     assert!(z.max_element() < 4.5, "floor {mean} vs {expected}: {z} standard errors");
     Ok(())
