@@ -219,7 +219,11 @@ pub fn fill_sun_and_sky(u: &mut GpuFrameUniforms, sun: Option<&SunDesc>, sky: &S
         SkyDesc::Physical(p) => {
             u.sky_kind = SKY_PHYSICAL;
             let azimuth = p.sun_horizontal().map_or(Vec3::NEG_Z, |h| {
-                crate::sky::Horizontal { elevation_deg: 0.0, azimuth_deg: h.azimuth_deg }.direction()
+                crate::sky::Horizontal {
+                    elevation_deg: 0.0,
+                    azimuth_deg: h.azimuth_deg,
+                }
+                .direction()
             });
             u.sky_zenith = [0.0; 4];
             u.sky_horizon = azimuth.extend(0.0).to_array();

@@ -15,9 +15,9 @@ mod flattened;
 pub mod light_tree;
 pub mod lights;
 mod lines;
-mod sky_table;
 pub mod materials;
 pub mod optics;
+mod sky_table;
 pub mod surface;
 mod writes;
 

@@ -60,7 +60,11 @@ impl Atmosphere {
         let rayleigh = RAYLEIGH_SCATTERING * (-h / RAYLEIGH_SCALE_HEIGHT_KM).exp();
         let mie_density = self.haze * (-h / MIE_SCALE_HEIGHT_KM).exp();
         // Ozone: a tent 30 km wide peaking at 25 km.
-        let ozone_density = if h < 25.0 { h / 15.0 - 2.0 / 3.0 } else { 8.0 / 3.0 - h / 15.0 };
+        let ozone_density = if h < 25.0 {
+            h / 15.0 - 2.0 / 3.0
+        } else {
+            8.0 / 3.0 - h / 15.0
+        };
         let ozone = OZONE_ABSORPTION * (self.ozone * ozone_density.max(0.0));
         let mie = Vec3::splat(MIE_SCATTERING * mie_density);
         Medium {

@@ -67,7 +67,9 @@ impl UtcInstant {
         let b = 2.0 - a + (a / 4.0).floor();
         let day_fraction =
             (self.hour as f64 + self.minute as f64 / 60.0 + self.second / 3600.0) / 24.0;
-        (365.25 * (y + 4716.0)).floor() + (30.6001 * (m + 1.0)).floor() + self.day as f64
+        (365.25 * (y + 4716.0)).floor()
+            + (30.6001 * (m + 1.0)).floor()
+            + self.day as f64
             + day_fraction
             + b
             - 1524.5

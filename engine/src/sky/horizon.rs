@@ -52,7 +52,10 @@ pub struct Horizontal {
 impl Horizontal {
     /// Unit vector towards this direction in engine space (north = −Z, east = +X, up = +Y).
     pub fn direction(&self) -> Vec3 {
-        let (h, a) = (self.elevation_deg.to_radians(), self.azimuth_deg.to_radians());
+        let (h, a) = (
+            self.elevation_deg.to_radians(),
+            self.azimuth_deg.to_radians(),
+        );
         Vec3::new(
             (h.cos() * a.sin()) as f32,
             h.sin() as f32,
@@ -62,7 +65,10 @@ impl Horizontal {
 
     /// Unit vector in f64 as (east, north, up): used by tests that compare angles finely.
     pub fn enu(&self) -> [f64; 3] {
-        let (h, a) = (self.elevation_deg.to_radians(), self.azimuth_deg.to_radians());
+        let (h, a) = (
+            self.elevation_deg.to_radians(),
+            self.azimuth_deg.to_radians(),
+        );
         [h.cos() * a.sin(), h.cos() * a.cos(), h.sin()]
     }
 }
@@ -112,10 +118,20 @@ mod tests {
 
     #[test]
     fn azimuth_maps_to_engine_axes() {
-        let d = |a: f64| Horizontal { elevation_deg: 0.0, azimuth_deg: a }.direction();
+        let d = |a: f64| {
+            Horizontal {
+                elevation_deg: 0.0,
+                azimuth_deg: a,
+            }
+            .direction()
+        };
         assert!((d(0.0) - Vec3::NEG_Z).length() < 1e-6, "north is -Z");
         assert!((d(90.0) - Vec3::X).length() < 1e-6, "east is +X");
-        let up = Horizontal { elevation_deg: 90.0, azimuth_deg: 10.0 }.direction();
+        let up = Horizontal {
+            elevation_deg: 90.0,
+            azimuth_deg: 10.0,
+        }
+        .direction();
         assert!((up - Vec3::Y).length() < 1e-6);
     }
 

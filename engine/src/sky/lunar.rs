@@ -65,7 +65,8 @@ fn geocentric(jd: f64) -> (f64, f64, f64) {
     let lm = m + perigee + node;
     let dd = lm - ls;
     let f = lm - node;
-    lon += -1.274 * sin_d(m - 2.0 * dd) + 0.658 * sin_d(2.0 * dd) - 0.186 * sin_d(ms)
+    lon += -1.274 * sin_d(m - 2.0 * dd) + 0.658 * sin_d(2.0 * dd)
+        - 0.186 * sin_d(ms)
         - 0.059 * sin_d(2.0 * m - 2.0 * dd)
         - 0.057 * sin_d(m - 2.0 * dd + ms)
         + 0.053 * sin_d(m + 2.0 * dd)
@@ -75,7 +76,8 @@ fn geocentric(jd: f64) -> (f64, f64, f64) {
         - 0.031 * sin_d(m + ms)
         - 0.015 * sin_d(2.0 * f - 2.0 * dd)
         + 0.011 * sin_d(m - 4.0 * dd);
-    lat += -0.173 * sin_d(f - 2.0 * dd) - 0.055 * sin_d(m - f - 2.0 * dd)
+    lat += -0.173 * sin_d(f - 2.0 * dd)
+        - 0.055 * sin_d(m - f - 2.0 * dd)
         - 0.046 * sin_d(m + f - 2.0 * dd)
         + 0.033 * sin_d(f + 2.0 * dd)
         + 0.017 * sin_d(2.0 * m + f);
@@ -89,7 +91,11 @@ pub fn moon_position(observer: &Observer, when: &UtcInstant) -> MoonState {
     let (lon, lat, r) = geocentric(jd);
     let (sun_lon, sun_distance_au, obliquity) = ecliptic(jd);
     // Ecliptic → equatorial (of date), geocentric, in Earth radii.
-    let ecl = [r * cos_d(lat) * cos_d(lon), r * cos_d(lat) * sin_d(lon), r * sin_d(lat)];
+    let ecl = [
+        r * cos_d(lat) * cos_d(lon),
+        r * cos_d(lat) * sin_d(lon),
+        r * sin_d(lat),
+    ];
     let (ce, se) = (cos_d(obliquity), sin_d(obliquity));
     let geo = [ecl[0], ecl[1] * ce - ecl[2] * se, ecl[1] * se + ecl[2] * ce];
     let o = observer_vector(observer, jd);

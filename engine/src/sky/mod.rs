@@ -7,7 +7,8 @@
 //! from the local horizon to engine space (north = −Z, east = +X, up = +Y, azimuth from north
 //! towards east; [`Horizontal::direction`]), and the physical sky: the Earth preset's media
 //! (`atmosphere`), the transmittance and multiple-scattering tables, the sky-view table and
-//! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into. Runs on any thread: plain data and pure functions.
+//! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into.
+//! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
 //! the layers and uses nothing of the engine but `glam`.
 

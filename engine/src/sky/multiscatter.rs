@@ -27,7 +27,12 @@ impl MultiScatteringLut {
             for x in 0..SIZE {
                 let mu_s = x as f32 / (SIZE - 1) as f32 * 2.0 - 1.0;
                 let h = y as f32 / (SIZE - 1) as f32 * (TOP_RADIUS_KM - GROUND_RADIUS_KM);
-                texels.push(texel(atmosphere, transmittance, GROUND_RADIUS_KM + h.max(1e-3), mu_s));
+                texels.push(texel(
+                    atmosphere,
+                    transmittance,
+                    GROUND_RADIUS_KM + h.max(1e-3),
+                    mu_s,
+                ));
             }
         }
         Self { texels }
@@ -53,7 +58,9 @@ fn texel(atmosphere: &Atmosphere, transmittance: &TransmittanceLut, r: f32, mu_s
         let phi = golden * i as f32;
         let dir = Vec3::new(s * phi.cos(), s * phi.sin(), z);
         let ground = ray_sphere(r, z, GROUND_RADIUS_KM, true);
-        let length = ground.or(ray_sphere(r, z, TOP_RADIUS_KM, false)).unwrap_or(0.0);
+        let length = ground
+            .or(ray_sphere(r, z, TOP_RADIUS_KM, false))
+            .unwrap_or(0.0);
         let dt = length / STEPS as f32;
         let mut throughput = Vec3::ONE;
         for k in 0..STEPS {

@@ -82,19 +82,41 @@ fn default_albedo() -> [f32; 3] {
     [0.3; 3]
 }
 
-fn check(field: &'static str, value: f32, lo: f32, hi: f32, range: &'static str) -> Result<(), SkyError> {
+fn check(
+    field: &'static str,
+    value: f32,
+    lo: f32,
+    hi: f32,
+    range: &'static str,
+) -> Result<(), SkyError> {
     if value.is_finite() && (lo..=hi).contains(&value) {
         Ok(())
     } else {
-        Err(SkyError::Parameter { field, value: value as f64, range })
+        Err(SkyError::Parameter {
+            field,
+            value: value as f64,
+            range,
+        })
     }
 }
 
 impl PhysicalSky {
     /// Checks every field; the error names the field (`haze`, `sun_elevation_deg`, …).
     pub fn validate(&self) -> Result<(), SkyError> {
-        check("sun_elevation_deg", self.sun_elevation_deg, -90.0, 90.0, "-90..=90")?;
-        check("sun_azimuth_deg", self.sun_azimuth_deg, -360.0, 360.0, "-360..=360")?;
+        check(
+            "sun_elevation_deg",
+            self.sun_elevation_deg,
+            -90.0,
+            90.0,
+            "-90..=90",
+        )?;
+        check(
+            "sun_azimuth_deg",
+            self.sun_azimuth_deg,
+            -360.0,
+            360.0,
+            "-360..=360",
+        )?;
         check("haze", self.haze, 0.0, 100.0, "0..=100")?;
         check("ozone", self.ozone, 0.0, 10.0, "0..=10")?;
         check("sun_scale", self.sun_scale, 0.0, 1000.0, "0..=1000")?;
@@ -143,13 +165,27 @@ impl PhysicalSky {
 
 impl SkyTime {
     fn instant(&self) -> Result<UtcInstant, SkyError> {
-        let bad = SkyError::Time { hour: 24, minute: 0, second: self.utc_hours * 3600.0 };
+        let bad = SkyError::Time {
+            hour: 24,
+            minute: 0,
+            second: self.utc_hours * 3600.0,
+        };
         if !self.utc_hours.is_finite() || !(0.0..24.0).contains(&self.utc_hours) {
             return Err(bad);
         }
         let seconds = self.utc_hours * 3600.0;
-        let (hour, minute) = ((seconds / 3600.0) as u32, ((seconds % 3600.0) / 60.0) as u32);
-        UtcInstant::new(self.year, self.month, self.day, hour, minute, seconds % 60.0)
+        let (hour, minute) = (
+            (seconds / 3600.0) as u32,
+            ((seconds % 3600.0) / 60.0) as u32,
+        );
+        UtcInstant::new(
+            self.year,
+            self.month,
+            self.day,
+            hour,
+            minute,
+            seconds % 60.0,
+        )
     }
 }
 
@@ -175,8 +211,15 @@ impl SkyTables {
         let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
         let elevation = (h.elevation_deg as f32).to_radians();
         let texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
-        let flat = Horizontal { elevation_deg: 0.0, azimuth_deg: h.azimuth_deg };
-        Ok(Self { texels, sun_direction: h.direction(), sun_azimuth: flat.direction() })
+        let flat = Horizontal {
+            elevation_deg: 0.0,
+            azimuth_deg: h.azimuth_deg,
+        };
+        Ok(Self {
+            texels,
+            sun_direction: h.direction(),
+            sun_azimuth: flat.direction(),
+        })
     }
 
     /// Sky radiance towards unit engine-space direction `d` (sun disc excluded).

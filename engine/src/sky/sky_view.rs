@@ -99,7 +99,11 @@ fn march(
 /// azimuth (any sign, any turn). Bilinear between nodes; the WGSL twin does the same arithmetic.
 pub fn lookup_view(texels: &[[f32; 4]], elevation: f32, azimuth: f32) -> Vec3 {
     let a = azimuth.abs() % std::f32::consts::TAU;
-    let phi = if a > std::f32::consts::PI { std::f32::consts::TAU - a } else { a };
+    let phi = if a > std::f32::consts::PI {
+        std::f32::consts::TAU - a
+    } else {
+        a
+    };
     let u = phi / std::f32::consts::PI;
     let e = (elevation / std::f32::consts::FRAC_PI_2).clamp(-1.0, 1.0);
     let v = 0.5 + 0.5 * e.signum() * e.abs().sqrt();

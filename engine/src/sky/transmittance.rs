@@ -73,7 +73,9 @@ impl TransmittanceLut {
         }
         let h = horizon_length();
         let r = r.clamp(GROUND_RADIUS_KM, TOP_RADIUS_KM);
-        let rho = (r * r - GROUND_RADIUS_KM * GROUND_RADIUS_KM).max(0.0).sqrt();
+        let rho = (r * r - GROUND_RADIUS_KM * GROUND_RADIUS_KM)
+            .max(0.0)
+            .sqrt();
         let disc = r * r * (mu * mu - 1.0) + TOP_RADIUS_KM * TOP_RADIUS_KM;
         let d = (-r * mu + disc.max(0.0).sqrt()).max(0.0);
         let d_min = TOP_RADIUS_KM - r;
@@ -102,14 +104,20 @@ mod tests {
 
     #[test]
     fn table_matches_direct_integration() {
-        let atmosphere = Atmosphere { haze: 1.0, ozone: 1.0, ground_albedo: Vec3::splat(0.3) };
+        let atmosphere = Atmosphere {
+            haze: 1.0,
+            ozone: 1.0,
+            ground_albedo: Vec3::splat(0.3),
+        };
         let lut = TransmittanceLut::build(&atmosphere);
         let r = GROUND_RADIUS_KM + 0.01;
         for mu in [1.0f32, 0.7, 0.3, 0.1, 0.02] {
             let exact = transmittance_exact(&atmosphere, r, mu);
             let table = lut.lookup(r, mu);
-            assert!((exact - table).abs().max_element() < 2e-3 * exact.max_element().max(0.05),
-                "mu {mu}: {exact} vs {table}");
+            assert!(
+                (exact - table).abs().max_element() < 2e-3 * exact.max_element().max(0.05),
+                "mu {mu}: {exact} vs {table}"
+            );
         }
         assert_eq!(lut.lookup(r, -0.2), Vec3::ZERO);
     }

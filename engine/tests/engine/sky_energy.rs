@@ -74,14 +74,24 @@ fn diffuse_floor_under_the_physical_sky_conserves_energy() -> anyhow::Result<()>
     let scene = RenderScene::build(&desc);
     anyhow::ensure!(!scene.sky.texels.is_empty(), "the scene holds no sky table");
     let settings = FrameSettings::new(32, 32, 64, 7, &desc.render);
-    let u = frame_uniforms(&desc.camera, desc.sun.as_ref(), &desc.sky, &settings, &scene.header());
+    let u = frame_uniforms(
+        &desc.camera,
+        desc.sun.as_ref(),
+        &desc.sky,
+        &settings,
+        &scene.header(),
+    );
     anyhow::ensure!(u.sun_solid_angle < 0.0, "sun_scale 0 must leave no sun");
     let mut tracer = CpuTracer::new();
     tracer.render(&scene, &u)?;
     let pixels: Vec<DVec3> = tracer.film()?.mean.iter().map(|p| p.as_dvec3()).collect();
     let n = pixels.len() as f64;
     let mean = pixels.iter().copied().sum::<DVec3>() / n;
-    let variance = pixels.iter().map(|p| (*p - mean) * (*p - mean)).sum::<DVec3>() / (n - 1.0);
+    let variance = pixels
+        .iter()
+        .map(|p| (*p - mean) * (*p - mean))
+        .sum::<DVec3>()
+        / (n - 1.0);
     let standard_error = (variance / n).powf(0.5);
     let expected = crate::sky_reference::horizontal_irradiance(&SkyTables::build(&sky)?)
         * (0.5 / std::f64::consts::PI);
@@ -90,6 +100,9 @@ fn diffuse_floor_under_the_physical_sky_conserves_energy() -> anyhow::Result<()>
         "floor radiance {mean:.6} expected {expected:.6} (ρ/π·E_h), standard error \
          {standard_error:.7}, deviation {z:.2} standard errors"
     );
-    assert!(z.max_element() < 4.5, "floor {mean} vs {expected}: {z} standard errors");
+    assert!(
+        z.max_element() < 4.5,
+        "floor {mean} vs {expected}: {z} standard errors"
+    );
     Ok(())
 }

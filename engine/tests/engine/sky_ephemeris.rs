@@ -31,12 +31,24 @@ fn sun_and_moon_match_the_reference_ephemerides() -> anyhow::Result<()> {
     for line in text.lines().filter(|l| !l.starts_with('#')).skip(1) {
         let f: Vec<f64> = line.split(',').map(str::parse).collect::<Result<_, _>>()?;
         let observer = Observer::new(f[0], f[1])?;
-        let when = UtcInstant::new(f[2] as i32, f[3] as u32, f[4] as u32, f[5] as u32, f[6] as u32, f[7])?;
+        let when = UtcInstant::new(
+            f[2] as i32,
+            f[3] as u32,
+            f[4] as u32,
+            f[5] as u32,
+            f[6] as u32,
+            f[7],
+        )?;
         let sun = sun_position(&observer, &when);
         let moon = moon_position(&observer, &when);
-        worst_sun = worst_sun.max(angle_deg(sun.horizontal.enu(), horizontal(f[8], f[9]).enu()));
-        worst_moon =
-            worst_moon.max(angle_deg(moon.horizontal.enu(), horizontal(f[10], f[11]).enu()));
+        worst_sun = worst_sun.max(angle_deg(
+            sun.horizontal.enu(),
+            horizontal(f[8], f[9]).enu(),
+        ));
+        worst_moon = worst_moon.max(angle_deg(
+            moon.horizontal.enu(),
+            horizontal(f[10], f[11]).enu(),
+        ));
         worst_phase = worst_phase.max((moon.phase_angle_deg - f[12]).abs());
         worst_lit = worst_lit.max((moon.illuminated_fraction - f[13]).abs());
         rows += 1;
@@ -59,7 +71,11 @@ fn bad_places_and_times_are_typed_errors() {
     assert_eq!(Observer::new(-90.5, 0.0), Err(SkyError::Latitude(-90.5)));
     assert!(matches!(
         UtcInstant::new(2026, 2, 30, 12, 0, 0.0),
-        Err(SkyError::Date { month: 2, day: 30, .. })
+        Err(SkyError::Date {
+            month: 2,
+            day: 30,
+            ..
+        })
     ));
     let message = Observer::new(123.0, 0.0).unwrap_err().to_string();
     assert!(message.contains("latitude 123"), "{message}");

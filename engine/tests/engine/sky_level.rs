@@ -39,7 +39,10 @@ fn refused(name: &str, extra: &str, field: &str) {
         Ok(_) => panic!("{name} should be refused"),
         Err(e) => e.to_string(),
     };
-    assert!(message.contains(&format!("{name}.ron")), "does not name the file: {message}");
+    assert!(
+        message.contains(&format!("{name}.ron")),
+        "does not name the file: {message}"
+    );
     assert!(message.contains(field), "does not name {field}: {message}");
 }
 
@@ -64,8 +67,16 @@ fn physical_sky_loads_with_defaults_and_a_time() {
 #[test]
 fn bad_physical_skies_name_the_file_and_the_field() {
     refused("negative_haze", "sky: Physical((haze: -1.0))", "haze");
-    refused("deep_sun", "sky: Physical((sun_elevation_deg: -91.0))", "sun_elevation_deg");
-    refused("bad_albedo", "sky: Physical((ground_albedo: (0.3, 1.5, 0.3)))", "ground_albedo");
+    refused(
+        "deep_sun",
+        "sky: Physical((sun_elevation_deg: -91.0))",
+        "sun_elevation_deg",
+    );
+    refused(
+        "bad_albedo",
+        "sky: Physical((ground_albedo: (0.3, 1.5, 0.3)))",
+        "ground_albedo",
+    );
     refused(
         "bad_date",
         "sky: Physical((time: Some((latitude_deg: 0.0, longitude_deg: 0.0, year: 2026, month: 2, \

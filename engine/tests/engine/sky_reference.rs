@@ -46,14 +46,21 @@ fn sky(elevation: u32, haze: f32) -> PhysicalSky {
 /// and azimuth (400 × 800 cells; halving both changes it by < 1e-4 relative).
 pub(crate) fn horizontal_irradiance(tables: &SkyTables) -> DVec3 {
     let (n_e, n_a) = (400, 800);
-    let (de, da) = (std::f64::consts::FRAC_PI_2 / n_e as f64, std::f64::consts::TAU / n_a as f64);
+    let (de, da) = (
+        std::f64::consts::FRAC_PI_2 / n_e as f64,
+        std::f64::consts::TAU / n_a as f64,
+    );
     let mut sum = DVec3::ZERO;
     for i in 0..n_e {
         let e = (i as f64 + 0.5) * de;
         let mut ring = DVec3::ZERO;
         for j in 0..n_a {
             let a = (j as f64 + 0.5) * da;
-            let d = Vec3::new((e.cos() * a.sin()) as f32, e.sin() as f32, (-e.cos() * a.cos()) as f32);
+            let d = Vec3::new(
+                (e.cos() * a.sin()) as f32,
+                e.sin() as f32,
+                (-e.cos() * a.cos()) as f32,
+            );
             ring += tables.radiance(d).as_dvec3();
         }
         sum += ring * (e.sin() * e.cos() * de * da);
@@ -70,7 +77,13 @@ fn figures(elevation: u32, haze: f32) -> anyhow::Result<(SkyTables, Figures)> {
     let s = sky(elevation, haze);
     let tables = SkyTables::build(&s)?;
     let dhi = horizontal_irradiance(&tables);
-    Ok((tables, Figures { dni: s.sun_irradiance()?.as_dvec3(), dhi }))
+    Ok((
+        tables,
+        Figures {
+            dni: s.sun_irradiance()?.as_dvec3(),
+            dhi,
+        },
+    ))
 }
 
 fn ratio(f: &Figures, elevation: u32) -> f64 {
@@ -86,9 +99,12 @@ fn json(elevation: u32) -> anyhow::Result<serde_json::Value> {
 fn number(v: &serde_json::Value, path: &[&str]) -> anyhow::Result<f64> {
     let mut v = v;
     for key in path {
-        v = v.get(key).ok_or_else(|| anyhow::anyhow!("figures.json lacks {path:?}"))?;
+        v = v
+            .get(key)
+            .ok_or_else(|| anyhow::anyhow!("figures.json lacks {path:?}"))?;
     }
-    v.as_f64().ok_or_else(|| anyhow::anyhow!("figures.json: {path:?} is not a number"))
+    v.as_f64()
+        .ok_or_else(|| anyhow::anyhow!("figures.json: {path:?} is not a number"))
 }
 
 fn rgb(v: &serde_json::Value, path: &[&str]) -> anyhow::Result<DVec3> {
@@ -96,9 +112,14 @@ fn rgb(v: &serde_json::Value, path: &[&str]) -> anyhow::Result<DVec3> {
     for (i, o) in out.iter_mut().enumerate() {
         let mut w = v;
         for key in path {
-            w = w.get(key).ok_or_else(|| anyhow::anyhow!("figures.json lacks {path:?}"))?;
+            w = w
+                .get(key)
+                .ok_or_else(|| anyhow::anyhow!("figures.json lacks {path:?}"))?;
         }
-        *o = w.get(i).and_then(|x| x.as_f64()).ok_or_else(|| anyhow::anyhow!("{path:?}[{i}]"))?;
+        *o = w
+            .get(i)
+            .and_then(|x| x.as_f64())
+            .ok_or_else(|| anyhow::anyhow!("{path:?}[{i}]"))?;
     }
     Ok(DVec3::from(out))
 }
@@ -116,8 +137,15 @@ fn read_sky_exr(path: &Path) -> anyhow::Result<(usize, Vec<DVec3>)> {
     use exr::prelude::*;
     let image = read_first_rgba_layer_from_file(
         path,
-        |resolution, _| (resolution.width(), vec![DVec3::ZERO; resolution.width() * resolution.height()]),
-        |(width, pixels): &mut (usize, Vec<DVec3>), position, (r, g, b, _a): (f32, f32, f32, f32)| {
+        |resolution, _| {
+            (
+                resolution.width(),
+                vec![DVec3::ZERO; resolution.width() * resolution.height()],
+            )
+        },
+        |(width, pixels): &mut (usize, Vec<DVec3>),
+         position,
+         (r, g, b, _a): (f32, f32, f32, f32)| {
             pixels[position.y() * *width + position.x()] = DVec3::new(r as f64, g as f64, b as f64);
         },
     )?;
@@ -153,13 +181,23 @@ struct Comparison {
 fn compare(elevation: u32) -> anyhow::Result<Comparison> {
     let reference = json(elevation)?;
     let (tables, ours) = figures(elevation, HAZE_TURBIDITY_3)?;
-    let (r, r_ref) = (ratio(&ours, elevation), number(&reference, &["diffuse_to_global_ratio", "Y"])?);
+    let (r, r_ref) = (
+        ratio(&ours, elevation),
+        number(&reference, &["diffuse_to_global_ratio", "Y"])?,
+    );
     let dni_ref = number(&reference, &["sun", "direct_normal_irradiance_Y"])?;
     let dhi_ref = number(&reference, &["diffuse_horizontal_irradiance", "Y"])?;
     // Sky luminance > 5° from the sun over sky.exr's grid.
     let (width, pixels) = read_sky_exr(&reference_dir(elevation).join("sky.exr"))?;
-    anyhow::ensure!(width == 512 && pixels.len() == 512 * 128, "sky.exr is not 512 × 128");
-    let sun = Horizontal { elevation_deg: elevation as f64, azimuth_deg: 0.0 }.direction();
+    anyhow::ensure!(
+        width == 512 && pixels.len() == 512 * 128,
+        "sky.exr is not 512 × 128"
+    );
+    let sun = Horizontal {
+        elevation_deg: elevation as f64,
+        azimuth_deg: 0.0,
+    }
+    .direction();
     let mut errors = Vec::new();
     for row in 0..128 {
         for col in 0..512 {

@@ -25,8 +25,8 @@ use crate::layout::{
     GpuFrameUniforms, GpuLine, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS,
     METHOD_NEE, SKY_GRADIENT, SKY_PHYSICAL,
 };
-use crate::sky::sky_view_radiance;
 use crate::scene::RenderScene;
+use crate::sky::sky_view_radiance;
 use crate::trace::{Ray, TraceScene};
 
 /// Rays traced, by kind.
