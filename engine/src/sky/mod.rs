@@ -10,7 +10,7 @@
 //! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into.
 //! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
-//! the layers and uses nothing of the engine but `glam`.
+//! the layers and uses no engine module (only glam, serde and thiserror).
 
 mod atmosphere;
 mod calendar;
