@@ -1,6 +1,7 @@
 //! [`SkyTable`]: the physical sky's sky-view texels as the render side holds them — the CPU
 //! tracer reads them in place, the GPU tracer would upload the same vector (its WGSL twin is
-//! not written yet: it refuses `SkyDesc::Physical`, see `render/gpu`).
+//! not written yet: it answers `RenderError::Unsupported` and the render thread hands the run
+//! to the CPU tracer, `render/device_loss.rs`).
 //!
 //! Any thread (plain data). Rebuilt only when the sky's description changes ([`SkyTable::
 //! update`] compares it), on the thread that owns the `RenderScene` copy (the render thread
@@ -22,8 +23,8 @@ pub struct SkyTable {
 }
 
 impl SkyTable {
-    /// Rebuilds the texels when `sky` is a physical sky other than the one held (tens of
-    /// milliseconds); clears them for the other skies. A sky that fails its checks (the level
+    /// Rebuilds the texels when `sky` is a physical sky other than the one held (about
+    /// 0.3 s); clears them for the other skies. A sky that fails its checks (the level
     /// loader refuses those first) leaves an empty table: the tracers then see a black sky.
     pub fn update(&mut self, sky: &SkyDesc) {
         match sky {

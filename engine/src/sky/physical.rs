@@ -3,7 +3,7 @@
 //! (direction and direct normal irradiance through the air) and [`SkyTables`], the
 //! precomputed sky-view texels both tracers read.
 //!
-//! Any thread. Building the tables costs tens of milliseconds (release): done when the sky
+//! Any thread. Building the tables costs about 0.3 s on one core: done when the sky
 //! changes, never per frame. Directions are in engine space (north = −Z, east = +X, up = +Y);
 //! radiance and irradiance in linear RGB, W·m⁻²·sr⁻¹·nm⁻¹ and W·m⁻²·nm⁻¹ (the spectral units of
 //! Mitsuba's sunsky, which `docs/ACCURACY.md` compares against). Must not: know levels, scenes
