@@ -53,15 +53,24 @@ fn the_gpu_tracer_hands_a_physical_sky_to_the_cpu_tracer() {
         .map(|r| r.unwrap_or_else(|e| panic!("a render failed: {e}")))
         .collect();
     assert_eq!(rendered.len() as u64, FRAMES);
-    assert!(rendered.iter().all(|r| r.tracer == "cpu"), "every frame on the CPU tracer");
-    let notices: Vec<&str> = rendered.iter().filter_map(|r| r.notice.as_deref()).collect();
+    assert!(
+        rendered.iter().all(|r| r.tracer == "cpu"),
+        "every frame on the CPU tracer"
+    );
+    let notices: Vec<&str> = rendered
+        .iter()
+        .filter_map(|r| r.notice.as_deref())
+        .collect();
     assert_eq!(notices.len(), 1, "{notices:?}");
     assert!(
         notices[0].contains("physical sky") && notices[0].contains("CPU tracer"),
         "{}",
         notices[0]
     );
-    let film = rendered.last().and_then(|r| r.film.as_ref()).expect("captured film");
+    let film = rendered
+        .last()
+        .and_then(|r| r.film.as_ref())
+        .expect("captured film");
     assert!(film.mean.iter().all(|p| p.is_finite()));
     let mean = film.mean.iter().map(|p| p.y).sum::<f32>() / film.mean.len() as f32;
     assert!(mean > 0.01, "the sunlit floor is dark: {mean}");
