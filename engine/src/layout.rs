@@ -347,6 +347,9 @@ pub const METHOD_DEFAULT: u32 = METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER
 pub const SKY_CONSTANT: u32 = 0;
 /// `GpuFrameUniforms::sky_kind`: zenith → horizon → ground gradient.
 pub const SKY_GRADIENT: u32 = 1;
+/// `GpuFrameUniforms::sky_kind`: the physical sky's sky-view table (`scene::SkyTable`), seen
+/// in the frame whose unit horizontal vector towards the sun's azimuth is `sky_horizon.xyz`.
+pub const SKY_PHYSICAL: u32 = 2;
 
 /// Everything that changes per frame or per render: camera, sun, sky, image size, sampling.
 /// The camera basis vectors are pre-scaled: a pixel's direction is

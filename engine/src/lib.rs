@@ -18,6 +18,9 @@ pub mod layout;
 /// CPU ray traversal over `layout` buffers (scalar, AVX2, AVX-512).
 pub mod trace;
 
+/// Sun and moon positions for a place and time; the physical sky's tables.
+pub mod sky;
+
 /// Files in (models, textures, levels), descriptions out.
 pub mod assets;
 

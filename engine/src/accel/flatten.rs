@@ -61,6 +61,7 @@ impl RenderScene {
         upkeep.finish_frame();
         let tlas_build_seconds = started.elapsed().as_secs_f64();
         let mut scene = upkeep.into_scene();
+        scene.sky.update(&desc.sky);
         scene.stats = SceneStats {
             meshes: desc.models.iter().map(|m| m.meshes.len()).sum(),
             unique_triangles: desc

@@ -230,6 +230,9 @@ pub enum SkyDesc {
         horizon: [f32; 3],
         ground: [f32; 3],
     },
+    /// A physically based sky with its sun (Hillaire 2020, `crate::sky`): the level's `sun`
+    /// must be `None` (this sky places and colours the sun). The GPU tracer refuses it for now.
+    Physical(crate::sky::PhysicalSky),
 }
 
 impl Default for SkyDesc {

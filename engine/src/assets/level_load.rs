@@ -13,7 +13,7 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::error::{AssetError, AssetResult};
-use super::level::{Level, LevelMaterial};
+use super::level::{Level, LevelMaterial, SkyDesc};
 use super::level_body::BodyEntry;
 use super::model::Material;
 use super::root::AssetRoot;
@@ -130,6 +130,17 @@ pub fn scene_from_level(
     }
     if Vec3::from(camera.look_at) == Vec3::from(camera.position) {
         return Err(level_error("camera.look_at equals camera.position".into()));
+    }
+    if let SkyDesc::Physical(sky) = &level.sky {
+        if level.sun.is_some() {
+            return Err(level_error(
+                "sun must be None with sky: Physical (the physical sky places and colours the sun)"
+                    .into(),
+            ));
+        }
+        if let Err(e) = sky.validate() {
+            return Err(level_error(format!("sky.Physical: {e}")));
+        }
     }
     let mut models = level
         .models

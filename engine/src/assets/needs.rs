@@ -105,7 +105,9 @@ impl Needs {
                 .chain(&horizon)
                 .chain(&ground)
                 .any(|&v| v > 0.0),
+            SkyDesc::Physical(_) => true,
         };
+        n.sun |= matches!(desc.sky, SkyDesc::Physical(_));
         n
     }
 

@@ -100,6 +100,7 @@ pub(super) fn render_one(
 ) -> Result<Rendered, RenderError> {
     let started = Instant::now();
     scene.apply(&commit.writes, &commit.header);
+    scene.sky.update(&commit.sky);
     let mut notice = None;
     if let Err(e) = tracer.update(scene, &commit.writes) {
         // A lost device: the CPU tracer reads `scene` itself and needs no update.

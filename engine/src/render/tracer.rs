@@ -42,6 +42,9 @@ pub enum RenderError {
     DeviceLost(String),
     #[error("the scene does not fit the GPU: {0}")]
     TooLarge(String),
+    /// The scene asks for something this tracer cannot render (yet); nothing was drawn.
+    #[error("this tracer cannot render the scene: {0}")]
+    Unsupported(String),
     #[error("image size {width}×{height} is not allowed: {reason}")]
     BadSize {
         width: u32,

@@ -56,6 +56,8 @@ pub struct RenderScene {
     /// Render-space bounds of everything.
     pub bounds: Aabb,
     pub stats: SceneStats,
+    /// The physical sky's sky-view table (empty for constant and gradient skies).
+    pub sky: super::SkyTable,
 }
 
 impl RenderScene {
@@ -75,6 +77,7 @@ impl RenderScene {
             origin: Vec3::ZERO,
             bounds: Aabb::EMPTY,
             stats: SceneStats::default(),
+            sky: super::SkyTable::default(),
         }
     }
 

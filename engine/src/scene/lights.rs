@@ -13,7 +13,7 @@ use super::light_tree::{LightTree, build_tree};
 use crate::assets::{SkyDesc, SunDesc};
 use crate::layout::{
     GpuFrameUniforms, GpuInstance, GpuLight, GpuMaterial, GpuTriangle, GpuVertex, INVALID,
-    MATERIAL_FLAG_TWO_SIDED_EMISSION, SKY_CONSTANT, SKY_GRADIENT,
+    MATERIAL_FLAG_TWO_SIDED_EMISSION, SKY_CONSTANT, SKY_GRADIENT, SKY_PHYSICAL,
 };
 
 /// Emissive triangles, the alias table that picks them by power and the light tree that picks
@@ -160,8 +160,19 @@ fn build_alias(lights: &mut [GpuLight]) -> f32 {
     total as f32
 }
 
-/// Writes the sun and sky into the frame uniforms.
+/// Writes the sun and sky into the frame uniforms. A physical sky brings its own sun (a disc
+/// of the sun's angular radius whose irradiance is the solar irradiance through the air along
+/// its direction) and ignores `sun`; the sky-view table it reads lives in the scene
+/// (`RenderScene::sky`).
 pub fn fill_sun_and_sky(u: &mut GpuFrameUniforms, sun: Option<&SunDesc>, sky: &SkyDesc) {
+    let physical_sun = match sky {
+        SkyDesc::Physical(p) => Some(physical_sun(p)),
+        _ => None,
+    };
+    let sun = match &physical_sun {
+        Some(s) => s.as_ref(),
+        None => sun,
+    };
     match sun {
         Some(sun) if Vec3::from(sun.direction).length_squared() > 0.0 => {
             let direction = Vec3::from(sun.direction).normalize();
@@ -205,7 +216,35 @@ pub fn fill_sun_and_sky(u: &mut GpuFrameUniforms, sun: Option<&SunDesc>, sky: &S
             u.sky_horizon = Vec3::from(horizon).extend(0.0).to_array();
             u.sky_ground = Vec3::from(ground).extend(0.0).to_array();
         }
+        SkyDesc::Physical(p) => {
+            u.sky_kind = SKY_PHYSICAL;
+            let azimuth = p.sun_horizontal().map_or(Vec3::NEG_Z, |h| {
+                crate::sky::Horizontal {
+                    elevation_deg: 0.0,
+                    azimuth_deg: h.azimuth_deg,
+                }
+                .direction()
+            });
+            u.sky_zenith = [0.0; 4];
+            u.sky_horizon = azimuth.extend(0.0).to_array();
+            u.sky_ground = [0.0; 4];
+        }
     }
+}
+
+/// The sun of a physical sky as a `SunDesc`; none when the sky fails its checks (the level
+/// loader refuses those first).
+fn physical_sun(sky: &crate::sky::PhysicalSky) -> Option<SunDesc> {
+    let horizontal = sky.sun_horizontal().ok()?;
+    let irradiance = sky.sun_irradiance().ok()? * sky.sun_scale;
+    if irradiance.max_element() <= 0.0 {
+        return None;
+    }
+    Some(SunDesc {
+        direction: horizontal.direction().to_array(),
+        irradiance: irradiance.to_array(),
+        angular_radius_deg: crate::sky::SUN_ANGULAR_RADIUS_DEG,
+    })
 }
 
 #[cfg(test)]

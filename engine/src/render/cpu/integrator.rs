@@ -23,9 +23,10 @@ use super::sampling::{
 use super::surface::{offset_origin, resolve, shade};
 use crate::layout::{
     GpuFrameUniforms, GpuLine, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS,
-    METHOD_NEE, SKY_GRADIENT,
+    METHOD_NEE, SKY_GRADIENT, SKY_PHYSICAL,
 };
 use crate::scene::RenderScene;
+use crate::sky::sky_view_radiance;
 use crate::trace::{Ray, TraceScene};
 
 /// Rays traced, by kind.
@@ -47,8 +48,15 @@ impl std::ops::AddAssign for RayCounts {
     }
 }
 
-/// Radiance of the sky in direction `d` (unit).
-pub fn sky_radiance(u: &GpuFrameUniforms, d: Vec3) -> Vec3 {
+/// Radiance of the sky in direction `d` (unit); a physical sky reads the scene's sky-view
+/// table (`sky_table`, empty: black).
+pub fn sky_radiance(u: &GpuFrameUniforms, sky_table: &[[f32; 4]], d: Vec3) -> Vec3 {
+    if u.sky_kind == SKY_PHYSICAL {
+        if sky_table.is_empty() {
+            return Vec3::ZERO;
+        }
+        return sky_view_radiance(sky_table, Vec3::from_slice(&u.sky_horizon[..3]), d);
+    }
     let zenith = Vec3::from_slice(&u.sky_zenith[..3]);
     if u.sky_kind != SKY_GRADIENT {
         return zenith;
@@ -133,7 +141,7 @@ pub fn radiance(
             travelled += t_end;
         }
         let Some(hit) = hit else {
-            let mut escaped = sky_radiance(u, ray.direction);
+            let mut escaped = sky_radiance(u, &scene.sky.texels, ray.direction);
             if sun_solid_angle > 0.0 && ray.direction.dot(sun_direction) >= u.sun_cos_radius {
                 let w = bsdf_hit_weight(u.method, last_delta, last_pdf, 1.0 / sun_solid_angle);
                 escaped += sun_radiance * w;

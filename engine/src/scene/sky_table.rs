@@ -1,0 +1,45 @@
+//! [`SkyTable`]: the physical sky's sky-view texels as the render side holds them — the CPU
+//! tracer reads them in place, the GPU tracer would upload the same vector (its WGSL twin is
+//! not written yet: it answers `RenderError::Unsupported` and the render thread hands the run
+//! to the CPU tracer, `render/device_loss.rs`).
+//!
+//! Any thread (plain data). Rebuilt only when the sky's description changes ([`SkyTable::
+//! update`] compares it), on the thread that owns the `RenderScene` copy (the render thread
+//! when it applies a commit; the builder in `accel/flatten.rs`). Must not: compute the sky
+//! (`crate::sky` does) or know about commits.
+
+use std::sync::Arc;
+
+use crate::assets::SkyDesc;
+use crate::sky::{PhysicalSky, SkyTables};
+
+/// The sky-view table of the current physical sky, or nothing for the other skies.
+#[derive(Clone, Debug, Default)]
+pub struct SkyTable {
+    source: Option<PhysicalSky>,
+    /// `sky::VIEW_WIDTH × sky::VIEW_HEIGHT` texels (layout in `sky::sky_view`); empty when the
+    /// sky is not physical.
+    pub texels: Arc<Vec<[f32; 4]>>,
+}
+
+impl SkyTable {
+    /// Rebuilds the texels when `sky` is a physical sky other than the one held (about
+    /// 0.3 s); clears them for the other skies. A sky that fails its checks (the level
+    /// loader refuses those first) leaves an empty table: the tracers then see a black sky.
+    pub fn update(&mut self, sky: &SkyDesc) {
+        match sky {
+            SkyDesc::Physical(p) => {
+                if self.source.as_ref() == Some(p) {
+                    return;
+                }
+                self.source = Some(*p);
+                self.texels = Arc::new(SkyTables::build(p).map(|t| t.texels).unwrap_or_default());
+            }
+            _ => {
+                if self.source.take().is_some() {
+                    self.texels = Arc::default();
+                }
+            }
+        }
+    }
+}

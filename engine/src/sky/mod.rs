@@ -1,0 +1,37 @@
+//! The sky above a level: where the sun and moon stand at a time and place (the ephemeris),
+//! and a physically based atmosphere precomputed into tables the tracers read (Hillaire 2020,
+//! "A Scalable and Production Ready Sky and Atmosphere Rendering Technique").
+//!
+//! Owns: [`UtcInstant`] and [`Observer`] (checked inputs), [`sun_position`] (NOAA / Meeus
+//! ch. 25), [`moon_position`] (Schlyter's series, topocentric, with the phase), and the mapping
+//! from the local horizon to engine space (north = −Z, east = +X, up = +Y, azimuth from north
+//! towards east; [`Horizontal::direction`]), and the physical sky: the Earth preset's media
+//! (`atmosphere`), the transmittance and multiple-scattering tables, the sky-view table and
+//! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into.
+//! Runs on any thread: plain data and pure functions.
+//! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
+//! the layers and uses no engine module (only glam, serde and thiserror).
+
+mod atmosphere;
+mod calendar;
+mod error;
+mod horizon;
+mod lunar;
+mod multiscatter;
+mod physical;
+mod sky_view;
+mod solar;
+mod transmittance;
+
+pub use calendar::UtcInstant;
+pub use error::SkyError;
+pub use horizon::{Horizontal, Observer};
+pub use lunar::{MoonState, moon_position};
+pub use physical::{HAZE_TURBIDITY_3, PhysicalSky, SkyTables, SkyTime, sky_view_radiance};
+pub use sky_view::{VIEW_HEIGHT, VIEW_WIDTH};
+pub use solar::{SunState, sun_position};
+
+/// The sun's angular radius in degrees (mean, as seen from the Earth).
+pub const SUN_ANGULAR_RADIUS_DEG: f32 = 0.2665;
+/// The moon's angular radius in degrees (mean).
+pub const MOON_ANGULAR_RADIUS_DEG: f32 = 0.259;

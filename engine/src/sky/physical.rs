@@ -1,0 +1,238 @@
+//! [`PhysicalSky`]: what a level writes to get the physically based sky (the sun's place, by
+//! angles or by a time and place, and the atmosphere's knobs), its checks, the sun it gives
+//! (direction and direct normal irradiance through the air) and [`SkyTables`], the
+//! precomputed sky-view texels both tracers read.
+//!
+//! Any thread. Building the tables costs about 0.3 s on one core: done when the sky
+//! changes, never per frame. Directions are in engine space (north = −Z, east = +X, up = +Y);
+//! radiance and irradiance in linear RGB, W·m⁻²·sr⁻¹·nm⁻¹ and W·m⁻²·nm⁻¹ (the spectral units of
+//! Mitsuba's sunsky, which `docs/ACCURACY.md` compares against). Must not: know levels, scenes
+//! or tracers (the level loader names the file beside a [`SkyError`]).
+
+use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::atmosphere::{Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, VIEW_ALTITUDE_KM};
+use super::calendar::UtcInstant;
+use super::error::SkyError;
+use super::horizon::{Horizontal, Observer};
+use super::multiscatter::MultiScatteringLut;
+use super::sky_view::{build_view, lookup_view};
+use super::solar::sun_position;
+use super::transmittance::{TransmittanceLut, transmittance_exact};
+
+/// The sun placed by a time and place instead of angles (the ephemeris, `sky::sun_position`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SkyTime {
+    /// Degrees, north positive, −90..=90.
+    pub latitude_deg: f64,
+    /// Degrees, east positive, −180..=180.
+    pub longitude_deg: f64,
+    pub year: i32,
+    pub month: u32,
+    pub day: u32,
+    /// Hours since midnight UTC, 0 ≤ h < 24.
+    pub utc_hours: f64,
+}
+
+/// A physically based sky (Hillaire 2020, Earth preset) with its sun.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhysicalSky {
+    /// Sun elevation above the horizon, degrees, −90..=90 (ignored when `time` is set).
+    #[serde(default = "default_elevation")]
+    pub sun_elevation_deg: f32,
+    /// Sun azimuth from north (−Z) towards east (+X), degrees (ignored when `time` is set).
+    #[serde(default)]
+    pub sun_azimuth_deg: f32,
+    /// Place the sun by date, time and place instead.
+    #[serde(default)]
+    pub time: Option<SkyTime>,
+    /// Aerosol density relative to Hillaire's clear preset (1), 0..=100. Mitsuba's
+    /// Hosek–Wilkie turbidity 3 corresponds to [`HAZE_TURBIDITY_3`].
+    #[serde(default = "one")]
+    pub haze: f32,
+    /// Ozone density relative to the preset, 0..=10.
+    #[serde(default = "one")]
+    pub ozone: f32,
+    /// Lambertian ground reflectance, linear RGB, each 0..=1.
+    #[serde(default = "default_albedo")]
+    pub ground_albedo: [f32; 3],
+    /// Multiplier of the sun disc's radiance, 0..=1000 (0: the sky alone, as Mitsuba's
+    /// `sun_scale`; the sky itself is not changed).
+    #[serde(default = "one")]
+    pub sun_scale: f32,
+}
+
+/// The haze whose diffuse-to-global horizontal ratio at 60° sun elevation matches Mitsuba's
+/// Hosek–Wilkie sky at turbidity 3, albedo 0.3 (0.1894; calibrated once by bisection,
+/// checked by `engine/tests/engine/sky_reference.rs`).
+pub const HAZE_TURBIDITY_3: f32 = 22.05;
+
+fn default_elevation() -> f32 {
+    45.0
+}
+
+fn one() -> f32 {
+    1.0
+}
+
+fn default_albedo() -> [f32; 3] {
+    [0.3; 3]
+}
+
+fn check(
+    field: &'static str,
+    value: f32,
+    lo: f32,
+    hi: f32,
+    range: &'static str,
+) -> Result<(), SkyError> {
+    if value.is_finite() && (lo..=hi).contains(&value) {
+        Ok(())
+    } else {
+        Err(SkyError::Parameter {
+            field,
+            value: value as f64,
+            range,
+        })
+    }
+}
+
+impl PhysicalSky {
+    /// Checks every field; the error names the field (`haze`, `sun_elevation_deg`, …).
+    pub fn validate(&self) -> Result<(), SkyError> {
+        check(
+            "sun_elevation_deg",
+            self.sun_elevation_deg,
+            -90.0,
+            90.0,
+            "-90..=90",
+        )?;
+        check(
+            "sun_azimuth_deg",
+            self.sun_azimuth_deg,
+            -360.0,
+            360.0,
+            "-360..=360",
+        )?;
+        check("haze", self.haze, 0.0, 100.0, "0..=100")?;
+        check("ozone", self.ozone, 0.0, 10.0, "0..=10")?;
+        check("sun_scale", self.sun_scale, 0.0, 1000.0, "0..=1000")?;
+        for a in self.ground_albedo {
+            check("ground_albedo", a, 0.0, 1.0, "0..=1")?;
+        }
+        if let Some(time) = &self.time {
+            time.instant()?;
+            Observer::new(time.latitude_deg, time.longitude_deg)?;
+        }
+        Ok(())
+    }
+
+    /// Where the sun stands (elevation, azimuth from north towards east).
+    pub fn sun_horizontal(&self) -> Result<Horizontal, SkyError> {
+        self.validate()?;
+        Ok(match &self.time {
+            Some(time) => {
+                let observer = Observer::new(time.latitude_deg, time.longitude_deg)?;
+                sun_position(&observer, &time.instant()?).horizontal
+            }
+            None => Horizontal {
+                elevation_deg: self.sun_elevation_deg as f64,
+                azimuth_deg: self.sun_azimuth_deg as f64,
+            },
+        })
+    }
+
+    fn atmosphere(&self) -> Atmosphere {
+        Atmosphere {
+            haze: self.haze,
+            ozone: self.ozone,
+            ground_albedo: Vec3::from(self.ground_albedo),
+        }
+    }
+
+    /// Direct normal irradiance of the sun at the viewer (solar irradiance × transmittance
+    /// along the sun's direction; zero below the horizon), W·m⁻²·nm⁻¹ per channel.
+    pub fn sun_irradiance(&self) -> Result<Vec3, SkyError> {
+        let h = self.sun_horizontal()?;
+        let r = GROUND_RADIUS_KM + VIEW_ALTITUDE_KM;
+        let mu = (h.elevation_deg.to_radians().sin()) as f32;
+        Ok(SOLAR_IRRADIANCE * transmittance_exact(&self.atmosphere(), r, mu))
+    }
+}
+
+impl SkyTime {
+    fn instant(&self) -> Result<UtcInstant, SkyError> {
+        let bad = SkyError::Time {
+            hour: 24,
+            minute: 0,
+            second: self.utc_hours * 3600.0,
+        };
+        if !self.utc_hours.is_finite() || !(0.0..24.0).contains(&self.utc_hours) {
+            return Err(bad);
+        }
+        let seconds = self.utc_hours * 3600.0;
+        let (hour, minute) = (
+            (seconds / 3600.0) as u32,
+            ((seconds % 3600.0) / 60.0) as u32,
+        );
+        UtcInstant::new(
+            self.year,
+            self.month,
+            self.day,
+            hour,
+            minute,
+            seconds % 60.0,
+        )
+    }
+}
+
+/// The precomputed sky for one [`PhysicalSky`]: the sky-view texels (layout in `sky_view`)
+/// and the frame they are seen in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkyTables {
+    /// `VIEW_WIDTH × VIEW_HEIGHT` RGB + padding texels, radiance.
+    pub texels: Vec<[f32; 4]>,
+    /// Unit vector towards the sun, engine space.
+    pub sun_direction: Vec3,
+    /// Unit horizontal vector towards the sun's azimuth (engine space; +X·… when the sun is at
+    /// the zenith the azimuth still gives it).
+    pub sun_azimuth: Vec3,
+}
+
+impl SkyTables {
+    /// Precomputes the transmittance, multiple-scattering and sky-view tables.
+    pub fn build(sky: &PhysicalSky) -> Result<Self, SkyError> {
+        let h = sky.sun_horizontal()?;
+        let atmosphere = sky.atmosphere();
+        let transmittance = TransmittanceLut::build(&atmosphere);
+        let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
+        let elevation = (h.elevation_deg as f32).to_radians();
+        let texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
+        let flat = Horizontal {
+            elevation_deg: 0.0,
+            azimuth_deg: h.azimuth_deg,
+        };
+        Ok(Self {
+            texels,
+            sun_direction: h.direction(),
+            sun_azimuth: flat.direction(),
+        })
+    }
+
+    /// Sky radiance towards unit engine-space direction `d` (sun disc excluded).
+    pub fn radiance(&self, d: Vec3) -> Vec3 {
+        sky_view_radiance(&self.texels, self.sun_azimuth, d)
+    }
+}
+
+/// The lookup both tracers do: elevation from `d.y`, azimuth from the sun's horizontal
+/// direction `sun_azimuth` (unit, engine space).
+pub fn sky_view_radiance(texels: &[[f32; 4]], sun_azimuth: Vec3, d: Vec3) -> Vec3 {
+    let elevation = d.y.clamp(-1.0, 1.0).asin();
+    let side = Vec3::Y.cross(sun_azimuth);
+    let azimuth = d.dot(side).atan2(d.dot(sun_azimuth));
+    lookup_view(texels, elevation, azimuth)
+}

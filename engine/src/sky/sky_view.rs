@@ -1,0 +1,118 @@
+//! Hillaire 2020 §5.3: the sky-view table — the sky's radiance seen from the ground for one sun
+//! elevation, over the view's elevation and its azimuth from the sun — and its lookup, the one
+//! both tracers evaluate (`render/cpu/integrator.rs` and its WGSL twin read the same texels).
+//!
+//! Any thread; built on the CPU once per sky (`SkyTables::build`). Layout: [`VIEW_WIDTH`] ×
+//! [`VIEW_HEIGHT`] nodes, row-major, RGB + padding per texel. Column x: azimuth from the sun
+//! φ = π·x/(W−1) (the sky is symmetric about the sun's vertical plane). Row y: c = 2y/(H−1) − 1,
+//! elevation = sign(c)·c²·90° (dense near the horizon; row (H−1)/2 is the horizon). Values:
+//! linear RGB radiance, W·m⁻²·sr⁻¹·nm⁻¹ (solar irradiance included). Below the horizon: the
+//! air in front of the ground plus the ground (albedo / π × direct sun). Must not: know the
+//! engine's axes (the caller gives elevation and azimuth from the sun).
+
+use glam::Vec3;
+
+use super::atmosphere::{
+    Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, mie_phase,
+    ray_sphere, rayleigh_phase,
+};
+use super::multiscatter::MultiScatteringLut;
+use super::transmittance::TransmittanceLut;
+
+/// Columns of the sky-view table (azimuth from the sun, 0..π).
+pub const VIEW_WIDTH: usize = 128;
+/// Rows of the sky-view table (elevation, nadir to zenith; odd so the horizon is a row).
+pub const VIEW_HEIGHT: usize = 129;
+const STEPS: usize = 64;
+
+/// Builds the sky-view texels for a sun at `sun_elevation` radians.
+pub fn build_view(
+    atmosphere: &Atmosphere,
+    transmittance: &TransmittanceLut,
+    multiple: &MultiScatteringLut,
+    sun_elevation: f32,
+) -> Vec<[f32; 4]> {
+    let sun = Vec3::new(sun_elevation.cos(), 0.0, sun_elevation.sin());
+    let mut texels = Vec::with_capacity(VIEW_WIDTH * VIEW_HEIGHT);
+    for y in 0..VIEW_HEIGHT {
+        let c = 2.0 * y as f32 / (VIEW_HEIGHT - 1) as f32 - 1.0;
+        let elevation = c.signum() * c * c * std::f32::consts::FRAC_PI_2;
+        for x in 0..VIEW_WIDTH {
+            let phi = std::f32::consts::PI * x as f32 / (VIEW_WIDTH - 1) as f32;
+            let dir = Vec3::new(
+                elevation.cos() * phi.cos(),
+                elevation.cos() * phi.sin(),
+                elevation.sin(),
+            );
+            let l = march(atmosphere, transmittance, multiple, dir, sun) * SOLAR_IRRADIANCE;
+            texels.push([l.x, l.y, l.z, 0.0]);
+        }
+    }
+    texels
+}
+
+/// Radiance per unit solar irradiance arriving at the viewer from direction `dir` (z up).
+fn march(
+    atmosphere: &Atmosphere,
+    transmittance: &TransmittanceLut,
+    multiple: &MultiScatteringLut,
+    dir: Vec3,
+    sun: Vec3,
+) -> Vec3 {
+    let r0 = GROUND_RADIUS_KM + VIEW_ALTITUDE_KM;
+    let origin = Vec3::new(0.0, 0.0, r0);
+    let ground = ray_sphere(r0, dir.z, GROUND_RADIUS_KM, true);
+    let Some(length) = ground.or(ray_sphere(r0, dir.z, TOP_RADIUS_KM, false)) else {
+        return Vec3::ZERO;
+    };
+    let cos_theta = dir.dot(sun);
+    let (phase_r, phase_m) = (rayleigh_phase(cos_theta), mie_phase(cos_theta));
+    let (mut radiance, mut throughput) = (Vec3::ZERO, Vec3::ONE);
+    // Quadratic spacing: short steps near the viewer where the air is dense.
+    let mut t_prev = 0.0;
+    for k in 0..STEPS {
+        let t_next = length * ((k + 1) as f32 / STEPS as f32).powi(2);
+        let dt = t_next - t_prev;
+        let p = origin + dir * (0.5 * (t_prev + t_next));
+        t_prev = t_next;
+        let rp = p.length();
+        let mu_s = p.dot(sun) / rp;
+        let m = atmosphere.medium(rp - GROUND_RADIUS_KM);
+        let sun_t = transmittance.lookup(rp, mu_s);
+        let source = sun_t * (m.rayleigh * phase_r + m.mie * phase_m)
+            + multiple.lookup(rp, mu_s) * (m.rayleigh + m.mie);
+        let step = (-m.extinction * dt).exp();
+        radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
+        throughput *= step;
+    }
+    if let Some(t) = ground {
+        let p = origin + dir * t;
+        let normal = p.normalize();
+        let sun_t = transmittance.lookup(p.length(), normal.dot(sun));
+        radiance += throughput * sun_t * normal.dot(sun).max(0.0) * atmosphere.ground_albedo
+            / std::f32::consts::PI;
+    }
+    radiance
+}
+
+/// The table's radiance for a view at `elevation` radians and `azimuth` radians from the sun's
+/// azimuth (any sign, any turn). Bilinear between nodes; the WGSL twin does the same arithmetic.
+pub fn lookup_view(texels: &[[f32; 4]], elevation: f32, azimuth: f32) -> Vec3 {
+    let a = azimuth.abs() % std::f32::consts::TAU;
+    let phi = if a > std::f32::consts::PI {
+        std::f32::consts::TAU - a
+    } else {
+        a
+    };
+    let u = phi / std::f32::consts::PI;
+    let e = (elevation / std::f32::consts::FRAC_PI_2).clamp(-1.0, 1.0);
+    let v = 0.5 + 0.5 * e.signum() * e.abs().sqrt();
+    let fx = u.clamp(0.0, 1.0) * (VIEW_WIDTH - 1) as f32;
+    let fy = v.clamp(0.0, 1.0) * (VIEW_HEIGHT - 1) as f32;
+    let (x0, y0) = (fx.floor() as usize, fy.floor() as usize);
+    let (x1, y1) = ((x0 + 1).min(VIEW_WIDTH - 1), (y0 + 1).min(VIEW_HEIGHT - 1));
+    let (tx, ty) = (fx - x0 as f32, fy - y0 as f32);
+    let at = |x: usize, y: usize| Vec3::from_slice(&texels[y * VIEW_WIDTH + x][..3]);
+    let row = |y: usize| at(x0, y).lerp(at(x1, y), tx);
+    row(y0).lerp(row(y1), ty)
+}
