@@ -10,6 +10,11 @@ use half::f16;
 use crate::layout::{GpuTexture, TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR};
 
 fn unpack(t: [u32; 2]) -> Vec4 {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("f16c") {
+        // SAFETY: the CPU has F16C (checked just above; `std` caches the detection).
+        return unsafe { unpack_f16c(t) };
+    }
     let h = |bits: u32| f16::from_bits(bits as u16).to_f32();
     Vec4::new(
         h(t[0] & 0xffff),
@@ -17,6 +22,19 @@ fn unpack(t: [u32; 2]) -> Vec4 {
         h(t[1] & 0xffff),
         h(t[1] >> 16),
     )
+}
+
+/// [`unpack`] with one F16C conversion of all four halves (exact, as the scalar one: every f16
+/// is an f32).
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "f16c")]
+fn unpack_f16c(t: [u32; 2]) -> Vec4 {
+    use std::arch::x86_64::{_mm_cvtph_ps, _mm_cvtsi64_si128, _mm_storeu_ps};
+    let bits = (u64::from(t[1]) << 32 | u64::from(t[0])) as i64;
+    let mut out = [0.0f32; 4];
+    // SAFETY: `out` holds four f32.
+    unsafe { _mm_storeu_ps(out.as_mut_ptr(), _mm_cvtph_ps(_mm_cvtsi64_si128(bits))) };
+    Vec4::from_array(out)
 }
 
 fn wrap(i: i32, size: i32, mode: u32) -> i32 {
@@ -31,6 +49,30 @@ fn wrap(i: i32, size: i32, mode: u32) -> i32 {
             if m >= size { 2 * size - 1 - m } else { m }
         }
         _ => i.rem_euclid(size),
+    }
+}
+
+/// Starts loading the texels [`sample`] will read for texture `index` at `uv` (both rows of the
+/// bilinear footprint at its left column, wrapped as [`sample`] wraps them), so that the
+/// lookups of one surface's textures miss the cache together rather than one after another.
+/// Changes nothing; `INVALID` or a broken index does nothing.
+pub fn prefetch(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2) {
+    let Some(t) = textures.get(index as usize) else {
+        return;
+    };
+    if t.width == 0 || t.height == 0 || !uv.is_finite() {
+        return;
+    }
+    let (w, h) = (t.width as i32, t.height as i32);
+    let x = ((uv.x * w as f32).clamp(-1.0e6, 1.0e6) - 0.5).floor() as i32;
+    let y = ((uv.y * h as f32).clamp(-1.0e6, 1.0e6) - 0.5).floor() as i32;
+    let (wrap_u, wrap_v) = (t.flags & 3, (t.flags >> 2) & 3);
+    let (x, y0, y1) = (wrap(x, w, wrap_u), wrap(y, h, wrap_v), wrap(y + 1, h, wrap_v));
+    let base = t.texel_offset as usize;
+    for row in [y0, y1] {
+        if let Some(p) = texels.get(base + (row * w + x) as usize) {
+            super::prefetch::line(p);
+        }
     }
 }
 
