@@ -152,6 +152,17 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
         u.roulette_scale,
         threads
     );
+    let mib = |bytes: usize| bytes as f64 / (1u64 << 20) as f64;
+    println!(
+        "scene: {} instances, {} triangles, {} emissive in the light table, {:.1} MiB of nodes, \
+         {:.1} MiB of triangle blocks, {:.1} MiB of texels",
+        scene.instances.len(),
+        scene.triangles.len(),
+        scene.lights.lights.len(),
+        mib(scene.nodes.len() * size_of::<candela::layout::GpuBvh8Node>()),
+        mib(scene.blocks.len() * size_of::<candela::layout::GpuTri4>()),
+        mib(scene.texels.len() * 8)
+    );
     println!(
         "| round | renders | rays | camera | shadow | bounce | ms per render (median) | Mrays/s (wall) | Mrays per CPU second | film hash |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
     );

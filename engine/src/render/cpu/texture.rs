@@ -1,6 +1,7 @@
 //! Texture lookups of the CPU tracer (twin: `shaders/shared/texture.wgsl`).
 //!
-//! Owns: wrapping, nearest and bilinear filtering over the packed f16 texel buffer.
+//! Owns: wrapping, nearest and bilinear filtering over the packed f16 texel buffer (F16C when
+//! the CPU has it, detected at run time), and the cache hints for a lookup to come ([`prefetch`]).
 //! Texture coordinates follow glTF: (0, 0) is the top-left of the image, v grows downward.
 //! Must not: decode image files.
 
@@ -9,6 +10,7 @@ use half::f16;
 
 use crate::layout::{GpuTexture, TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR};
 
+#[inline]
 fn unpack(t: [u32; 2]) -> Vec4 {
     #[cfg(target_arch = "x86_64")]
     if std::arch::is_x86_feature_detected!("f16c") {
@@ -116,7 +118,7 @@ pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::layout::WRAP_REPEAT;
+    use crate::layout::{INVALID, WRAP_REPEAT};
     use crate::scene::materials::pack_texel;
 
     #[test]
@@ -145,5 +147,45 @@ mod tests {
         assert_eq!(s(&t, 0.49), 0.0);
         assert_eq!(s(&t, 0.51), 1.0);
         assert_eq!(sample(&[], &texels, 0, Vec2::ZERO), Vec4::ONE);
+    }
+
+    /// The F16C unpack returns the scalar conversion's bits for every half in every lane
+    /// (normals, subnormals, infinities and NaNs included).
+    #[test]
+    fn f16c_unpack_matches_scalar() {
+        let scalar = |t: [u32; 2]| {
+            let h = |bits: u32| f16::from_bits(bits as u16).to_f32().to_bits();
+            [t[0] & 0xffff, t[0] >> 16, t[1] & 0xffff, t[1] >> 16].map(h)
+        };
+        for bits in 0..=u16::MAX as u32 {
+            // Each lane sees `bits`, next to neighbours that differ.
+            let t = [bits | (bits ^ 0x8001) << 16, (bits ^ 0x7c00) | bits << 16];
+            let got = unpack(t).to_array().map(f32::to_bits);
+            let want = scalar(t);
+            for (g, w) in got.iter().zip(want) {
+                // NaN payloads may be quietened differently; a NaN must stay a NaN.
+                if f32::from_bits(w).is_nan() {
+                    assert!(f32::from_bits(*g).is_nan(), "{t:x?}");
+                } else {
+                    assert_eq!(*g, w, "{t:x?}");
+                }
+            }
+        }
+    }
+
+    /// Prefetching is harmless on any coordinate and texture, broken ones included.
+    #[test]
+    fn prefetch_any_input() {
+        let texels = vec![[0u32; 2]; 4];
+        let textures = [
+            GpuTexture { texel_offset: 0, width: 2, height: 2, flags: WRAP_REPEAT },
+            GpuTexture { texel_offset: 3, width: 2, height: 2, flags: WRAP_MIRROR << 2 },
+            GpuTexture { texel_offset: 0, width: 0, height: 2, flags: 0 },
+        ];
+        for index in [0, 1, 2, 7, INVALID] {
+            for uv in [-1e30, -3.7, -0.5, 0.0, 0.49, 1.0, 2.5, 1e30, f32::NAN, f32::INFINITY] {
+                prefetch(&textures, &texels, index, Vec2::new(uv, -uv));
+            }
+        }
     }
 }
