@@ -123,10 +123,7 @@ pub fn radiance(
     let pixel_angle =
         LINE_FOOTPRINT_PIXELS * 2.0 * Vec3::from(u.camera_up).length() / u.height.max(1) as f32;
     loop {
-        // Cache hints only: the light the next event estimation will pick loads during the trace.
-        let light_pick = super::prefetch::alias_pick(scene, u, &rng);
         let mut hit = tracer.closest(&ray);
-        super::prefetch::alias_second(scene, u, light_pick);
         if camera_chain {
             hit = past_lines(scene, tracer, &mut ray, hit);
             let t_end = hit.map_or(f32::INFINITY, |h| h.t);

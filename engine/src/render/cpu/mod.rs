@@ -7,7 +7,6 @@ pub mod integrator;
 pub mod light_tree;
 pub mod lines;
 pub mod microfacet;
-mod prefetch;
 pub mod rng;
 pub mod sampling;
 pub mod surface;

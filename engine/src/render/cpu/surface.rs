@@ -27,17 +27,6 @@ pub struct Shading {
 pub fn shade(scene: &RenderScene, surface: &Surface) -> Shading {
     let m: &GpuMaterial = &scene.materials[surface.material as usize];
     let tex = |index: u32| texture::sample(&scene.textures, &scene.texels, index, surface.uv);
-    // Every texture of the surface starts loading now: their cache misses overlap.
-    for index in [
-        m.base_color_texture,
-        m.metal_rough_texture,
-        m.normal_texture,
-        if surface.emits { m.emission_texture } else { INVALID },
-    ] {
-        if index != INVALID {
-            texture::prefetch(&scene.textures, &scene.texels, index, surface.uv);
-        }
-    }
     let base = Vec4::from(m.base_color) * tex(m.base_color_texture);
     let emission = if surface.emits {
         Vec3::from_slice(&m.emission[..3]) * tex(m.emission_texture).truncate()
