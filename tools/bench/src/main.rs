@@ -6,6 +6,9 @@
 //! * `bench rays <level> [--asset-root DIR]` — rays per second of the CPU traversal (1 thread and
 //!   all threads) and of the GPU traversal (lavapipe without a GPU) for camera, shadow and
 //!   diffuse-bounce rays made from the level's camera and lights.
+//! * `bench chamber-rays [--chamber N] [--threads T]` — rays per second of the CPU path tracer
+//!   on a Reflect chamber's view at its file's camera, as the game renders it, with a film hash
+//!   (equal for two builds that trace the same paths).
 //! * `bench error` — time for each tracer to reach a fixed relative error against the Cornell
 //!   reference, beside Mitsuba 3's time to the same error from its own reference statistics.
 //! * `bench chart [--quick] [--scenes …] [--panels …]` — error against time for every
@@ -33,6 +36,7 @@ mod balance_plot;
 mod balance_pool;
 mod balance_record;
 mod build;
+mod chamber_rays;
 mod chart;
 mod chart_methods;
 mod chart_plan;
@@ -78,6 +82,8 @@ enum Command {
     Build(build::BuildArgs),
     /// Rays per second per tracer and ray kind on a level.
     Rays(rays::RaysArgs),
+    /// Rays per second of the CPU path tracer on a Reflect chamber's view, as the game renders it.
+    ChamberRays(chamber_rays::ChamberRaysArgs),
     /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
     Error(error::ErrorArgs),
     /// Error against time for every estimator, bounce cap and BVH build on the reference and
@@ -103,6 +109,7 @@ fn main() -> anyhow::Result<()> {
     match Args::parse().command {
         Command::Build(a) => build::run(&a),
         Command::Rays(a) => rays::run(&a),
+        Command::ChamberRays(a) => chamber_rays::run(&a),
         Command::Error(a) => error::run(&a),
         Command::Chart(a) => {
             let plan = a.plan()?;
