@@ -78,6 +78,9 @@ pub struct GameplayEntry {
     /// conditions): weights on a scale, offerings made, torches lit.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub counters: Vec<CounterEntry>,
+    /// Walls and pillars of pre-fractured pieces (`level_breakable.rs`).
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub breakables: Vec<super::BreakableEntry>,
 }
 
 /// A counter of the rules: `(name: "weights", start: 0)`.
@@ -382,6 +385,8 @@ pub enum ActionEntry {
     },
     /// Set a counter to `value`.
     SetCounter { counter: String, value: i32 },
+    /// Break a breakable (by name) now: its pieces fall free.
+    Break(String),
     /// The player wins the level.
     Win,
     /// The player loses the level.

@@ -174,7 +174,11 @@ pub fn scene_from_level(
                 .flat_map(|clip| &clip.tracks)
                 .any(|track| track.target == name)
         });
-        scene_instance.dynamic |= moving_body || clip_target;
+        // A breakable's piece stands still until it falls.
+        let piece = entry.name.as_deref().is_some_and(|name| {
+            (level.gameplay.breakables.iter()).any(|b| b.pieces.iter().any(|p| p == name))
+        });
+        scene_instance.dynamic |= moving_body || clip_target || piece;
     }
     Ok(SceneDesc {
         source: level_path.to_path_buf(),

@@ -52,6 +52,8 @@ mod level_body;
 mod level_character;
 pub use level_body::{BodyEntry, ShapeEntry};
 pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
+mod level_breakable;
+pub use level_breakable::BreakableEntry;
 mod level_gameplay;
 pub use level_gameplay::{
     ActionEntry, AutoplayEntry, BeamEntry, ConditionEntry, CounterEntry, Detect, EmitterEntry,

@@ -36,7 +36,7 @@ const LEVEL_FIELDS: [&str; 14] = [
 ];
 
 /// The gameplay section's fields in the type's order.
-const GAMEPLAY_FIELDS: [&str; 12] = [
+const GAMEPLAY_FIELDS: [&str; 13] = [
     "sounds",
     "music",
     "emitters",
@@ -49,6 +49,7 @@ const GAMEPLAY_FIELDS: [&str; 12] = [
     "events",
     "usables",
     "counters",
+    "breakables",
 ];
 
 /// A field's value, ready to write.
@@ -108,7 +109,8 @@ fn gameplay_field(g: &GameplayEntry, name: &str) -> Res<(Value, bool)> {
         "rules" => list(&g.rules),
         "events" => list(&g.events),
         "usables" => list(&g.usables),
-        _ => list(&g.counters),
+        "counters" => list(&g.counters),
+        _ => list(&g.breakables),
     }
 }
 

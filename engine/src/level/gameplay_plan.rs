@@ -14,8 +14,8 @@ use glam::Vec3;
 
 use crate::assets::{ActionEntry, AssetRoot, AuthoredClipSet, ConditionEntry, Level};
 use crate::sim::triggers::{
-    Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
-    PlannedUsable, PlannedVolume, Rule, Usable,
+    Action, Condition, GameplayPlan, PlannedBeam, PlannedBreakable, PlannedEmitter, PlannedLaser,
+    PlannedSound, PlannedUsable, PlannedVolume, Rule, Usable,
 };
 
 use super::item::ItemRef;
@@ -30,6 +30,7 @@ struct Names<'a> {
     volumes: HashMap<&'a str, usize>,
     rules: HashMap<&'a str, usize>,
     counters: HashMap<&'a str, usize>,
+    breakables: HashMap<&'a str, usize>,
 }
 
 /// Name → index of the first item of each name (`None`: an item without a name).
@@ -72,6 +73,7 @@ pub(super) fn plan_gameplay(
         volumes: first(g.volumes.iter().map(|v| Some(v.name.as_str()))),
         rules: first(g.rules.iter().map(|r| Some(r.name.as_str()))),
         counters: first(g.counters.iter().map(|c| Some(c.name.as_str()))),
+        breakables: first(g.breakables.iter().map(|b| Some(b.name.as_str()))),
     };
     let instance = |name: &str, at| find(&n.instances, name, "instance", at);
     let mut plan = GameplayPlan::default();
@@ -163,6 +165,18 @@ pub(super) fn plan_gameplay(
                 prompt: u.prompt.clone(),
                 event: u.event.clone(),
             },
+        });
+    }
+    for (i, b) in g.breakables.iter().enumerate() {
+        let at = (ItemRef::Breakable(i), "pieces");
+        plan.breakables.push(PlannedBreakable {
+            name: b.name.clone(),
+            pieces: (b.pieces.iter())
+                .map(|p| instance(p, at))
+                .collect::<Result<_, _>>()?,
+            impact_speed: b.impact_speed,
+            piece_mass: b.piece_mass,
+            scatter_speed: b.scatter_speed,
         });
     }
     for (i, rule) in g.rules.iter().enumerate() {
@@ -278,6 +292,7 @@ fn action(
             counter: find(&n.counters, counter, "counter", at)?,
             value: *value,
         },
+        ActionEntry::Break(name) => Action::Break(find(&n.breakables, name, "breakable", at)?),
         ActionEntry::Win => Action::Win,
         ActionEntry::Lose => Action::Lose,
     })

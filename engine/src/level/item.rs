@@ -32,6 +32,7 @@ pub enum ItemRef {
     /// A name in `gameplay.events`.
     Event(usize),
     Counter(usize),
+    Breakable(usize),
 }
 
 impl ItemRef {
@@ -72,6 +73,7 @@ impl fmt::Display for ItemRef {
             ItemRef::Usable(i) => write!(f, "gameplay.usables[{i}]"),
             ItemRef::Event(i) => write!(f, "gameplay.events[{i}]"),
             ItemRef::Counter(i) => write!(f, "gameplay.counters[{i}]"),
+            ItemRef::Breakable(i) => write!(f, "gameplay.breakables[{i}]"),
         }
     }
 }

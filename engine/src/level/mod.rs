@@ -17,6 +17,7 @@ mod item;
 mod load;
 mod problem;
 mod validate;
+mod validate_breakables;
 mod validate_gameplay;
 mod validate_memory;
 

@@ -141,6 +141,7 @@ pub(super) fn gameplay(c: &mut Problems, names: &HashMap<&str, usize>, materials
         .chain(g.lasers.iter().filter_map(|l| l.beam?.light_group))
         .collect();
     super::validate_memory::memory(c, level, &groups);
+    super::validate_breakables::breakables(c, level);
     let group = |c: &mut Problems, (item, field), user: &str, group: u32| {
         if !groups.contains(&group) {
             let message =
@@ -256,8 +257,10 @@ pub(super) fn gameplay(c: &mut Problems, names: &HashMap<&str, usize>, materials
                     }
                 }
                 // Counters are checked with the rules' memory (`validate_memory.rs`).
+                // Breakables are checked in `validate_breakables.rs`.
                 ActionEntry::Count { .. }
                 | ActionEntry::SetCounter { .. }
+                | ActionEntry::Break(_)
                 | ActionEntry::Win
                 | ActionEntry::Lose => {}
             }

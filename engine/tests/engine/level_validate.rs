@@ -269,7 +269,12 @@ fn the_rules_memory_is_checked() {
         ),
         ("LightsOn(2)", "LightsOn(7)", ItemRef::Rule(3), "when"),
         // The level has no sun.
-        ("LightsOn(2)", r#"SunLit("plate")"#, ItemRef::Rule(3), "when"),
+        (
+            "LightsOn(2)",
+            r#"SunLit("plate")"#,
+            ItemRef::Rule(3),
+            "when",
+        ),
         (sequence, "Sequence([])", ItemRef::Rule(3), "when"),
         (
             r#"counters: [(name: "pulls")]"#,

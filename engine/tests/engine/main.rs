@@ -71,6 +71,7 @@ mod faults_audio_device;
 mod faults_gpu_lost;
 mod faults_resource_limits;
 mod gameplay_bad_input;
+mod gameplay_breakables;
 mod gameplay_laser_beams;
 mod gameplay_memory;
 mod gameplay_plate_door;

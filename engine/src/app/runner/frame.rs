@@ -314,6 +314,9 @@ impl Engine {
                     let on = self.upkeep.light_group_on(group);
                     self.upkeep.set_light_group(group, !on);
                 }
+                Effect::Break(index) => {
+                    self.physics.break_now(&mut self.world, index);
+                }
                 Effect::Sound { sound, at, volume } => {
                     let Some(planned) = self.logic.sounds().get(sound) else {
                         continue;

@@ -19,7 +19,7 @@ use crate::audio::{Bus, SoundEmitter};
 use crate::ecs::{Deformable, LightGroup, ModelHandle, Parent, Renderable, Static, Transform};
 use crate::level::{PlayableCharacter, PlayableLevel};
 use crate::sim::animation::{CharacterAnimation, SkinnedAnimator};
-use crate::sim::physics::{SensorContacts, character_bundle};
+use crate::sim::physics::{Breakable, SensorContacts, character_bundle};
 use crate::sim::triggers::{LevelLogic, beam_model, spawn_beam_pool};
 
 impl Engine {
@@ -113,6 +113,17 @@ impl Engine {
             self.upkeep.set_light_group(group, false);
         }
         self.logic = LevelLogic::new(&level.gameplay, &spawned.entities, &mut self.world);
+        let breakables = (level.gameplay.breakables.iter())
+            .map(|b| Breakable {
+                pieces: (b.pieces.iter())
+                    .filter_map(|&i| spawned.entities.get(i).copied())
+                    .collect(),
+                impact_speed: b.impact_speed,
+                piece_mass: b.piece_mass,
+                scatter_speed: b.scatter_speed,
+            })
+            .collect();
+        self.physics.set_breakables(breakables);
         for laser in &level.gameplay.lasers {
             if let (Some(beam), Some(&entity)) = (laser.beam, spawned.entities.get(laser.instance))
             {

@@ -8,6 +8,7 @@
 //! place the two glam versions meet.
 
 mod bodies;
+mod breaking;
 mod carry;
 mod character;
 mod convert;
@@ -20,6 +21,7 @@ mod world;
 pub use bodies::{
     BodyHandle, BodyKind, Collider, DEFAULT_DENSITY_KG_PER_M3, PhysicsPose, RigidBody,
 };
+pub use breaking::Breakable;
 pub use carry::{Carrier, CarryRequest};
 pub use character::{CharacterController, CharacterInput, CharacterState, character_bundle};
 pub use place::Placement;

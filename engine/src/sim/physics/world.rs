@@ -4,7 +4,8 @@
 //! entity ↔ body map, the list of bodies that moved last step (for render interpolation and
 //! the "sleeping bodies write nothing" rule) and the per-step counts. One step, in order:
 //! spawn new bodies → remove dead ones → game-driven kinematic bodies' motions (`ride`) →
-//! carriers → characters (riding those motions) → rapier step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out → sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
+//! carriers → characters (riding those motions) → breakables hit at speed break (`breaking`)
+//! → rapier step (gravity −9.81 m/s² on Y, CCD, sleeping) → poses of moved bodies out → sensors. Main thread, in the fixed step after game rules. Deterministic: the same world and
 //! inputs give bit-identical results on the same build and machine (rapier runs single-threaded
 //! here; every ECS walk is in entity order).
 //! Must not: render, read devices, or let rapier's math types out (see `convert`).
@@ -16,6 +17,7 @@ use hecs::{Entity, World};
 use rapier3d::prelude::{PhysicsWorld as RapierWorld, QueryFilter, Ray, RigidBodyHandle};
 
 use super::bodies::{self, BodyHandle, entity_of};
+use super::breaking::{Breakable, Breakables};
 use super::convert::{pose_from_rapier, pose_to_rapier, vec_from_rapier, vec_to_rapier};
 use super::{carry, character, ride, sensors};
 
@@ -43,6 +45,7 @@ pub struct PhysicsWorld {
     moving: Vec<Entity>,
     last: StepReport,
     steps: u64,
+    breakables: Breakables,
 }
 
 impl Default for PhysicsWorld {
@@ -72,6 +75,7 @@ impl PhysicsWorld {
             moving: Vec::new(),
             last: StepReport::default(),
             steps: 0,
+            breakables: Breakables::default(),
         }
     }
 
@@ -84,6 +88,9 @@ impl PhysicsWorld {
         carry::drive_carriers(&mut self.rapier, world, dt);
         character::move_characters(&mut self.rapier, world, &platforms, dt);
         self.rapier.integration_parameters.dt = dt;
+        // A little past the step, so a body that arrives exactly at its end breaks the pieces
+        // before it touches them, not a step later.
+        (self.breakables).break_on_impact(world, &mut self.rapier, &self.handles, dt * 1.25);
         self.rapier.step();
         let transform_writes = bodies::sync_moved(&self.rapier, world, &mut self.moving);
         sensors::update_sensors(&self.rapier, world);
@@ -236,7 +243,27 @@ impl PhysicsWorld {
             out.extend(floats.chain(w.to_array()).map(|x| u64::from(x.to_bits())));
             out.push(u64::from(b.is_sleeping()));
         }
+        self.breakables.state_words(&mut out);
         out
+    }
+
+    /// The level's breakable bodies (replacing any from before): pre-fractured pieces that
+    /// stand until a fast body is about to hit one or [`PhysicsWorld::break_now`] is called
+    /// (`breaking.rs`).
+    pub fn set_breakables(&mut self, list: Vec<Breakable>) {
+        self.breakables.set(list);
+    }
+
+    /// Breaks breakable `index` now (its pieces fall free from the next step); whether it was
+    /// standing.
+    pub fn break_now(&mut self, world: &mut World, index: usize) -> bool {
+        self.breakables
+            .break_now(index, world, &mut self.rapier, &self.handles)
+    }
+
+    /// Whether breakable `index` has broken (`None`: no such breakable).
+    pub fn broken(&self, index: usize) -> Option<bool> {
+        self.breakables.broken(index)
     }
 
     /// The handle of `entity`'s body, if it has one.

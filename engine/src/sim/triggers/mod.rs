@@ -26,8 +26,8 @@ pub use beam_geometry::{
 pub use laser::{LaserBeam, LaserPath, trace_laser};
 pub use logic::{Facts, RuleBook, RuleFiring};
 pub use plan::{
-    Action, Condition, GameplayPlan, PlannedBeam, PlannedEmitter, PlannedLaser, PlannedSound,
-    PlannedUsable, PlannedVolume, Rule, Usable,
+    Action, Condition, GameplayPlan, PlannedBeam, PlannedBreakable, PlannedEmitter, PlannedLaser,
+    PlannedSound, PlannedUsable, PlannedVolume, Rule, Usable,
 };
 pub use runtime::{Effect, LevelLogic, Outcome, StepLog, set_material, world_from_model};
 pub use volumes::{OccupantKind, Phase, VolumeEvent, VolumeFacts, VolumeTracker};

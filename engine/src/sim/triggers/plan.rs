@@ -33,6 +33,18 @@ pub struct GameplayPlan {
     pub usables: Vec<PlannedUsable>,
     /// The rules' counters: name and starting value, by index.
     pub counters: Vec<(String, i32)>,
+    /// Breakable walls and pillars, by index (`Break` actions name them).
+    pub breakables: Vec<PlannedBreakable>,
+}
+
+/// A breakable with its pieces resolved: instance indices, speed in m/s, mass in kg.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannedBreakable {
+    pub name: String,
+    pub pieces: Vec<usize>,
+    pub impact_speed: Option<f32>,
+    pub piece_mass: f32,
+    pub scatter_speed: f32,
 }
 
 /// An instance the player can use: its prompt and the event using it sends.
@@ -188,6 +200,8 @@ pub enum Action {
         counter: usize,
         value: i32,
     },
+    /// Break breakable (index) now.
+    Break(usize),
     Win,
     Lose,
 }

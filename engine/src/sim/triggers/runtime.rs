@@ -49,6 +49,8 @@ pub enum Effect {
         at: Option<Entity>,
         volume: f32,
     },
+    /// Break breakable (index into the plan's `breakables`) now.
+    Break(usize),
 }
 
 /// What happened in the last step.
@@ -314,6 +316,7 @@ impl LevelLogic {
                 }
                 // Carried out by the rule book as the rule fired.
                 Action::Count { .. } | Action::SetCounter { .. } => {}
+                Action::Break(index) => effects.push(Effect::Break(index)),
                 Action::Win => {
                     self.outcome.get_or_insert(Outcome::Won(rule));
                 }
