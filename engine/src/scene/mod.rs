@@ -5,7 +5,7 @@
 //! Owns: [`RenderScene`] (the `layout` buffers of one scene), [`SceneWrite`] / [`SceneHeader`]
 //! (the deltas a commit carries, and applying them), the light table ([`lights`]: emissive
 //! triangles, alias table, light groups, sun and sky; [`light_tree`]: the light BVH), material and texture packing
-//! ([`materials`]), the thin line emitters the camera sees prefiltered (`lines`), what a surface does to a laser ([`optics`]), the physical sky's table ([`SkyTable`]) and the box type [`Aabb`].
+//! ([`materials`]), the thin line emitters the camera sees prefiltered (`lines`), what a surface does to a laser ([`optics`]), the physical sky's table ([`SkyTable`]), what it holds in bytes ([`SceneMemory`]) and the box type [`Aabb`].
 //! Any thread (plain data and pure functions).
 //! Must not: build trees (`accel`), trace rays (`trace`), or know about the ECS, the commit or
 //! either thread.
@@ -16,6 +16,7 @@ pub mod light_tree;
 pub mod lights;
 mod lines;
 pub mod materials;
+mod memory;
 pub mod optics;
 mod sky_table;
 pub mod surface;
@@ -27,6 +28,7 @@ pub use flattened::{RenderScene, SceneStats, model_triangles};
 pub use lights::LightTable;
 pub use lines::MAX_LINES;
 pub use materials::luminance;
+pub use memory::SceneMemory;
 pub use optics::{Optics, optics_of};
 pub use sky_table::SkyTable;
 pub use writes::{SceneHeader, SceneWrite};

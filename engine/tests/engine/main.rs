@@ -96,6 +96,7 @@ mod player_third_person;
 mod present_requests;
 mod refit_degradation;
 mod scene_light_tree;
+mod scene_memory;
 mod script_determinism;
 mod script_format;
 mod sky_energy;

@@ -49,6 +49,8 @@ mod denoise_reference;
 mod error;
 mod ghosting;
 mod machine;
+mod memory;
+mod memory_plot;
 mod picture;
 #[cfg(test)]
 mod picture_check;
@@ -98,6 +100,9 @@ enum Command {
     /// The error and stability of the picture a Reflect player sees, against converged renders
     /// of the same views.
     Picture(picture::PictureArgs),
+    /// Scene memory by kind (triangles, BVH, instances, textures, lights) for Reflect and a
+    /// 1.4 M-triangle ruin, beside Brigade's 737 MB.
+    Memory(memory::MemoryArgs),
     /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
     Balance(balance::BalanceArgs),
 }
@@ -108,6 +113,7 @@ fn main() -> anyhow::Result<()> {
     println!("{machine}");
     match Args::parse().command {
         Command::Build(a) => build::run(&a),
+        Command::Memory(a) => memory::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::ChamberRays(a) => chamber_rays::run(&a),
         Command::Error(a) => error::run(&a),
