@@ -1,20 +1,22 @@
 //! Reflect in a real window under Xvfb (CPU tracer, workload scaling at 30 fps): the game
-//! starts at its title menu, the first chamber's committed replay plays in the window for 400
-//! frames (the steps follow wall time, as for a player), and the Quit cue ends the run cleanly.
+//! starts at its title menu, the first chamber's committed replay plays in the window for 460
+//! frames, screenshot at 400 (the steps follow wall time, as for a player: about two a frame at
+//! the 30 fps the scaling holds), and the Quit cue ends the run cleanly.
 //! One window run per process (winit allows one event loop), so the test runs alone in its process
 //! under any runner (`candela_tests::alone`).
 //!
 //! Checked: the run ends by Quit; the title screenshot has the menu (the shell's panel colours
 //! over a third of its centre box) and the game's name in the accent colour in its top band;
 //! the play screenshot is the lit chamber (mean brightness well above black) with the HUD's
-//! objective heading; the game entered the first chamber, and if the replay got as far as the
-//! plate (step 460 and on), the door's rule rose as it does headless.
+//! objective heading; the game entered the first chamber, the replay got past the plate (step
+//! 460) and the door's rule rose as it does headless. A run too short to get there fails (it
+//! used to skip the door check).
 
 use std::path::Path;
 use std::sync::Arc;
 use std::sync::atomic::AtomicBool;
 
-use candela::app::shell::ShellConfig;
+use candela::app::shell::{Cue, ShellConfig, ShellInput};
 use candela::app::{StepInput, UserDirs, WindowConfig, WindowEnd, run_game};
 use candela::render::RenderConfig;
 use candela::render::scaling::ScalingTarget;
@@ -82,7 +84,11 @@ fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
         &repo().join("assets/reflect/replays/chamber_1.replay"),
     )
     .expect("replay");
-    let cues = reflect::cli::replay_cues(&scratch, &world.chambers[start].id);
+    let mut cues = reflect::cli::replay_cues(&scratch, &world.chambers[start].id);
+    // Play on 60 frames past the screenshot before quitting (at the 30 fps the scaling holds,
+    // two steps a frame: 920 steps, past the plate at 460).
+    cues.pop();
+    cues.push(Cue::input(60, ShellInput::Quit));
     let mut game = ReflectGame::new(world, start);
     game.inner_mut().start_with(StepInput::Replay(replay));
     game.inner_mut().use_shell_hud();
@@ -126,15 +132,19 @@ fn reflect_starts_at_its_menu_plays_a_chamber_replay_and_quits() {
     );
     let steps = (game.play_seconds() * 60.0).round() as u64;
     eprintln!("{steps} steps played in the window");
-    assert!(steps >= 200, "the replay advanced: {steps} steps");
-    if steps >= 460 {
-        let door = game.log().iter().any(
-            |(_, e)| matches!(e, ReflectEvent::Rule { name, rising: true } if name == "door_1"),
-        );
-        assert!(
-            door,
-            "the replay carried the cube onto the plate: {:?}",
-            game.log()
-        );
-    }
+    assert!(
+        steps >= 460,
+        "the replay reaches the plate at step 460; the window played {steps} steps in {} \
+         frames",
+        report.frames
+    );
+    let door = game
+        .log()
+        .iter()
+        .any(|(_, e)| matches!(e, ReflectEvent::Rule { name, rising: true } if name == "door_1"));
+    assert!(
+        door,
+        "the replay carried the cube onto the plate: {:?}",
+        game.log()
+    );
 }
