@@ -12,55 +12,55 @@
 //! the flattened scene is kept up to date and sealed into a commit, the render thread renders
 //! it, game code queries it and simulates, and the runner drives it all.
 
-/// GPU structs and constants both tracers share (WGSL twins in `shaders/shared/types.wgsl`).
+// GPU structs and constants both tracers share (WGSL twins in `shaders/shared/types.wgsl`).
 pub mod layout;
 
-/// CPU ray traversal over `layout` buffers (scalar, AVX2, AVX-512).
+// CPU ray traversal over `layout` buffers (scalar, AVX2, AVX-512).
 pub mod trace;
 
-/// Sun and moon positions for a place and time; the physical sky's tables.
+// Sun and moon positions for a place and time; the physical sky's tables.
 pub mod sky;
 
-/// Files in (models, textures, levels), descriptions out.
+// Files in (models, textures, levels), descriptions out.
 pub mod assets;
 
-/// Components and the transform hierarchy.
+// Components and the transform hierarchy.
 pub mod ecs;
 
-/// World → typed scene changes.
+// World → typed scene changes.
 pub mod extract;
 
-/// The flattened scene both sides share: buffers, their writes, lights, materials.
+// The flattened scene both sides share: buffers, their writes, lights, materials.
 pub mod scene;
 
-/// Main thread: BLAS/TLAS builds, refit/rebuild policy, the scene's upkeep.
+// Main thread: BLAS/TLAS builds, refit/rebuild policy, the scene's upkeep.
 pub mod accel;
 
-/// The commit sealed once per frame, and the hand-off.
+// The commit sealed once per frame, and the hand-off.
 pub mod commit;
 
-/// Render thread: apply, converge, scale, trace (GPU and CPU), present.
+// Render thread: apply, converge, scale, trace (GPU and CPU), present.
 pub mod render;
 
-/// Ray queries for game code on the last commit's scene.
+// Ray queries for game code on the last commit's scene.
 pub mod query;
 
-/// Sounds, music and spatial emitters.
+// Sounds, music and spatial emitters.
 pub mod audio;
 
-/// Physics, animation and triggers.
+// Physics, animation and triggers.
 pub mod sim;
 
-/// A level to play: loading with bodies and gameplay.
+// A level to play: loading with bodies and gameplay.
 pub mod level;
 
-/// Players: per-step input in game terms, the first-person controller, what is under the
-/// crosshair, using and carrying; the third-person character and its follow camera.
+// Players: per-step input in game terms, the first-person controller, what is under the
+// crosshair, using and carrying; the third-person character and its follow camera.
 pub mod player;
 
-/// The level editor's core: level documents with their comments, edit commands with undo,
-/// selection and picking, snapping, checked atomic saves with backups, recovery files.
+// The level editor's core: level documents with their comments, edit commands with undo,
+// selection and picking, snapping, checked atomic saves with backups, recovery files.
 pub mod editor;
 
-/// The runner: the frame's phases, the game-facing API, windows, scripts.
+// The runner: the frame's phases, the game-facing API, windows, scripts.
 pub mod app;

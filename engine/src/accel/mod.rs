@@ -6,7 +6,7 @@
 //! into the frame's buffers. Main thread; no shared state. Must not: trace rays (see
 //! [`crate::trace`]) or know about materials and lights.
 //!
-//! Phases (one file each): [`bounds`] (the box type), `bvh2` (binary build: obvhs PLOC presets
+//! Phases (one file each): `bounds` (the box type), `bvh2` (binary build: obvhs PLOC presets
 //! or the balanced fallback) and `binned` (our binned SAH build, the default), `collapse`
 //! (SAH-optimal 8-wide collapse and the per-octant child orders), [`blas`] (triangle blocks),
 //! [`tlas`] (instances).

@@ -1,7 +1,7 @@
 //! The game platform over the engine: the runner that drives the world, the upkeep and the
-//! render thread, headless ([`Engine`](crate::app::Engine)) or in a window
-//! ([`run_window`](crate::app::run_window)), phase by phase ([`Phase`](crate::app::Phase)); the
-//! game-facing API ([`Game`](crate::app::Game)); and the pieces games are built from.
+//! render thread, headless ([`Engine`]) or in a window
+//! ([`run_window`]), phase by phase ([`Phase`]); the
+//! game-facing API ([`Game`]); and the pieces games are built from.
 //!
 //! The sub-modules form layers, like the crate's top-level modules: each uses only the ones
 //! declared before it here (`engine/tests/engine/structure_layers.rs` checks every

@@ -55,7 +55,7 @@ pub struct Extracted {
     /// The view of the first entity with a [`CameraRig`], if any.
     pub camera: Option<RenderCamera>,
     /// How far that camera moved (metres + radians) since it last counted as moving: 0 while
-    /// it stays within [`CAMERA_STILL_TOLERANCE`] of that pose; infinite for its first view.
+    /// it stays within `CAMERA_STILL_TOLERANCE` of that pose; infinite for its first view.
     pub camera_motion: f32,
 }
 

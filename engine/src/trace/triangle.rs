@@ -85,7 +85,7 @@ impl TriRay {
 /// `|det|` must exceed this times `|e2'.y·e1'.x|` (see the module docs).
 pub const DEGENERATE_RATIO: f32 = 1.0 / 262_144.0;
 
-/// Slack of the inside test per unit of `m · E / |det|` (see [`slacks`]): 8 u, u = 2⁻²⁴.
+/// Slack of the inside test per unit of `m · E / |det|` (see `slacks`): 8 u, u = 2⁻²⁴.
 pub const SLACK_SCALE: f32 = 1.0 / 2_097_152.0;
 
 /// Least slack of the inside test, barycentric units (2⁻²⁰): covers the rounding of the stored

@@ -6,7 +6,7 @@
 //! Delete, Ctrl+S), which are ignored while a text field has the keyboard.
 //!
 //! [`panels`] is called once per egui pass by `app::edit::EditMode`. Widgets only
-//! collect [`Pending`] edits; they are applied through [`EditorState`] after the pass draws, so
+//! collect `Pending` edits; they are applied through [`EditorState`] after the pass draws, so
 //! every change is a command. A change made while the primary pointer button is held (a
 //! `DragValue` drag, a slider, a colour picker) belongs to one drag: one command.
 //! Main thread. Must not: touch the world or the renderer (the runner follows the returned

@@ -71,8 +71,8 @@ impl CharacterAnimation {
     }
 
     /// What the state machine reads after a step of `dt` seconds in which the body did
-    /// `state`: the ground speed low-passed ([`SPEED_SMOOTHING_SECONDS`]) and short spells off
-    /// the ground ([`AIR_GRACE_SECONDS`]) counted as grounded unless rising.
+    /// `state`: the ground speed low-passed (`SPEED_SMOOTHING_SECONDS`) and short spells off
+    /// the ground (`AIR_GRACE_SECONDS`) counted as grounded unless rising.
     pub fn observe(&mut self, state: &CharacterState, dt: f32) -> Locomotion {
         if dt <= 0.0 || !dt.is_finite() {
             return self.last_locomotion;
