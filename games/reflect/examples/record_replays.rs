@@ -12,7 +12,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::bail;
-use candela::app::{Engine, Game, KeyCode, MouseButton, StepInput};
+use candela::app::{Engine, Game, StepInput};
 use candela::render::RenderConfig;
 use reflect::bot::Bot;
 use reflect::bot_tasks::chamber_tasks;
@@ -52,12 +52,7 @@ fn record(
             println!("{id} step {step}: {:?}", bot.task());
             last = bot.task().cloned();
         }
-        let input = engine.input_mut();
-        input.key(KeyCode::KeyW, act.forward);
-        input.key(KeyCode::KeyE, act.use_key);
-        input.mouse_button(MouseButton::Left, act.primary);
-        input.mouse_button(MouseButton::Right, act.secondary);
-        input.mouse_motion(act.mouse.x, act.mouse.y);
+        act.press(engine.input_mut());
         engine.frame(1.0 / 60.0, &mut game)?;
         let _ = engine.rendered();
     }

@@ -8,8 +8,8 @@
 //! with the platform level's bot). Main thread, between frames. Must not: move anything
 //! itself (only input reaches the game). Units: metres, radians, mouse counts.
 
-use candela::app::Engine;
 use candela::app::steer::{Steer, aim as steer_aim, pitch_to, walk_to as steer_walk, yaw_to};
+use candela::app::{Engine, InputState, KeyCode, MouseButton};
 use candela::ecs::Transform;
 use candela::player::{FirstPersonPlayer, FocusKind};
 use glam::{Vec2, Vec3, Vec3Swizzles};
@@ -61,6 +61,18 @@ pub struct Act {
     pub primary: bool,
     pub secondary: bool,
     pub mouse: Vec2,
+}
+
+impl Act {
+    /// Holds this step's keys and buttons on `input` and adds the mouse counts, as a player's
+    /// devices would (W forward, E use, left and right buttons).
+    pub fn press(&self, input: &mut InputState) {
+        input.key(KeyCode::KeyW, self.forward);
+        input.key(KeyCode::KeyE, self.use_key);
+        input.mouse_button(MouseButton::Left, self.primary);
+        input.mouse_button(MouseButton::Right, self.secondary);
+        input.mouse_motion(self.mouse.x, self.mouse.y);
+    }
 }
 
 /// The bot: its tasks and where it is in them.

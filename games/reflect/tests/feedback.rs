@@ -5,7 +5,7 @@
 //! and lifting the cube off the plate says the plate is released and the door closes.
 
 use candela::app::steer::{Steer, aim, pitch_to, yaw_to};
-use candela::app::{CARRY_PROMPT, Engine, Game, KeyCode, MouseButton, TOO_FAR};
+use candela::app::{CARRY_PROMPT, Engine, Game, TOO_FAR};
 use candela::ecs::Transform;
 use candela::render::RenderConfig;
 use glam::{Vec2, Vec3};
@@ -33,12 +33,7 @@ fn start(start: usize) -> (ReflectGame, Engine) {
 
 /// One frame (one fixed step) with `act`'s keys and mouse.
 fn frame(game: &mut ReflectGame, engine: &mut Engine, act: Act) {
-    let input = engine.input_mut();
-    input.key(KeyCode::KeyW, act.forward);
-    input.key(KeyCode::KeyE, act.use_key);
-    input.mouse_button(MouseButton::Left, act.primary);
-    input.mouse_button(MouseButton::Right, act.secondary);
-    input.mouse_motion(act.mouse.x, act.mouse.y);
+    act.press(engine.input_mut());
     engine.frame(1.0 / 60.0, game).expect("frame");
     let _ = engine.rendered();
 }

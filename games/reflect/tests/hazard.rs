@@ -5,7 +5,7 @@
 //! and the game counts one send-back and notes it for that chamber. The player had walked
 //! metres away from the start before, so the check cannot pass by standing still.
 
-use candela::app::{Engine, Game, KeyCode, MouseButton};
+use candela::app::{Engine, Game};
 use candela::render::RenderConfig;
 use glam::Vec2;
 use reflect::bot::{Act, Bot, Task};
@@ -29,17 +29,15 @@ fn a_laser_sends_the_player_back_to_the_chambers_start_facing_its_way() -> anyho
     let mut at_hit = None;
     for _ in 0..900 {
         let act: Act = bot.act(&engine, &game);
-        let input = engine.input_mut();
-        input.key(KeyCode::KeyW, act.forward);
-        input.key(KeyCode::KeyE, act.use_key);
-        input.mouse_button(MouseButton::Left, act.primary);
-        input.mouse_button(MouseButton::Right, act.secondary);
-        input.mouse_motion(act.mouse.x, act.mouse.y);
+        act.press(engine.input_mut());
         engine.frame(1.0 / 60.0, &mut game)?;
         let _ = engine.rendered();
         let player = game.inner().player().expect("a player");
         // The simulated pose (the ECS transform is interpolated for the picture).
-        let (centre, _) = engine.physics().pose(player.body).expect("the player's body");
+        let (centre, _) = engine
+            .physics()
+            .pose(player.body)
+            .expect("the player's body");
         let feet = centre - (player.position(engine.world()) - player.feet(engine.world()));
         if game.sent_back() > 0 {
             at_hit = Some((feet, player.yaw, player.pitch));

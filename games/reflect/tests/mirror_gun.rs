@@ -2,7 +2,7 @@
 //! mirror too many (and the HUD counts them), reverting a mirror frees the cap, and a mirror is
 //! a material override of the panel, not new geometry.
 
-use candela::app::{Engine, Game, KeyCode, MouseButton};
+use candela::app::{Engine, Game};
 use candela::ecs::Renderable;
 use candela::render::RenderConfig;
 use glam::Vec3;
@@ -29,12 +29,7 @@ fn drive(start: usize, tasks: Vec<Task>, steps: u32) -> (ReflectGame, Engine, bo
             break;
         }
         let act = bot.act(&engine, &game);
-        let input = engine.input_mut();
-        input.key(KeyCode::KeyW, act.forward);
-        input.key(KeyCode::KeyE, act.use_key);
-        input.mouse_button(MouseButton::Left, act.primary);
-        input.mouse_button(MouseButton::Right, act.secondary);
-        input.mouse_motion(act.mouse.x, act.mouse.y);
+        act.press(engine.input_mut());
         engine.frame(1.0 / 60.0, &mut game).expect("frame");
         let _ = engine.rendered();
     }
