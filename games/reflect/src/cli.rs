@@ -1,12 +1,14 @@
 //! The `reflect` binary's arguments and what each mode does: play in a window inside the
 //! engine's shell (title, HUD, pause, settings, chamber select, ending), or replay a recording
-//! headless and print one summary line.
+//! headless and print one summary line; the headless modes (replay, bench, soak, capture) and
+//! recording run through the engine's harness with Reflect's configuration (`harness.rs`).
 //!
 //! Owns: [`Args`] and [`run`]. Main thread. Must not: contain game rules (`game` has them).
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, bail};
+use candela::app::harness::HarnessGame;
 use candela::app::{
     StepInput, UserDirs, WindowConfig, run_game,
     shell::{Cue, LevelStart, ShellConfig, ShellInput},
@@ -55,6 +57,12 @@ pub struct Args {
     /// With --capture: frames to converge (one sample per pixel each).
     #[arg(long, default_value_t = 256)]
     pub capture_frames: u32,
+    /// With --capture: the picture's width in pixels.
+    #[arg(long, default_value_t = 640)]
+    pub capture_width: u32,
+    /// With --capture: the picture's height in pixels.
+    #[arg(long, default_value_t = 360)]
+    pub capture_height: u32,
     /// Windowed: record every fixed step played into this file (written atomically when the
     /// window closes); play starts at once in `--record-chamber`, skipping the title.
     #[arg(long)]
@@ -116,15 +124,22 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let (path, root) = locate(args.game.as_deref())?;
     let world = ReflectWorld::load(&path, &root)?;
     if let Some(dir) = &args.capture {
-        let files = crate::capture::capture_chambers(&world, dir, 640, 360, args.capture_frames)?;
+        let (width, height) = (args.capture_width, args.capture_height);
+        anyhow::ensure!(
+            width > 0 && height > 0,
+            "--capture-width and --capture-height must be above 0"
+        );
+        let files =
+            crate::capture::capture_chambers(&world, dir, width, height, args.capture_frames)?;
         return Ok(format!("wrote {}", files.join(", ")));
     }
     if let Some(frames) = args.soak {
         let chambers = match &args.soak_chamber {
-            Some(id) => vec![world.chamber_index(id).with_context(|| {
-                let ids: Vec<&str> = world.chambers.iter().map(|c| c.id.as_str()).collect();
-                format!("--soak-chamber {id:?}: the game has {ids:?}")
-            })?],
+            Some(id) => vec![
+                world
+                    .level_index(id)
+                    .with_context(|| format!("--soak-chamber {id:?}"))?,
+            ],
             None => (0..world.chambers.len()).collect(),
         };
         let results = crate::soak::soak_chambers(&world, &chambers, frames, args.seed)?;
@@ -164,7 +179,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     if let Some(path) = &args.record {
         start = record_start(&world, &args.record_chamber)?;
-        let recorder = crate::replays::recorder(&world, &args.record_chamber)?;
+        let recorder = world.recorder(&args.record_chamber)?;
         start_input = Some(StepInput::record(recorder, path));
     }
     let playing_at_once = args.replay.is_some() || args.record.is_some();

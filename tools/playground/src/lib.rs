@@ -1,6 +1,7 @@
 //! The `playground` tool as a library: play a platform test level in first person
 //! (`candela::app::FirstPersonGame`) in a window inside the shell (title menu, HUD, pause,
-//! settings: `candela::app::run_game`), soak it with random input (`candela::app::soak`), or headless — replaying a recording step by
+//! settings: `candela::app::run_game`), soak it with random input (the engine's harness,
+//! `candela::app::harness::soak_levels`, with `FirstPersonLevel` as the configuration), or headless — replaying a recording step by
 //! step and summing it up in one line, or timing the replay (`--bench`: fixed steps per second
 //! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
 //!
@@ -13,6 +14,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
+use candela::app::harness::{FirstPersonLevel, soak_levels};
 use candela::app::{
     Engine, FirstPersonGame, Game, Replay, StepInput, UserDirs, WindowConfig, run_game,
     shell::{Cue, LevelStart, ShellConfig, ShellInput},
@@ -82,10 +84,10 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         bail!("--record records the devices in a window: not with --replay, --headless or --bench");
     }
     let root = asset_root(&args.level, args.asset_root.as_deref())?;
-    let mut game = FirstPersonGame::load(&args.level, &root)?;
+    let level = FirstPersonLevel::load(&args.level, &root)?;
     if let Some(frames) = args.soak {
-        let environment = game.environment();
-        let r = candela::app::soak::soak(&mut game, environment, frames, args.seed)?;
+        let soaks = soak_levels(&level, &[0], frames, args.seed, |_| ())?;
+        let r = &soaks[0].report;
         let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
         return Ok(format!(
             "{}: soak of {} frames (seed {}): no NaN, nothing fell out, {} film checks finite; \
@@ -98,6 +100,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             mib(r.rss_end)
         ));
     }
+    let mut game = level.game();
     let replay = match &args.replay {
         Some(path) => Some(game.open_replay(path)?),
         None => None,
