@@ -8,10 +8,10 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, bail};
-use candela::app::harness::HarnessGame;
+use candela::app::harness::{HarnessGame, play_shots, start_cue, tour_shots};
 use candela::app::{
     StepInput, UserDirs, WindowConfig, run_game,
-    shell::{Cue, LevelStart, ShellConfig, ShellInput},
+    shell::{Cue, ShellConfig},
 };
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
@@ -187,9 +187,9 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         // A recording's shot comes sooner: it only shows that play began.
         (Some(dir), true) => {
             let frames = if args.record.is_some() { 120 } else { 400 };
-            shot_cues(dir, &world.chambers[start].id, frames)
+            play_shots(dir, &world.chambers[start].id, 20, frames)
         }
-        (Some(dir), false) => screenshot_cues(dir, &world),
+        (Some(dir), false) => tour_shots(dir, &world.level_ids(), 30, 90),
         // A recording starts with its chamber, not with the title menu's steps.
         (None, true) if args.record.is_some() => vec![start_cue(&world.chambers[start].id)],
         (None, _) => Vec::new(),
@@ -232,47 +232,7 @@ fn record_start(world: &ReflectWorld, id: &str) -> anyhow::Result<usize> {
     })
 }
 
-/// Starts `chamber` two frames in (the shell's Start, as the menu would).
-fn start_cue(chamber: &str) -> Cue {
-    Cue::input(
-        2,
-        ShellInput::Start(LevelStart {
-            level: chamber.to_string(),
-            checkpoint: None,
-        }),
-    )
-}
-
 /// With a replay: the title, then the replay's chamber played for 400 frames, shot, quit.
 pub fn replay_cues(dir: &Path, chamber: &str) -> Vec<Cue> {
-    shot_cues(dir, chamber, 400)
-}
-
-/// The title, then `chamber` played for `frames` frames, shot, quit.
-fn shot_cues(dir: &Path, chamber: &str, frames: u32) -> Vec<Cue> {
-    vec![
-        Cue::screenshot(20, dir.join("title.png")),
-        start_cue(chamber),
-        Cue::screenshot(frames, dir.join("play.png")),
-        Cue::input(2, ShellInput::Quit),
-    ]
-}
-
-/// The title, then each chamber from its start (two seconds in), as screenshots; then quit.
-fn screenshot_cues(dir: &Path, world: &ReflectWorld) -> Vec<Cue> {
-    let mut cues = vec![Cue::screenshot(30, dir.join("title.png"))];
-    for chamber in &world.chambers {
-        cues.push(Cue::input(
-            2,
-            ShellInput::Start(LevelStart {
-                level: chamber.id.clone(),
-                checkpoint: None,
-            }),
-        ));
-        cues.push(Cue::screenshot(90, dir.join(format!("{}.png", chamber.id))));
-        cues.push(Cue::input(2, ShellInput::Pause));
-        cues.push(Cue::input(2, ShellInput::QuitToTitle));
-    }
-    cues.push(Cue::input(2, ShellInput::Quit));
-    cues
+    play_shots(dir, chamber, 20, 400)
 }

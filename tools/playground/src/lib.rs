@@ -14,10 +14,10 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
-use candela::app::harness::{FirstPersonLevel, soak_levels};
+use candela::app::harness::{FirstPersonLevel, play_shots, soak_levels};
 use candela::app::{
     Engine, FirstPersonGame, Game, Replay, StepInput, UserDirs, WindowConfig, run_game,
-    shell::{Cue, LevelStart, ShellConfig, ShellInput},
+    shell::ShellConfig,
 };
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
@@ -127,7 +127,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         cues: args
             .screenshots
             .as_deref()
-            .map(|dir| screenshot_cues(dir, &game.level_id()))
+            .map(|dir| play_shots(dir, &game.level_id(), 30, 60))
             .unwrap_or_default(),
     };
     let environment = game.environment();
@@ -142,22 +142,6 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     };
     let report = run_game(config, shell, render, environment, &mut game)?;
     Ok(format!("{} frames", report.frames))
-}
-
-/// The title menu, then a few seconds of play, each as a screenshot in `dir`; then quit.
-fn screenshot_cues(dir: &Path, level: &str) -> Vec<Cue> {
-    vec![
-        Cue::screenshot(30, dir.join("title.png")),
-        Cue::input(
-            2,
-            ShellInput::Start(LevelStart {
-                level: level.to_string(),
-                checkpoint: None,
-            }),
-        ),
-        Cue::screenshot(60, dir.join("play.png")),
-        Cue::input(2, ShellInput::Quit),
-    ]
 }
 
 fn headless(

@@ -4,12 +4,13 @@
 //! game's one-line summary and exit code ([`play_replay`]), timed in real time
 //! ([`bench_replay`]), the soak over the game's levels ([`soak_levels`], over `soak`: any game
 //! played by the seeded monkey, watched for what must never happen), converged captures
-//! ([`capture_converged`]); [`FirstPersonLevel`], the configuration of one level played in
+//! ([`capture_converged`]), the windowed screenshot runs' cues ([`play_shots`],
+//! [`tour_shots`]); [`FirstPersonLevel`], the configuration of one level played in
 //! first person (the playground's); and the ghosting measurement ([`measure_ghosting`]: a converging
 //! policy's error on a fast-moving object and its trail).
 //!
 //! One file per job: `config` (the trait and the errors), `replay_run`, `bench`, `soak`,
-//! `soak_levels`, `capture`, `first_person`, `ghosting`. Main thread (the engine's render thread renders).
+//! `soak_levels`, `capture`, `shots` (the screenshot runs' cues), `first_person`, `ghosting`. Main thread (the engine's render thread renders).
 //! Must not: change the game, its level or any policy (they drive and measure), or name a
 //! particular game (its summaries and tables are the game's).
 
@@ -19,6 +20,7 @@ mod config;
 mod first_person;
 mod ghosting;
 mod replay_run;
+mod shots;
 pub mod soak;
 mod soak_levels;
 
@@ -28,4 +30,5 @@ pub use config::{HarnessError, HarnessGame};
 pub use first_person::FirstPersonLevel;
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
+pub use shots::{play_shots, start_cue, tour_shots};
 pub use soak_levels::{LevelSoak, soak_levels};
