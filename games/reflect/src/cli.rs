@@ -8,17 +8,14 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, bail};
-use candela::app::harness::{HarnessGame, play_shots, start_cue, tour_shots};
-use candela::app::{
-    StepInput, UserDirs, WindowConfig, run_game,
-    shell::{Cue, ShellConfig},
+use candela::app::StepInput;
+use candela::app::harness::{
+    HarnessGame, WindowedPlay, play_shots, play_windowed, start_cue, tour_shots,
 };
+use candela::app::shell::Cue;
 use candela::assets::AssetRoot;
-use candela::render::scaling::ScalingTarget;
-use candela::render::{RenderConfig, TracerChoice};
 use clap::Parser;
 
-use crate::game::ReflectGame;
 use crate::headless::play_replay;
 use crate::replays::{FULL_GAME, open_replay};
 use crate::world::ReflectWorld;
@@ -194,30 +191,21 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         (None, true) if args.record.is_some() => vec![start_cue(&world.chambers[start].id)],
         (None, _) => Vec::new(),
     };
-    let mut game = ReflectGame::new(world, start);
+    let mut game = world.new_game(start);
     if let Some(input) = start_input {
         game.inner_mut().start_with(input);
     }
     game.inner_mut().use_shell_hud();
-    let config = WindowConfig {
+    // The shell's window with the render configuration game binaries share (the tracer
+    // `auto` picks, 1 spp, holding 30 fps by workload scaling).
+    let play = WindowedPlay {
         title: "Reflect".into(),
-        show_stats: args.stats,
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::from_env("reflect")?,
+        app: "reflect".into(),
         cues,
-    };
-    let environment = game.inner().environment();
-    // The tracer `auto` picks (the CPU one on machines without a GPU), 1 spp, holding 30 fps
-    // by workload scaling.
-    let render = RenderConfig {
-        tracer: TracerChoice::Auto,
+        stats: args.stats,
         denoise: args.denoise,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
-        ..RenderConfig::cpu(640, 360)
     };
-    let report = run_game(config, shell, render, environment, &mut game)?;
+    let report = play_windowed(&world, &mut game, play)?;
     Ok(format!("{} frames", report.frames))
 }
 

@@ -14,14 +14,12 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
-use candela::app::harness::{FirstPersonLevel, play_shots, soak_levels};
-use candela::app::{
-    Engine, FirstPersonGame, Game, Replay, StepInput, UserDirs, WindowConfig, run_game,
-    shell::ShellConfig,
+use candela::app::harness::{
+    FirstPersonLevel, WindowedPlay, play_shots, play_windowed, soak_levels,
 };
+use candela::app::{Engine, FirstPersonGame, Game, Replay, StepInput};
 use candela::assets::AssetRoot;
-use candela::render::scaling::ScalingTarget;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 use clap::Parser;
 
 /// Play a level in first person: WASD to walk, mouse to look (click to capture it), E to use
@@ -117,30 +115,22 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     // The shell around the game: title menu, HUD, pause (Escape), settings saved in the
     // player's config folder; `run_game` sets the input map from the actions and settings.
     game.use_shell_hud();
-    let config = WindowConfig {
+    let play = WindowedPlay {
         title: format!("Candela playground — {}", args.level.display()),
-        show_stats: args.stats,
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::from_env("playground")?,
+        app: "playground".into(),
         cues: args
             .screenshots
             .as_deref()
             .map(|dir| play_shots(dir, &game.level_id(), 30, 60))
             .unwrap_or_default(),
-    };
-    let environment = game.environment();
-    // The tracer `auto` picks, at 640×360 and 1 spp, holding 30 fps by workload scaling.
-    let render = RenderConfig {
-        tracer: TracerChoice::Auto,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        stats: args.stats,
         // Denoised as Reflect is: the row kernels take 5–10 ms a frame at 320×180 on two cores
         // (docs/PERFORMANCE.md, "Denoiser time per frame"), and a 1-spp film in motion is noise.
         denoise: true,
-        ..RenderConfig::cpu(640, 360)
     };
-    let report = run_game(config, shell, render, environment, &mut game)?;
+    // The shell's window with the render configuration game binaries share (the tracer
+    // `auto` picks, 640×360 at 1 spp, holding 30 fps by workload scaling).
+    let report = play_windowed(&level, &mut game, play)?;
     Ok(format!("{} frames", report.frames))
 }
 

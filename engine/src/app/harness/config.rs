@@ -8,8 +8,10 @@
 
 use std::path::Path;
 
+use crate::app::persist::UserDirsError;
 use crate::app::replay::{Recorder, Replay};
 use crate::app::runner::{EngineError, Environment, Game};
+use crate::app::window::WindowError;
 use crate::render::RenderError;
 use crate::render::film::ImageIoError;
 
@@ -72,4 +74,8 @@ pub enum HarnessError {
     },
     #[error(transparent)]
     Image(#[from] ImageIoError),
+    #[error(transparent)]
+    Window(#[from] WindowError),
+    #[error(transparent)]
+    Dirs(#[from] UserDirsError),
 }
