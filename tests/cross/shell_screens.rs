@@ -33,7 +33,8 @@ use std::sync::atomic::AtomicBool;
 use std::time::{Duration, Instant};
 
 use candela::app::shell::{
-    Cue, GameSummary, HudInfo, LevelEntry, LevelStart, ShellConfig, ShellInfo, ShellInput, ShellRun,
+    Cue, GameSummary, HudInfo, LevelEntry, LevelStart, ShellConfig, ShellHooks, ShellInfo,
+    ShellInput, ShellRun,
 };
 use candela::app::{
     Binding, Engine, Environment, Game, InputMap, KeyCode, Progress, Settings, SetupError,
@@ -60,6 +61,12 @@ impl Game for RoomGame {
         Ok(())
     }
 
+    fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
+        Some(self)
+    }
+}
+
+impl ShellHooks for RoomGame {
     fn shell_info(&self) -> ShellInfo {
         ShellInfo {
             title: "Candela Test Room".into(),
@@ -346,7 +353,7 @@ fn title_hud_pause_and_settings_are_drawn_and_a_setting_survives_a_restart() {
         dirs,
         cues: Vec::new(),
     };
-    let shell = ShellRun::new(config, &mut engine, &game, InputMap::runner_keys());
+    let shell = ShellRun::new(config, &mut engine, &mut game, InputMap::runner_keys());
     assert_eq!(shell.files().settings.music_volume, 0.35);
     assert_eq!(engine.settings().music_volume, 0.35);
     engine.input_mut().key(KeyCode::KeyF, true);

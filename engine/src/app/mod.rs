@@ -20,7 +20,8 @@
 //! - `edit`: the editor in a running game (F1).
 //! - `shell`: the screens around a game (title, HUD, pause, settings, ending).
 //! - `window`: the winit window runner, the stats overlay.
-//! - `harness`: the soak and the ghosting measurement.
+//! - `harness`: the game harness, configured by a game (`HarnessGame`): headless replay,
+//!   bench, soak, converged captures; and the ghosting measurement.
 //!
 //! Everything games, tools and tests use is re-exported here, so `candela::app::X` paths do
 //! not depend on the folders.
@@ -52,8 +53,9 @@ pub mod shell;
 // The winit window runner and the stats overlay.
 mod window;
 
-// The soak and the ghosting measurement.
-mod harness;
+// The game harness (headless replay, bench, soak, captures, configured by a game) and the
+// ghosting measurement.
+pub mod harness;
 
 // Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).
 pub use crate::assets::atomic_file::{AtomicFileError, keep_aside, write_atomic};

@@ -14,7 +14,7 @@ use crate::app_common;
 use anyhow::Result;
 use app_common::Scratch;
 use candela::app::shell::{
-    Cue, GameSummary, HudInfo, LevelStart, Screen, ShellConfig, ShellInput, ShellRun,
+    Cue, GameSummary, HudInfo, LevelStart, Screen, ShellConfig, ShellHooks, ShellInput, ShellRun,
     continue_point, run_headless,
 };
 use candela::app::{
@@ -51,6 +51,12 @@ impl Game for TestGame {
         }
     }
 
+    fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
+        Some(self)
+    }
+}
+
+impl ShellHooks for TestGame {
     fn begin_level(&mut self, _engine: &mut Engine, start: &LevelStart) -> Result<(), SetupError> {
         self.begun.push(start.clone());
         Ok(())

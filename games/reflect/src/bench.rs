@@ -4,99 +4,36 @@
 //! emissive triangles the light sampling holds with the chambers switching their lights and
 //! with every light on. Printed as a Markdown table (`docs/PERFORMANCE.md`).
 //!
+//! Each run is the engine harness's (`candela::app::harness::bench_replay`); Reflect chooses
+//! the render configuration and lays out the table.
+//!
 //! Owns: [`bench`]. Main thread (the render thread renders). Must not: change the game.
 
 use std::path::Path;
-use std::time::Instant;
 
-use candela::app::{Engine, Game, Phase, StepInput};
+use candela::app::Phase;
+use candela::app::harness::{BenchFigures, bench_replay};
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
 use candela::render::{RenderConfig, TracerChoice};
 
-use crate::game::ReflectGame;
-use crate::replays::open_replay;
 use crate::world::ReflectWorld;
 
-/// What one chamber's run measured (medians over the second half of its frames, once the
-/// scaling settled).
-#[derive(Clone, Debug, Default)]
-pub struct ChamberFigures {
-    pub frames: usize,
-    pub frame_ms: f64,
-    /// Milliseconds per frame of each main-thread phase, in `Phase::ALL` order.
-    pub phase_ms: Vec<f64>,
-    pub render_ms: f64,
-    /// The denoiser's milliseconds per frame (its guide pass included; 0 when off).
-    pub denoise_ms: f64,
-    pub film: (u32, u32),
-    pub spp: u32,
-    pub lights: u32,
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    if v.is_empty() {
-        return f64::NAN;
-    }
-    v.sort_by(f64::total_cmp);
-    v[v.len() / 2]
-}
-
-/// Plays chamber `index`'s replay on `world` for at most `seconds` of wall time.
+/// Plays a chamber's replay on `world` for at most `seconds` of wall time, as the game plays:
+/// the CPU tracer at 640×360 with workload scaling holding 30 fps.
 fn run(
     world: &ReflectWorld,
-    index: usize,
     replay: &Path,
     seconds: f64,
     denoise: bool,
-) -> anyhow::Result<ChamberFigures> {
-    let (replay, start) = open_replay(world, replay)?;
-    debug_assert_eq!(start, index);
-    let mut game = ReflectGame::new(world.clone(), start);
+) -> anyhow::Result<BenchFigures> {
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
         denoise,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
         ..RenderConfig::cpu(640, 360)
     };
-    let mut engine = Engine::new(config, game.inner().environment())?;
-    game.setup(&mut engine)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    engine.set_step_input(StepInput::Replay(replay));
-    let begun = Instant::now();
-    let mut last = Instant::now();
-    let mut dt = 1.0 / 30.0;
-    let (mut frame_ms, mut phases, mut rendered) = (Vec::new(), Vec::new(), Vec::new());
-    while !engine.replay_finished() && begun.elapsed().as_secs_f64() < seconds {
-        let report = engine.frame(dt, &mut game)?;
-        rendered.extend(engine.rendered().into_iter().flatten());
-        let now = Instant::now();
-        dt = (now - last).as_secs_f64().min(0.1);
-        last = now;
-        frame_ms.push(dt * 1e3);
-        phases.push(report.phases);
-    }
-    let _ = engine.shutdown();
-    let half = |n: usize| n / 2;
-    let late = &rendered[half(rendered.len())..];
-    let mut figures = ChamberFigures {
-        frames: frame_ms.len(),
-        frame_ms: median(frame_ms[half(frame_ms.len())..].to_vec()),
-        render_ms: median(late.iter().map(|r| r.render_seconds * 1e3).collect()),
-        denoise_ms: median(late.iter().map(|r| r.denoise_seconds * 1e3).collect()),
-        spp: late.iter().map(|r| r.spp).max().unwrap_or(0),
-        lights: median(late.iter().map(|r| f64::from(r.lights)).collect()) as u32,
-        ..Default::default()
-    };
-    let mut films: Vec<(u32, u32)> = late.iter().map(|r| r.film_size).collect();
-    films.sort_unstable();
-    figures.film = films.get(films.len() / 2).copied().unwrap_or_default();
-    let late_phases = &phases[half(phases.len())..];
-    figures.phase_ms = Phase::ALL
-        .iter()
-        .map(|&p| median(late_phases.iter().map(|t| t.get(p) * 1e3).collect()))
-        .collect();
-    Ok(figures)
+    Ok(bench_replay(world, replay, config, seconds)?)
 }
 
 /// Runs every chamber with and without room switching (denoising each frame when `denoise`,
@@ -116,10 +53,10 @@ pub fn bench(
     out += " render ms | denoise ms | internal res | spp | emitters sampled (switching) | emitters (all on) |\n|---|";
     out += &"---:|".repeat(3 + Phase::ALL.len() + 6);
     out += "\n";
-    for (i, chamber) in world.chambers.iter().enumerate() {
+    for chamber in &world.chambers {
         let replay = replays.join(format!("{}.replay", chamber.id));
-        let f = run(world, i, &replay, seconds, denoise)?;
-        let on = run(&all_on, i, &replay, seconds.min(8.0), denoise)?;
+        let f = run(world, &replay, seconds, denoise)?;
+        let on = run(&all_on, &replay, seconds.min(8.0), denoise)?;
         out += &format!(
             "| {} | {} | {:.1} | {:.1} |",
             chamber.id,

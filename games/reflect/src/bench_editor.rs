@@ -12,7 +12,7 @@
 use std::time::Instant;
 
 use anyhow::Context;
-use candela::app::edit::EditMode;
+use candela::app::edit::{EditHooks, EditMode};
 use candela::app::{Engine, Game, Step};
 use candela::editor::{pick, pixel_ray};
 use candela::render::{RenderConfig, TracerChoice};

@@ -1,22 +1,21 @@
 //! The `reflect` binary's arguments and what each mode does: play in a window inside the
 //! engine's shell (title, HUD, pause, settings, chamber select, ending), or replay a recording
-//! headless and print one summary line.
+//! headless and print one summary line; the headless modes (replay, bench, soak, capture) and
+//! recording run through the engine's harness with Reflect's configuration (`harness.rs`).
 //!
 //! Owns: [`Args`] and [`run`]. Main thread. Must not: contain game rules (`game` has them).
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, bail};
-use candela::app::{
-    StepInput, UserDirs, WindowConfig, run_game,
-    shell::{Cue, LevelStart, ShellConfig, ShellInput},
+use candela::app::StepInput;
+use candela::app::harness::{
+    HarnessGame, WindowedPlay, play_shots, play_windowed, start_cue, tour_shots,
 };
+use candela::app::shell::Cue;
 use candela::assets::AssetRoot;
-use candela::render::scaling::ScalingTarget;
-use candela::render::{RenderConfig, TracerChoice};
 use clap::Parser;
 
-use crate::game::ReflectGame;
 use crate::headless::play_replay;
 use crate::replays::{FULL_GAME, open_replay};
 use crate::world::ReflectWorld;
@@ -55,6 +54,12 @@ pub struct Args {
     /// With --capture: frames to converge (one sample per pixel each).
     #[arg(long, default_value_t = 256)]
     pub capture_frames: u32,
+    /// With --capture: the picture's width in pixels.
+    #[arg(long, default_value_t = 640)]
+    pub capture_width: u32,
+    /// With --capture: the picture's height in pixels.
+    #[arg(long, default_value_t = 360)]
+    pub capture_height: u32,
     /// Windowed: record every fixed step played into this file (written atomically when the
     /// window closes); play starts at once in `--record-chamber`, skipping the title.
     #[arg(long)]
@@ -116,15 +121,22 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     let (path, root) = locate(args.game.as_deref())?;
     let world = ReflectWorld::load(&path, &root)?;
     if let Some(dir) = &args.capture {
-        let files = crate::capture::capture_chambers(&world, dir, 640, 360, args.capture_frames)?;
+        let (width, height) = (args.capture_width, args.capture_height);
+        anyhow::ensure!(
+            width > 0 && height > 0,
+            "--capture-width and --capture-height must be above 0"
+        );
+        let files =
+            crate::capture::capture_chambers(&world, dir, width, height, args.capture_frames)?;
         return Ok(format!("wrote {}", files.join(", ")));
     }
     if let Some(frames) = args.soak {
         let chambers = match &args.soak_chamber {
-            Some(id) => vec![world.chamber_index(id).with_context(|| {
-                let ids: Vec<&str> = world.chambers.iter().map(|c| c.id.as_str()).collect();
-                format!("--soak-chamber {id:?}: the game has {ids:?}")
-            })?],
+            Some(id) => vec![
+                world
+                    .level_index(id)
+                    .with_context(|| format!("--soak-chamber {id:?}"))?,
+            ],
             None => (0..world.chambers.len()).collect(),
         };
         let results = crate::soak::soak_chambers(&world, &chambers, frames, args.seed)?;
@@ -164,7 +176,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     if let Some(path) = &args.record {
         start = record_start(&world, &args.record_chamber)?;
-        let recorder = crate::replays::recorder(&world, &args.record_chamber)?;
+        let recorder = world.recorder(&args.record_chamber)?;
         start_input = Some(StepInput::record(recorder, path));
     }
     let playing_at_once = args.replay.is_some() || args.record.is_some();
@@ -172,37 +184,28 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         // A recording's shot comes sooner: it only shows that play began.
         (Some(dir), true) => {
             let frames = if args.record.is_some() { 120 } else { 400 };
-            shot_cues(dir, &world.chambers[start].id, frames)
+            play_shots(dir, &world.chambers[start].id, 20, frames)
         }
-        (Some(dir), false) => screenshot_cues(dir, &world),
+        (Some(dir), false) => tour_shots(dir, &world.level_ids(), 30, 90),
         // A recording starts with its chamber, not with the title menu's steps.
         (None, true) if args.record.is_some() => vec![start_cue(&world.chambers[start].id)],
         (None, _) => Vec::new(),
     };
-    let mut game = ReflectGame::new(world, start);
+    let mut game = world.new_game(start);
     if let Some(input) = start_input {
         game.inner_mut().start_with(input);
     }
     game.inner_mut().use_shell_hud();
-    let config = WindowConfig {
+    // The shell's window with the render configuration game binaries share (the tracer
+    // `auto` picks, 1 spp, holding 30 fps by workload scaling).
+    let play = WindowedPlay {
         title: "Reflect".into(),
-        show_stats: args.stats,
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::from_env("reflect")?,
+        app: "reflect".into(),
         cues,
-    };
-    let environment = game.inner().environment();
-    // The tracer `auto` picks (the CPU one on machines without a GPU), 1 spp, holding 30 fps
-    // by workload scaling.
-    let render = RenderConfig {
-        tracer: TracerChoice::Auto,
+        stats: args.stats,
         denoise: args.denoise,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
-        ..RenderConfig::cpu(640, 360)
     };
-    let report = run_game(config, shell, render, environment, &mut game)?;
+    let report = play_windowed(&world, &mut game, play)?;
     Ok(format!("{} frames", report.frames))
 }
 
@@ -217,47 +220,7 @@ fn record_start(world: &ReflectWorld, id: &str) -> anyhow::Result<usize> {
     })
 }
 
-/// Starts `chamber` two frames in (the shell's Start, as the menu would).
-fn start_cue(chamber: &str) -> Cue {
-    Cue::input(
-        2,
-        ShellInput::Start(LevelStart {
-            level: chamber.to_string(),
-            checkpoint: None,
-        }),
-    )
-}
-
 /// With a replay: the title, then the replay's chamber played for 400 frames, shot, quit.
 pub fn replay_cues(dir: &Path, chamber: &str) -> Vec<Cue> {
-    shot_cues(dir, chamber, 400)
-}
-
-/// The title, then `chamber` played for `frames` frames, shot, quit.
-fn shot_cues(dir: &Path, chamber: &str, frames: u32) -> Vec<Cue> {
-    vec![
-        Cue::screenshot(20, dir.join("title.png")),
-        start_cue(chamber),
-        Cue::screenshot(frames, dir.join("play.png")),
-        Cue::input(2, ShellInput::Quit),
-    ]
-}
-
-/// The title, then each chamber from its start (two seconds in), as screenshots; then quit.
-fn screenshot_cues(dir: &Path, world: &ReflectWorld) -> Vec<Cue> {
-    let mut cues = vec![Cue::screenshot(30, dir.join("title.png"))];
-    for chamber in &world.chambers {
-        cues.push(Cue::input(
-            2,
-            ShellInput::Start(LevelStart {
-                level: chamber.id.clone(),
-                checkpoint: None,
-            }),
-        ));
-        cues.push(Cue::screenshot(90, dir.join(format!("{}.png", chamber.id))));
-        cues.push(Cue::input(2, ShellInput::Pause));
-        cues.push(Cue::input(2, ShellInput::QuitToTitle));
-    }
-    cues.push(Cue::input(2, ShellInput::Quit));
-    cues
+    play_shots(dir, chamber, 20, 400)
 }

@@ -1,18 +1,16 @@
-//! Playing Reflect without a window: a recording replayed step by step on a tiny CPU-traced
-//! frame (the lasers and the mirror gun query the scene, so the scene is still committed every
-//! frame), summed up in a [`RunSummary`] and one line.
+//! Playing Reflect without a window: a recording replayed step by step by the engine's
+//! harness (`candela::app::harness::play_replay`: a tiny CPU-traced frame, since the lasers and
+//! the mirror gun query the committed scene), summed up in a [`RunSummary`] and one line.
 //!
-//! Owns: [`play_replay`] and [`RunSummary`]. Main thread. Must not: open windows or devices.
+//! Owns: [`play_replay`] and [`RunSummary`] (what Reflect reads of a finished run). Main thread. Must not: open windows or devices.
 
 use std::path::Path;
 
-use anyhow::bail;
-use candela::app::{Engine, Game, StepInput};
-use candela::render::RenderConfig;
+use candela::app::Engine;
+use candela::app::harness::{ReplayPace, play_replay as play_replay_with};
 use candela::sim::triggers::LaserPath;
 
 use crate::game::{ReflectEvent, ReflectGame};
-use crate::replays::open_replay;
 use crate::world::ReflectWorld;
 
 /// What a headless run did.
@@ -133,37 +131,21 @@ pub fn play_replay_at(
     frame_seconds: f64,
     at_least_steps: u64,
 ) -> anyhow::Result<RunSummary> {
-    let (replay, start) = open_replay(world, replay)?;
-    let recorded = replay.steps() + 1;
-    let mut game = ReflectGame::new(world.clone(), start);
-    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
-    game.setup(&mut engine)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    engine.set_step_input(StepInput::Replay(replay));
-    // Every frame runs at least one step (`frame_seconds` ≥ 1/60 s is the caller's to keep).
-    let most_frames = recorded.max(at_least_steps) + 1;
-    for _ in 0..most_frames {
-        engine.frame(frame_seconds, &mut game)?;
-        let _ = engine.rendered();
-        if engine.replay_finished() && engine.clock().steps >= at_least_steps {
-            break;
-        }
-    }
-    if !engine.replay_finished() {
-        bail!("the replay did not finish in {most_frames} frames");
-    }
-    let summary = RunSummary {
-        start,
-        finished: game.finished(),
-        ending: game.ended(),
-        seconds: game.play_seconds(),
-        mirrors: game.gun().made,
-        sent_back: game.sent_back(),
-        steps: engine.clock().steps,
-        state_hash: engine.state_hash(),
-        log: game.log().to_vec(),
-        beams: beams(&engine, &game),
+    let pace = ReplayPace {
+        frame_seconds,
+        at_least_steps,
     };
-    let _ = engine.shutdown();
+    let summary = play_replay_with(world, replay, pace, |end| RunSummary {
+        start: end.start,
+        finished: end.game.finished(),
+        ending: end.game.ended(),
+        seconds: end.game.play_seconds(),
+        mirrors: end.game.gun().made,
+        sent_back: end.game.sent_back(),
+        steps: end.engine.clock().steps,
+        state_hash: end.engine.state_hash(),
+        log: end.game.log().to_vec(),
+        beams: beams(end.engine, end.game),
+    })?;
     Ok(summary)
 }

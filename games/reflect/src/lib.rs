@@ -4,8 +4,10 @@
 //! its art and sounds are made by `tools/assetgen`.
 //!
 //! Modules: `chambers` (the game file), `world` (loading the world), `game` (the rules),
-//! `mirror_gun`, `hazard` (lasers that send the player back), `replays`, `headless`, `soak`, `cli`,
-//! `bot` (the scripted player that records the committed replays).
+//! `mirror_gun`, `hazard` (lasers that send the player back), `replays`, `harness` (Reflect as
+//! the engine's game harness runs it), `headless`, `bench`, `soak`, `capture` (what Reflect
+//! reads of and asks of the harness's modes), `cli`, `bot` (the scripted player that records
+//! the committed replays).
 //! Main thread throughout. Must not: reach into the renderer.
 
 pub mod bench;
@@ -16,6 +18,7 @@ pub mod capture;
 pub mod chambers;
 pub mod cli;
 pub mod game;
+pub mod harness;
 pub mod hazard;
 pub mod headless;
 pub mod mirror_gun;

@@ -1,13 +1,14 @@
 //! `reflect --soak FRAMES [--seed N] [--soak-chamber ID]`: each chamber played headless for
-//! `FRAMES` frames by the engine's soak (`candela::app::soak`: the seeded monkey walks, looks,
+//! `FRAMES` frames by the engine's soak over a game's levels (`candela::app::harness::soak_levels`,
+//! `candela::app::soak`: the seeded monkey walks, looks,
 //! jumps, carries, fires and reverts the mirror gun; every frame is checked for non-finite
 //! transforms and bodies out of the world, the film every 500 frames, memory after the warm-up
 //! and at the end), one chamber after another, each from its own start.
 //!
 //! Owns: [`soak_chambers`] and [`table`]. Main thread. Must not: open windows or devices.
 
-use anyhow::Context;
-use candela::app::soak::{SoakReport, soak};
+use candela::app::harness::soak_levels;
+use candela::app::soak::SoakReport;
 
 use crate::game::ReflectGame;
 use crate::world::ReflectWorld;
@@ -35,22 +36,19 @@ pub fn soak_chambers(
     frames: u64,
     seed: u64,
 ) -> anyhow::Result<Vec<ChamberSoak>> {
-    let mut out = Vec::new();
-    for &index in chambers {
-        let id = world.chambers[index].id.clone();
-        let mut game = ReflectGame::new(world.clone(), index);
-        let environment = game.inner().environment();
-        let report = soak(&mut game, environment, frames, seed)
-            .with_context(|| format!("soak of {id} (seed {seed})"))?;
-        out.push(ChamberSoak {
-            id,
-            report,
-            mirrors: game.gun().made,
-            sent_back: game.sent_back(),
-            events: game.log().len(),
-        });
-    }
-    Ok(out)
+    let soaks = soak_levels(world, chambers, frames, seed, |game: &ReflectGame| {
+        (game.gun().made, game.sent_back(), game.log().len())
+    })?;
+    Ok(soaks
+        .into_iter()
+        .map(|s| ChamberSoak {
+            id: s.id,
+            report: s.report,
+            mirrors: s.note.0,
+            sent_back: s.note.1,
+            events: s.note.2,
+        })
+        .collect())
 }
 
 /// The soak's results as a Markdown table (as `docs/RELIABILITY.md` shows them).

@@ -4,6 +4,7 @@
 //! what they did (and the chamber counts as solved, then complete once the player goes on),
 //! and lifting the cube off the plate says the plate is released and the door closes.
 
+use candela::app::shell::ShellHooks;
 use candela::app::steer::{Steer, aim, pitch_to, yaw_to};
 use candela::app::{CARRY_PROMPT, Engine, Game, TOO_FAR};
 use candela::ecs::Transform;

@@ -2,6 +2,8 @@
 //! mirror too many (and the HUD counts them), reverting a mirror frees the cap, and a mirror is
 //! a material override of the panel, not new geometry.
 
+use candela::app::edit::EditHooks;
+use candela::app::shell::ShellHooks;
 use candela::app::{Engine, Game};
 use candela::ecs::Renderable;
 use candela::render::RenderConfig;

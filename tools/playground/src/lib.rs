@@ -1,6 +1,7 @@
 //! The `playground` tool as a library: play a platform test level in first person
 //! (`candela::app::FirstPersonGame`) in a window inside the shell (title menu, HUD, pause,
-//! settings: `candela::app::run_game`), soak it with random input (`candela::app::soak`), or headless — replaying a recording step by
+//! settings: `candela::app::run_game`), soak it with random input (the engine's harness,
+//! `candela::app::harness::soak_levels`, with `FirstPersonLevel` as the configuration), or headless — replaying a recording step by
 //! step and summing it up in one line, or timing the replay (`--bench`: fixed steps per second
 //! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
 //!
@@ -13,13 +14,12 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use anyhow::{Context, bail};
-use candela::app::{
-    Engine, FirstPersonGame, Game, Replay, StepInput, UserDirs, WindowConfig, run_game,
-    shell::{Cue, LevelStart, ShellConfig, ShellInput},
+use candela::app::harness::{
+    FirstPersonLevel, WindowedPlay, play_shots, play_windowed, soak_levels,
 };
+use candela::app::{Engine, FirstPersonGame, Game, Replay, StepInput};
 use candela::assets::AssetRoot;
-use candela::render::scaling::ScalingTarget;
-use candela::render::{RenderConfig, TracerChoice};
+use candela::render::RenderConfig;
 use clap::Parser;
 
 /// Play a level in first person: WASD to walk, mouse to look (click to capture it), E to use
@@ -82,10 +82,10 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         bail!("--record records the devices in a window: not with --replay, --headless or --bench");
     }
     let root = asset_root(&args.level, args.asset_root.as_deref())?;
-    let mut game = FirstPersonGame::load(&args.level, &root)?;
+    let level = FirstPersonLevel::load(&args.level, &root)?;
     if let Some(frames) = args.soak {
-        let environment = game.environment();
-        let r = candela::app::soak::soak(&mut game, environment, frames, args.seed)?;
+        let soaks = soak_levels(&level, &[0], frames, args.seed, |_| ())?;
+        let r = &soaks[0].report;
         let mib = |b: u64| b as f64 / (1024.0 * 1024.0);
         return Ok(format!(
             "{}: soak of {} frames (seed {}): no NaN, nothing fell out, {} film checks finite; \
@@ -98,6 +98,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             mib(r.rss_end)
         ));
     }
+    let mut game = level.game();
     let replay = match &args.replay {
         Some(path) => Some(game.open_replay(path)?),
         None => None,
@@ -114,47 +115,23 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     // The shell around the game: title menu, HUD, pause (Escape), settings saved in the
     // player's config folder; `run_game` sets the input map from the actions and settings.
     game.use_shell_hud();
-    let config = WindowConfig {
+    let play = WindowedPlay {
         title: format!("Candela playground — {}", args.level.display()),
-        show_stats: args.stats,
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::from_env("playground")?,
+        app: "playground".into(),
         cues: args
             .screenshots
             .as_deref()
-            .map(|dir| screenshot_cues(dir, &game.level_id()))
+            .map(|dir| play_shots(dir, &game.level_id(), 30, 60))
             .unwrap_or_default(),
-    };
-    let environment = game.environment();
-    // The tracer `auto` picks, at 640×360 and 1 spp, holding 30 fps by workload scaling.
-    let render = RenderConfig {
-        tracer: TracerChoice::Auto,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        stats: args.stats,
         // Denoised as Reflect is: the row kernels take 5–10 ms a frame at 320×180 on two cores
         // (docs/PERFORMANCE.md, "Denoiser time per frame"), and a 1-spp film in motion is noise.
         denoise: true,
-        ..RenderConfig::cpu(640, 360)
     };
-    let report = run_game(config, shell, render, environment, &mut game)?;
+    // The shell's window with the render configuration game binaries share (the tracer
+    // `auto` picks, 640×360 at 1 spp, holding 30 fps by workload scaling).
+    let report = play_windowed(&level, &mut game, play)?;
     Ok(format!("{} frames", report.frames))
-}
-
-/// The title menu, then a few seconds of play, each as a screenshot in `dir`; then quit.
-fn screenshot_cues(dir: &Path, level: &str) -> Vec<Cue> {
-    vec![
-        Cue::screenshot(30, dir.join("title.png")),
-        Cue::input(
-            2,
-            ShellInput::Start(LevelStart {
-                level: level.to_string(),
-                checkpoint: None,
-            }),
-        ),
-        Cue::screenshot(60, dir.join("play.png")),
-        Cue::input(2, ShellInput::Quit),
-    ]
 }
 
 fn headless(

@@ -12,7 +12,7 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use anyhow::Context;
-use candela::app::edit::EditTarget;
+use candela::app::edit::{EditHooks, EditTarget};
 use candela::app::{
     Engine, Environment, FlyCamera, FrameInput, Game, InputMap, SetupError, SpawnedLevel,
     WindowConfig, WindowReport, fly_camera_system, run_window,
@@ -145,13 +145,19 @@ struct ViewGame {
     spawned: SpawnedLevel,
 }
 
-impl Game for ViewGame {
+impl EditHooks for ViewGame {
     fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
         Some((self.edit.clone(), self.spawned.clone()))
     }
 
     fn level_respawned(&mut self, _engine: &mut Engine, spawned: &SpawnedLevel) {
         self.spawned = spawned.clone();
+    }
+}
+
+impl Game for ViewGame {
+    fn editor(&mut self) -> Option<&mut dyn EditHooks> {
+        Some(self)
     }
 
     fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {

@@ -5,8 +5,9 @@
 //! document ([`EditWorld`]), the free editor camera ([`EditorCamera`]), the transform
 //! [`Gizmo`], the selection highlight and the toolbar.
 //!
-//! [`EditTarget`] (what a game hands the editor) is plain data the `Game` trait names, so it
-//! lives in the runner (`app/runner/edit_target.rs`) and is re-exported here.
+//! [`EditHooks`] (what a game offers the editor, through `Game::editor`) and [`EditTarget`]
+//! (the level it hands over) live in the runner (`app/runner/edit_target.rs`: the first-person
+//! game, a layer below, implements them) and are re-exported here.
 //!
 //! One file per job: `world` (the world in step),
 //! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass), `recover` (the recovery file), `view_input` (pointer and keys
@@ -23,7 +24,7 @@ mod recover;
 mod view_input;
 mod world;
 
-pub use crate::app::runner::{BuildWorld, CheckWorld, EditTarget};
+pub use crate::app::runner::{BuildWorld, CheckWorld, EditHooks, EditTarget};
 pub use box_select::{BoxDrag, MIN_BOX_POINTS, instances_in};
 pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
 pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};

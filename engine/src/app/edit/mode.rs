@@ -30,7 +30,7 @@ const MESSAGES: usize = 5;
 /// What one pass of the editor did, for the runner.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct EditFrame {
-    /// The level was spawned again: the game's handles are stale (`Game::level_respawned`).
+    /// The level was spawned again: the game's handles are stale (`EditHooks::level_respawned`).
     pub respawned: bool,
     /// A save was written this pass.
     pub saved: bool,

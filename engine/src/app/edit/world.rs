@@ -16,8 +16,6 @@
 //! Main thread, outside the engine's frame. Must not: touch the renderer (everything reaches it
 //! through the next commit) or the document.
 
-use std::collections::HashSet;
-
 use glam::{Vec3, Vec4Swizzles};
 use hecs::Entity;
 
@@ -25,7 +23,7 @@ use crate::app::runner::EditTarget;
 use crate::app::runner::Engine;
 use crate::app::runner::SpawnedLevel;
 use crate::assets::{AssetError, Level, SceneDesc};
-use crate::ecs::{ModelHandle, Parent, Restyled, Static, Transform};
+use crate::ecs::{Restyled, Static, Transform};
 use crate::editor::Touch;
 use crate::level::PlayableLevel;
 use crate::sim::physics::RigidBody;
@@ -231,61 +229,4 @@ fn model_bounds(level: &PlayableLevel) -> Vec<Option<Bounds>> {
         .iter()
         .map(|i| per_model.get(i.model).copied().flatten())
         .collect()
-}
-
-impl Engine {
-    /// Despawns what [`Engine::spawn_level`] spawned (`spawned`): the instances' entities, the
-    /// characters, and every entity parented to one of them (laser beam prisms, characters'
-    /// models); stops the level's logic; turns back on the light groups that `next` (the level
-    /// about to be spawned) or the old entities use, so the next spawn starts from the level's
-    /// own `lights_off`.
-    pub fn despawn_level(&mut self, spawned: &SpawnedLevel, next: &PlayableLevel) {
-        let mut doomed: HashSet<Entity> = spawned.entities.iter().copied().collect();
-        for c in spawned.characters.values() {
-            doomed.insert(c.body);
-            doomed.insert(c.visual);
-        }
-        loop {
-            let children: Vec<Entity> = self
-                .world
-                .query::<(Entity, &Parent)>()
-                .iter()
-                .filter(|(e, p)| doomed.contains(&p.0) && !doomed.contains(e))
-                .map(|(e, _)| e)
-                .collect();
-            if children.is_empty() {
-                break;
-            }
-            doomed.extend(children);
-        }
-        let mut groups: HashSet<u32> = next
-            .scene
-            .instances
-            .iter()
-            .filter_map(|i| i.light_group)
-            .collect();
-        groups.extend(next.gameplay.lights_off.iter().copied());
-        for e in &doomed {
-            if let Ok(g) = self.world.get::<&crate::ecs::LightGroup>(*e) {
-                groups.insert(g.0);
-            }
-        }
-        for e in doomed {
-            let _ = self.world.despawn(e);
-        }
-        for group in groups {
-            self.upkeep.set_light_group(group, true);
-        }
-        self.logic = Default::default();
-    }
-
-    /// [`Engine::spawn_level`], reusing `models` (the handles a previous spawn registered for
-    /// the same model list) instead of registering the level's models again.
-    pub fn spawn_level_with(
-        &mut self,
-        level: &PlayableLevel,
-        models: Option<Vec<ModelHandle>>,
-    ) -> SpawnedLevel {
-        self.spawn_level_models(level, models)
-    }
 }

@@ -1,11 +1,36 @@
-//! Test harnesses over the headless engine: the soak (`soak`: any game played by the seeded
-//! monkey for many frames, watched for what must never happen) and the ghosting measurement
-//! ([`measure_ghosting`]: a converging policy's error on a fast-moving object and its trail).
+//! The game harness: every headless mode a game binary offers, configured by the game
+//! ([`HarnessGame`]: its levels, a fresh game for one, its recordings) so that Reflect, the
+//! playground and the next game run the same loops — a recording replayed headless for the
+//! game's one-line summary and exit code ([`play_replay`]), timed in real time
+//! ([`bench_replay`]), the soak over the game's levels ([`soak_levels`], over `soak`: any game
+//! played by the seeded monkey, watched for what must never happen), converged captures
+//! ([`capture_converged`]), the windowed screenshot runs' cues ([`play_shots`],
+//! [`tour_shots`]), play in a window inside the shell ([`play_windowed`]); [`FirstPersonLevel`], the configuration of one level played in
+//! first person (the playground's); and the ghosting measurement ([`measure_ghosting`]: a converging
+//! policy's error on a fast-moving object and its trail).
 //!
-//! Main thread (the engine's render thread renders). Must not: change the game, its level or
-//! any policy; they drive and measure.
+//! One file per job: `config` (the trait and the errors), `replay_run`, `bench`, `soak`,
+//! `soak_levels`, `capture`, `shots` (the screenshot runs' cues), `windowed`, `first_person`, `ghosting`. Main thread (the engine's render thread renders).
+//! Must not: change the game, its level or any policy (they drive and measure), or name a
+//! particular game (its summaries and tables are the game's).
 
+mod bench;
+mod capture;
+mod config;
+mod first_person;
 mod ghosting;
+mod replay_run;
+mod shots;
 pub mod soak;
+mod soak_levels;
+mod windowed;
 
+pub use bench::{BenchFigures, bench_replay, median};
+pub use capture::{SETTLE_FRAMES, capture_converged};
+pub use config::{HarnessError, HarnessGame};
+pub use first_person::FirstPersonLevel;
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
+pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
+pub use shots::{play_shots, start_cue, tour_shots};
+pub use soak_levels::{LevelSoak, soak_levels};
+pub use windowed::{WindowedPlay, play_windowed};

@@ -18,11 +18,11 @@ use crate::app::replay::ReplayError;
 use crate::app::replay::StepInput;
 use crate::app::replay::level_hash;
 use crate::app::replay::{Recorder, Replay, ReplayTarget};
-use crate::app::runner::EditTarget;
 use crate::app::runner::SpawnedLevel;
+use crate::app::runner::{EditHooks, EditTarget};
 use crate::app::runner::{Engine, Environment};
 use crate::app::runner::{Game, LevelEvent, SetupError, Step};
-use crate::app::runner::{HudInfo, LevelEntry, ShellInfo};
+use crate::app::runner::{HudInfo, LevelEntry, ShellHooks, ShellInfo};
 use crate::assets::{AssetResult, AssetRoot};
 use crate::level::{PlayableLevel, load_level};
 use crate::player::{FirstPersonConfig, FirstPersonPlayer, FocusKind};
@@ -273,6 +273,34 @@ impl Game for FirstPersonGame {
         self.own_hud
     }
 
+    fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
+        Some(self)
+    }
+
+    fn editor(&mut self) -> Option<&mut dyn EditHooks> {
+        Some(self)
+    }
+
+    fn ui(&mut self, ctx: &egui::Context) {
+        if !self.own_hud {
+            return;
+        }
+        let prompt = self.prompt();
+        let messages = self.messages();
+        egui::Area::new(egui::Id::unique("crosshair"))
+            .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+            .show(ctx, |ui| {
+                ui.vertical_centered(|ui| {
+                    ui.label(egui::RichText::new("+").size(20.0));
+                    for line in prompt.iter().chain(&messages) {
+                        ui.label(egui::RichText::new(line).size(18.0).strong());
+                    }
+                });
+            });
+    }
+}
+
+impl EditHooks for FirstPersonGame {
     fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
         Some((self.edit.clone()?, self.spawned.clone()))
     }
@@ -280,7 +308,9 @@ impl Game for FirstPersonGame {
     fn level_respawned(&mut self, _engine: &mut Engine, spawned: &SpawnedLevel) {
         self.spawned = spawned.clone();
     }
+}
 
+impl ShellHooks for FirstPersonGame {
     fn shell_info(&self) -> ShellInfo {
         let id = self.level_id();
         ShellInfo {
@@ -307,23 +337,5 @@ impl Game for FirstPersonGame {
             messages: self.messages(),
             flash: 0.0,
         }
-    }
-
-    fn ui(&mut self, ctx: &egui::Context) {
-        if !self.own_hud {
-            return;
-        }
-        let prompt = self.prompt();
-        let messages = self.messages();
-        egui::Area::new(egui::Id::unique("crosshair"))
-            .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
-            .show(ctx, |ui| {
-                ui.vertical_centered(|ui| {
-                    ui.label(egui::RichText::new("+").size(20.0));
-                    for line in prompt.iter().chain(&messages) {
-                        ui.label(egui::RichText::new(line).size(18.0).strong());
-                    }
-                });
-            });
     }
 }

@@ -1,6 +1,7 @@
 //! [`Commands`]: the work a game's hooks queue for the engine (light groups, cuts, events for
 //! the level's rules, checkpoints, level ends, unplaced sounds), carried out in order right
-//! after the hook returns (`Engine::frame`, `app/runner/frame.rs`).
+//! after the hook returns (`Engine::frame`, `app/runner/frame.rs`); and the
+//! [`ProgressEvent`]s the checkpoints, ends and finishes become, for the shell to save.
 //!
 //! Kept apart from the `Game` trait so that the engine, which holds the queue, does not depend
 //! on the trait that names the engine. Plain data, main thread. Must not: touch the world (the
@@ -85,4 +86,16 @@ impl Commands {
     pub(in crate::app) fn drain(&mut self) -> std::vec::Drain<'_, Command> {
         self.queue.drain(..)
     }
+}
+
+/// Progress a game's hooks report (`Commands::checkpoint`, `Commands::end_level`) or the level's
+/// rules reach (`LevelEvent::Ended`); the shell saves it (`Engine::take_progress_events`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ProgressEvent {
+    /// The player reached this checkpoint of the level being played.
+    Checkpoint(String),
+    /// The level ended.
+    Ended(Outcome),
+    /// The level with this id was finished while play goes on (`Commands::finish_level`).
+    Finished(String),
 }

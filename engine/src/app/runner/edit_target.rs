@@ -1,12 +1,17 @@
 //! [`EditTarget`]: what a game or tool hands the editor when F1 opens it — the level file to
 //! edit and save, the asset root its paths stay in, where the file's instances sit among the
-//! world's, and how to build the world to play from the edited file.
+//! world's, and how to build the world to play from the edited file; and [`EditHooks`], the
+//! editor's hooks a game offers through `Game::editor`.
 //!
-//! Main thread. Must not: spawn anything (`EditWorld` does).
+//! Both live in the runner, not in `app::edit`, because the first-person game (`app::play`, a
+//! layer below the editor) implements them; `app::edit` re-exports them. Main thread.
+//! Must not: spawn anything (`EditWorld` does).
 
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
+use super::engine::Engine;
+use super::spawned::SpawnedLevel;
 use crate::assets::{AssetResult, AssetRoot, Level};
 use crate::editor::{ItemRef, Problem, check_level};
 use crate::level::{PlayableLevel, compose_levels, playable_from_level};
@@ -18,6 +23,17 @@ pub type BuildWorld = Rc<dyn Fn(&Level) -> AssetResult<PlayableLevel>>;
 /// The problems that stop a save of the edited file, when the file alone is not a level (a
 /// part of a composed world checks merged with the others).
 pub type CheckWorld = Rc<dyn Fn(&Level) -> Vec<Problem>>;
+
+/// What the editor (F1, `app::edit`) asks of a game that offers a level to edit.
+pub trait EditHooks {
+    /// The level file the editor edits and what of the world is spawned now. `None`: F1
+    /// shows no editor.
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)>;
+
+    /// The level was spawned again from the edited file (opening the editor, a structural
+    /// edit); `spawned` replaces the game's handles of the level's entities.
+    fn level_respawned(&mut self, _engine: &mut Engine, _spawned: &SpawnedLevel) {}
+}
 
 /// The level the editor edits in a running game.
 #[derive(Clone)]

@@ -13,8 +13,8 @@ use hecs::World;
 
 use super::clock::FixedClock;
 use super::commands::Commands;
+use super::commands::ProgressEvent;
 use super::environment::Environment;
-use super::game_info::ProgressEvent;
 use crate::accel::Upkeep;
 use crate::app::input::ActionFrame;
 use crate::app::input::ActionSet;

@@ -8,9 +8,9 @@
 use std::time::Instant;
 
 use super::commands::Command;
+use super::commands::ProgressEvent;
 use super::engine::{Engine, EngineError};
 use super::game::{FrameInput, Game, LevelEvent, Step};
-use super::game_info::ProgressEvent;
 use super::phase::{FrameReport, Phase, PhaseTimes};
 use super::waves::waves_system;
 use super::work::FrameWork;
@@ -181,7 +181,6 @@ impl Engine {
             world: &mut self.world,
             queries: self.upkeep.queries(),
             physics: &mut self.physics,
-            input: &self.input,
             actions: &self.step_actions,
             action_set: &self.actions,
             index,

@@ -9,21 +9,24 @@
 //! `level_event` for each event of that step (phase `Steps`), all before the scene is posed
 //! and sealed. The window runner also calls `ui` while it builds the frame's overlay.
 //!
-//! The shell (`app::shell`, `run_game`) adds four hooks, all with defaults: `shell_info` (the
-//! title and levels its menus offer), `begin_level` (start a level, with `&mut Engine`, when
-//! the player picks one), `hud` (the HUD's lines, every frame) and `summary` (the ending
-//! screen). A game reports checkpoints and its own end through [`Commands::checkpoint`] and
+//! The trait keeps the core hooks only. The shell's and the editor's hooks are traits of their
+//! own ([`ShellHooks`], `shell_hooks.rs`; [`EditHooks`], `edit_target.rs`) that a game offers
+//! through [`Game::shell`] and [`Game::editor`] (`None` by default: the shell's defaults, no
+//! editor). A game reports checkpoints and its own end through [`Commands::checkpoint`] and
 //! [`Commands::end_level`]; a level's `Win`/`Lose` rule ends it too. While the shell is not
 //! playing (title, pause, settings, editor, ending) `frame` and `fixed_step` do not run.
-//! Must not: hold references into the engine between hooks (everything is lent per call).
+//!
+//! Game rules see only replayable input: [`Step`] carries the step's [`ActionFrame`] (from the
+//! devices, a recording or a replay), never the devices' state; [`FrameInput`] (per frame, not
+//! replayed) does. Must not: hold references into the engine between hooks (everything is lent
+//! per call).
 
 use hecs::World;
 
 use super::commands::Commands;
-use super::edit_target::EditTarget;
+use super::edit_target::EditHooks;
 use super::engine::Engine;
-use super::game_info::{GameSummary, HudInfo, LevelStart, ShellInfo};
-use super::spawned::SpawnedLevel;
+use super::shell_hooks::ShellHooks;
 use crate::app::input::ActionFrame;
 use crate::app::input::ActionSet;
 use crate::app::input::InputState;
@@ -66,37 +69,17 @@ pub trait Game {
     /// Under the shell it runs while playing, before the shell's HUD.
     fn ui(&mut self, _ctx: &egui::Context) {}
 
-    /// Shell: the game's name and levels for the title menu.
-    fn shell_info(&self) -> ShellInfo {
-        ShellInfo::default()
-    }
-
-    /// Shell: the player chose to play `start` (New game, Continue, a level): put the level
-    /// and the player in place (at `start.checkpoint` when given). An error returns to the
-    /// title with a notice.
-    fn begin_level(&mut self, _engine: &mut Engine, _start: &LevelStart) -> Result<(), SetupError> {
-        Ok(())
-    }
-
-    /// Shell: what the HUD shows this frame (crosshair, objective, prompt, counters).
-    fn hud(&self) -> HudInfo {
-        HudInfo::default()
-    }
-
-    /// Shell: what the ending screen shows once the level ended.
-    fn summary(&self) -> GameSummary {
-        GameSummary::default()
-    }
-
-    /// Editor (F1, `app::edit`): the level file the editor edits and what of the world is
-    /// spawned now. `None` (the default): F1 shows no editor.
-    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+    /// The shell's hooks (title menu, starting a level, HUD, ending), when the game has them;
+    /// `None` (the default): the shell shows its defaults and starts nothing.
+    fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
         None
     }
 
-    /// Editor: the level was spawned again from the edited file (opening the editor, a
-    /// structural edit); `spawned` replaces the game's handles of the level's entities.
-    fn level_respawned(&mut self, _engine: &mut Engine, _spawned: &SpawnedLevel) {}
+    /// The editor's hooks (F1, `app::edit`), when the game offers a level to edit; `None` (the
+    /// default): F1 shows no editor.
+    fn editor(&mut self) -> Option<&mut dyn EditHooks> {
+        None
+    }
 }
 
 /// A [`Game`] that is one closure run every fixed step (tools, tests, scripts).
@@ -114,9 +97,6 @@ pub struct Step<'a> {
     pub queries: Queries<'a>,
     /// Characters, carrying, bodies; stepped after `fixed_step` returns.
     pub physics: &'a mut PhysicsWorld,
-    /// The devices' state (menus, the runner); game rules read [`Step::actions`] instead,
-    /// which a replay reproduces exactly.
-    pub input: &'a InputState,
     /// This step's actions: held and pressed buttons, fixed-point axes and look motion —
     /// from the devices, or from a replay.
     pub actions: &'a ActionFrame,

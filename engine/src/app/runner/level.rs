@@ -6,10 +6,14 @@
 //! player can use), and its characters (a capsule body with the controller and the animation
 //! state machine, and a child entity drawing the skinned model).
 //!
-//! Fills a [`SpawnedLevel`] (the handles of what was spawned, by index and by name). Main thread.
-//! Must not: load files (assets did) or run systems.
+//! Fills a [`SpawnedLevel`] (the handles of what was spawned, by index and by name), and takes
+//! it down again ([`Engine::despawn_level`], before a respawn: the editor, a game restarting a
+//! level). Main thread. Must not: load files (assets did) or run systems.
+
+use std::collections::HashSet;
 
 use glam::Vec3;
+use hecs::Entity;
 
 use super::engine::Engine;
 use super::environment::Environment;
@@ -181,5 +185,62 @@ impl Engine {
             .world
             .insert_one(body, CharacterAnimation { visual, ..anim });
         Ok(SpawnedCharacter { body, visual })
+    }
+}
+
+impl Engine {
+    /// Despawns what [`Engine::spawn_level`] spawned (`spawned`): the instances' entities, the
+    /// characters, and every entity parented to one of them (laser beam prisms, characters'
+    /// models); stops the level's logic; turns back on the light groups that `next` (the level
+    /// about to be spawned) or the old entities use, so the next spawn starts from the level's
+    /// own `lights_off`.
+    pub fn despawn_level(&mut self, spawned: &SpawnedLevel, next: &PlayableLevel) {
+        let mut doomed: HashSet<Entity> = spawned.entities.iter().copied().collect();
+        for c in spawned.characters.values() {
+            doomed.insert(c.body);
+            doomed.insert(c.visual);
+        }
+        loop {
+            let children: Vec<Entity> = self
+                .world
+                .query::<(Entity, &Parent)>()
+                .iter()
+                .filter(|(e, p)| doomed.contains(&p.0) && !doomed.contains(e))
+                .map(|(e, _)| e)
+                .collect();
+            if children.is_empty() {
+                break;
+            }
+            doomed.extend(children);
+        }
+        let mut groups: HashSet<u32> = next
+            .scene
+            .instances
+            .iter()
+            .filter_map(|i| i.light_group)
+            .collect();
+        groups.extend(next.gameplay.lights_off.iter().copied());
+        for e in &doomed {
+            if let Ok(g) = self.world.get::<&LightGroup>(*e) {
+                groups.insert(g.0);
+            }
+        }
+        for e in doomed {
+            let _ = self.world.despawn(e);
+        }
+        for group in groups {
+            self.upkeep.set_light_group(group, true);
+        }
+        self.logic = Default::default();
+    }
+
+    /// [`Engine::spawn_level`], reusing `models` (the handles a previous spawn registered for
+    /// the same model list) instead of registering the level's models again.
+    pub fn spawn_level_with(
+        &mut self,
+        level: &PlayableLevel,
+        models: Option<Vec<ModelHandle>>,
+    ) -> SpawnedLevel {
+        self.spawn_level_models(level, models)
     }
 }

@@ -1,13 +1,14 @@
 //! The runner's core: the headless [`Engine`] and its frame loop ([`Engine::frame`], phase by
 //! phase, [`Phase`]), the game-facing API ([`Game`], [`Step`], [`FrameInput`],
-//! [`LevelEvent`], [`Commands`]) with the plain data its optional hooks exchange with the shell
-//! and the editor (`game_info`, `edit_target`), the fixed-step clock, the frame limiter, level
+//! [`LevelEvent`], [`Commands`], [`ProgressEvent`]), the shell's and the editor's hook traits a
+//! game may offer ([`ShellHooks`] with its plain data in `shell_hooks`, [`EditHooks`] and
+//! [`EditTarget`] in `edit_target`), the fixed-step clock, the frame limiter, level
 //! spawning, the wave deformer, the per-step settle of the query scene, the frame's work counts
 //! and timers, the stats the overlay shows, and the simulation's fingerprint
 //! ([`Engine::state_hash`]).
 //!
 //! One file per job: `clock`, `frame_limiter`, `work`, `phase`, `stats`, `waves`, `commands`,
-//! `game_info`, `edit_target`, `spawned`, `game`, `environment`, `engine`, `level`, `frame`, `step_scene`,
+//! `shell_hooks`, `edit_target`, `spawned`, `game`, `environment`, `engine`, `level`, `frame`, `step_scene`,
 //! `state_hash`. Main thread (the render thread is reached only through the commit hand-off).
 //! Must not: name the shell, the editor, the window, scripts or a particular game: those are
 //! the layers above it and build on it.
@@ -20,9 +21,9 @@ mod environment;
 mod frame;
 mod frame_limiter;
 mod game;
-mod game_info;
 mod level;
 mod phase;
+mod shell_hooks;
 mod spawned;
 mod state_hash;
 mod stats;
@@ -31,14 +32,14 @@ mod waves;
 mod work;
 
 pub use clock::FixedClock;
-pub use commands::{Command, Commands};
-pub use edit_target::{BuildWorld, CheckWorld, EditTarget};
+pub use commands::{Command, Commands, ProgressEvent};
+pub use edit_target::{BuildWorld, CheckWorld, EditHooks, EditTarget};
 pub use engine::{Engine, EngineError};
 pub use environment::Environment;
 pub use frame_limiter::FrameLimiter;
 pub use game::{FrameInput, Game, LevelEvent, SetupError, Step};
-pub use game_info::{GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo};
 pub use phase::{FrameReport, Phase, PhaseTimes};
+pub use shell_hooks::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellHooks, ShellInfo};
 pub use spawned::{SpawnedCharacter, SpawnedLevel};
 pub use stats::FrameStats;
 pub use waves::{Waves, waves_system};

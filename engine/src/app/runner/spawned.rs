@@ -2,7 +2,7 @@
 //! and by name, and the two entities of a level character ([`SpawnedCharacter`]).
 //!
 //! Kept apart from the spawning so that the `Game` hooks that receive it
-//! (`Game::level_respawned`) do not depend on the engine's spawning code. Plain data, main
+//! (`EditHooks::level_respawned`) do not depend on the engine's spawning code. Plain data, main
 //! thread. Must not: spawn or despawn anything.
 
 use std::collections::HashMap;

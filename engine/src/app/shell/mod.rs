@@ -8,9 +8,10 @@
 //! screen's model, pure), `files` (settings and progress files, notices of corrupt ones),
 //! `cues` (scripted input), `run` (the per-frame glue), `theme` (the look), `title`, `hud`,
 //! `pause` (with the editor placeholder), `settings_screen`, `ending` (egui screens) and
-//! `headless`. What a game tells the shell ([`ShellInfo`], [`HudInfo`], [`GameSummary`], …) is
-//! plain data the `Game` trait names, so it lives in the runner (`app/runner/game_info.rs`)
-//! and is re-exported here. Main thread. Must not: render or own the window (the window runner
+//! `headless`. The hooks a game offers the shell ([`ShellHooks`], through `Game::shell`) and
+//! the data they carry ([`ShellInfo`], [`HudInfo`], [`GameSummary`], …) live in the runner
+//! (`app/runner/shell_hooks.rs`: the first-person game, a layer below, implements them) and
+//! are re-exported here. Main thread. Must not: render or own the window (the window runner
 //! does), or use `app`'s `window` or `harness` (the layers after it).
 
 mod cues;
@@ -27,7 +28,7 @@ mod theme;
 mod title;
 
 pub use crate::app::runner::{
-    GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellInfo,
+    GameSummary, HudInfo, LevelEntry, LevelStart, ProgressEvent, ShellHooks, ShellInfo,
 };
 pub use cues::{Cue, CueAction, EditorCue};
 pub use ending::clock_text;

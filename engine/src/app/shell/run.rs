@@ -1,7 +1,7 @@
 //! [`ShellRun`]: the shell around a [`Game`], one per run, driven by the window runner or
 //! headless ([`super::run_headless`]) with the same calls per frame:
 //! `before_frame` (scripted cues, rebinding presses, the pause and editor actions, the
-//! transitions and their effects: `Game::begin_level`, progress saves; settings applied) →
+//! transitions and their effects: `ShellHooks::begin_level`, progress saves; settings applied) →
 //! `ui` (the current screen in egui) → `after_ui` (the screen's choice carried out; settings
 //! applied live and saved) → `Engine::frame` → `after_frame` (play time, checkpoints and the
 //! level's end from `Engine::take_progress_events`).
@@ -91,7 +91,7 @@ impl ShellRun {
     pub fn new(
         config: ShellConfig,
         engine: &mut Engine,
-        game: &dyn Game,
+        game: &mut dyn Game,
         runner_keys: InputMap,
     ) -> Self {
         let files = PlayerFiles::load(config.dirs, engine.actions());
@@ -100,7 +100,9 @@ impl ShellRun {
             state: ShellState::new(),
             files,
             editor,
-            info: game.shell_info(),
+            info: game
+                .shell()
+                .map_or_else(ShellInfo::default, |s| s.shell_info()),
             runner_keys,
             applied: None,
             cues: config.cues.into(),
@@ -194,7 +196,7 @@ impl ShellRun {
             self.editor.draft.vsync = !self.editor.draft.vsync;
         }
         self.carry_out(engine, game);
-        self.hud = game.hud();
+        self.hud = game.shell().map_or_else(HudInfo::default, |s| s.hud());
         self.apply_settings(engine);
     }
 
@@ -353,7 +355,11 @@ impl ShellRun {
     fn effect(&mut self, effect: ShellEffect, engine: &mut Engine, game: &mut dyn Game) {
         match effect {
             ShellEffect::BeginLevel(start) => {
-                if let Err(e) = game.begin_level(engine, &start) {
+                let begun = match game.shell() {
+                    Some(hooks) => hooks.begin_level(engine, &start),
+                    None => Ok(()),
+                };
+                if let Err(e) = begun {
                     log::error!("level {:?} cannot start: {e}", start.level);
                     self.files.notices.push(Notice {
                         title: format!("Level {} cannot start", start.level),
@@ -370,7 +376,9 @@ impl ShellRun {
                     let level = start.level.clone();
                     self.files.progress.finish_level(&level);
                 }
-                self.summary = game.summary();
+                self.summary = game
+                    .shell()
+                    .map_or_else(GameSummary::default, |s| s.summary());
                 self.files.save_progress();
             }
             ShellEffect::SaveProgress => {

@@ -49,7 +49,7 @@ pub enum ShellInput {
 /// What the runner must do after a transition.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ShellEffect {
-    /// Ask the game to set this level up (`Game::begin_level`).
+    /// Ask the game to set this level up (`ShellHooks::begin_level`).
     BeginLevel(LevelStart),
     /// Record the level's end in the progress save.
     RecordEnd(Outcome),

@@ -127,7 +127,7 @@ impl<'g> WindowApp<'g> {
             self.shell = Some(ShellRun::new(
                 shell,
                 &mut engine,
-                &*self.game,
+                &mut *self.game,
                 self.config.input.clone(),
             ));
         }
@@ -361,8 +361,9 @@ impl<'g> WindowApp<'g> {
         };
         if edit_frame.respawned
             && let Some(edit) = self.edit.as_ref()
+            && let Some(hooks) = game.editor()
         {
-            game.level_respawned(engine, edit.world.spawned());
+            hooks.level_respawned(engine, edit.world.spawned());
         }
         let shot = self.shell.as_mut().and_then(ShellRun::take_screenshot);
         if let Some(path) = shot.clone() {

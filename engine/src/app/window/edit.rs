@@ -1,8 +1,8 @@
 //! The window runner's editor hook: turning [`EditMode`] on and off as the shell's Editor
 //! screen (F1 under the shell) or, without the shell (`view`), F1 asks. The editor is opened
-//! the first time from `Game::edit_target`; a game without one gets the shell's placeholder.
+//! the first time from the game's `EditHooks::edit_target` (`Game::editor`); a game without one gets the shell's placeholder.
 //! Turning it on frees the mouse and, without the shell, holds the engine (`set_paused`);
-//! whenever the editor spawns the level again the game hears it (`Game::level_respawned`).
+//! whenever the editor spawns the level again the game hears it (`EditHooks::level_respawned`).
 //!
 //! Main thread. Must not: draw (the editor draws in the overlay pass, `app.rs`).
 
@@ -28,7 +28,7 @@ impl WindowApp<'_> {
         let active = self.edit.as_ref().is_some_and(EditMode::active);
         if want && !active {
             if self.edit.is_none() && !self.edit_unavailable {
-                match self.game.edit_target() {
+                match self.game.editor().and_then(|hooks| hooks.edit_target()) {
                     Some((target, spawned)) => match EditMode::open(target, spawned) {
                         Ok(edit) => self.edit = Some(edit),
                         Err(e) => {
@@ -49,9 +49,10 @@ impl WindowApp<'_> {
                 Some(edit) => {
                     running.set_captured(false);
                     let frame = edit.enter(&mut running.engine);
-                    if frame.respawned {
-                        self.game
-                            .level_respawned(&mut running.engine, edit.world.spawned());
+                    if frame.respawned
+                        && let Some(hooks) = self.game.editor()
+                    {
+                        hooks.level_respawned(&mut running.engine, edit.world.spawned());
                     }
                 }
                 None => self.editing = false,

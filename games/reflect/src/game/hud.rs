@@ -4,10 +4,13 @@
 //! panel under the crosshair: make a mirror, or only turn it back when it is one), the
 //! messages of what just happened with the send-back's flash, and the ending's summary.
 //!
-//! Main thread, the shell's HUD and ending hooks. Must not: change anything (reads only).
+//! Also the rest of Reflect's shell hooks ([`ShellHooks`]): the chamber select and starting a
+//! chamber (which only notes it; the next fixed step puts the player there).
+//!
+//! Main thread, the shell's hooks. Must not: change anything but the chamber to start.
 
-use candela::app::shell::{GameSummary, HudInfo};
-use candela::app::{Game, TOO_FAR};
+use candela::app::shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellHooks, ShellInfo};
+use candela::app::{SetupError, TOO_FAR};
 
 use super::ReflectGame;
 
@@ -89,5 +92,46 @@ impl ReflectGame {
                 format!("Sent back by lasers  {}", self.sent_back),
             ],
         }
+    }
+}
+
+impl ShellHooks for ReflectGame {
+    fn shell_info(&self) -> ShellInfo {
+        ShellInfo {
+            title: "Reflect".into(),
+            subtitle: "Mirrors, lasers and glass in five test chambers".into(),
+            levels: self
+                .world
+                .chambers
+                .iter()
+                .enumerate()
+                .map(|(i, c)| LevelEntry {
+                    id: c.id.clone(),
+                    name: format!("{} · {}", i + 1, c.name),
+                })
+                .collect(),
+            finished_only: true,
+        }
+    }
+
+    fn hud(&self) -> HudInfo {
+        self.hud_info()
+    }
+
+    fn summary(&self) -> GameSummary {
+        self.ending_summary()
+    }
+
+    fn begin_level(
+        &mut self,
+        _engine: &mut candela::app::Engine,
+        start: &LevelStart,
+    ) -> Result<(), SetupError> {
+        let index = self
+            .world
+            .chamber_index(&start.level)
+            .ok_or_else(|| format!("Reflect has no chamber {:?}", start.level))?;
+        self.pending_start = Some(index);
+        Ok(())
     }
 }

@@ -3,17 +3,15 @@
 //! (finishing the one behind them), the HUD, the chamber select and the ending's summary.
 //!
 //! The gun's arming and firing and the carried cube's turn are in `gun.rs`; the messages,
-//! flash and sounds of puzzle events in `feedback.rs`; the HUD and the ending's summary in
-//! `hud.rs`.
+//! flash and sounds of puzzle events in `feedback.rs`; the shell's hooks (chamber select,
+//! starting a chamber, the HUD, the ending's summary) in `hud.rs`; the editor's hooks here.
 //!
 //! Main thread, inside the engine's hooks (`candela::app::Game`). Must not: read devices (the
 //! step's actions come from the devices or a replay alike) or reach into the renderer.
 
-use candela::app::edit::EditTarget;
-use candela::app::{
-    FirstPersonGame, Game, LevelEvent, SetupError, SpawnedLevel, Step,
-    shell::{GameSummary, HudInfo, LevelEntry, LevelStart, ShellInfo},
-};
+use candela::app::edit::{EditHooks, EditTarget};
+use candela::app::shell::ShellHooks;
+use candela::app::{FirstPersonGame, Game, LevelEvent, SetupError, SpawnedLevel, Step};
 use candela::sim::triggers::{Outcome, Phase};
 use hecs::Entity;
 
@@ -235,41 +233,6 @@ impl Game for ReflectGame {
         Ok(())
     }
 
-    /// F1 edits the chamber the player is in (or starts in): a part of the composed world.
-    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
-        let chamber = self.current.or(self.pending_start).unwrap_or(0);
-        let files = &self.world.files;
-        let target =
-            EditTarget::composed_part(&files[0], &files[1..], chamber, self.world.root.clone());
-        match target {
-            Ok(target) => Some((target, self.inner.spawned().clone())),
-            Err(e) => {
-                log::error!("the editor cannot open chamber {chamber}: {e}");
-                None
-            }
-        }
-    }
-
-    fn level_respawned(&mut self, engine: &mut candela::app::Engine, spawned: &SpawnedLevel) {
-        self.inner.set_spawned(spawned.clone());
-        self.aimed = None;
-        self.feedback.respawned();
-        self.arm_gun(engine);
-    }
-
-    fn begin_level(
-        &mut self,
-        _engine: &mut candela::app::Engine,
-        start: &LevelStart,
-    ) -> Result<(), SetupError> {
-        let index = self
-            .world
-            .chamber_index(&start.level)
-            .ok_or_else(|| format!("Reflect has no chamber {:?}", start.level))?;
-        self.pending_start = Some(index);
-        Ok(())
-    }
-
     fn fixed_step(&mut self, step: &mut Step<'_>) {
         self.now = step.index;
         self.feedback.expire(step.index);
@@ -357,29 +320,35 @@ impl Game for ReflectGame {
         self.inner.ui(ctx);
     }
 
-    fn shell_info(&self) -> ShellInfo {
-        ShellInfo {
-            title: "Reflect".into(),
-            subtitle: "Mirrors, lasers and glass in five test chambers".into(),
-            levels: self
-                .world
-                .chambers
-                .iter()
-                .enumerate()
-                .map(|(i, c)| LevelEntry {
-                    id: c.id.clone(),
-                    name: format!("{} · {}", i + 1, c.name),
-                })
-                .collect(),
-            finished_only: true,
+    fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
+        Some(self)
+    }
+
+    fn editor(&mut self) -> Option<&mut dyn EditHooks> {
+        Some(self)
+    }
+}
+
+impl EditHooks for ReflectGame {
+    /// F1 edits the chamber the player is in (or starts in): a part of the composed world.
+    fn edit_target(&self) -> Option<(EditTarget, SpawnedLevel)> {
+        let chamber = self.current.or(self.pending_start).unwrap_or(0);
+        let files = &self.world.files;
+        let target =
+            EditTarget::composed_part(&files[0], &files[1..], chamber, self.world.root.clone());
+        match target {
+            Ok(target) => Some((target, self.inner.spawned().clone())),
+            Err(e) => {
+                log::error!("the editor cannot open chamber {chamber}: {e}");
+                None
+            }
         }
     }
 
-    fn hud(&self) -> HudInfo {
-        self.hud_info()
-    }
-
-    fn summary(&self) -> GameSummary {
-        self.ending_summary()
+    fn level_respawned(&mut self, engine: &mut candela::app::Engine, spawned: &SpawnedLevel) {
+        self.inner.set_spawned(spawned.clone());
+        self.aimed = None;
+        self.feedback.respawned();
+        self.arm_gun(engine);
     }
 }

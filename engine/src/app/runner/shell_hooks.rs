@@ -1,12 +1,40 @@
-//! What a game tells the shell and the shell tells the game: the title menu's entries
-//! ([`ShellInfo`], [`LevelEntry`]), where a level starts ([`LevelStart`]), the HUD's lines
-//! ([`HudInfo`]: objective, prompt, counters, messages, a flash), the ending screen's summary
-//! ([`GameSummary`]) and the progress the game's hooks report through `Commands`
-//! ([`ProgressEvent`]).
+//! The shell's hooks ([`ShellHooks`], offered by a game through `Game::shell`) and the plain
+//! data they exchange: the title menu's entries ([`ShellInfo`], [`LevelEntry`]), where a level
+//! starts ([`LevelStart`]), the HUD's lines ([`HudInfo`]: objective, prompt, counters,
+//! messages, a flash) and the ending screen's summary ([`GameSummary`]).
 //!
-//! Plain data, main thread. Must not: hold engine state or draw anything.
+//! They live in the runner, not in `app::shell`, because the first-person game (`app::play`,
+//! a layer below the shell) implements them; `app::shell` re-exports them. Main thread.
+//! Must not: hold engine state or draw anything.
 
-use crate::sim::triggers::Outcome;
+use super::engine::Engine;
+use super::game::SetupError;
+
+/// What the shell (`app::shell`, `run_game`) asks of a game, besides the core `Game` hooks.
+/// Every hook has a default.
+pub trait ShellHooks {
+    /// The game's name and levels for the title menu.
+    fn shell_info(&self) -> ShellInfo {
+        ShellInfo::default()
+    }
+
+    /// The player chose to play `start` (New game, Continue, a level): put the level and the
+    /// player in place (at `start.checkpoint` when given). An error returns to the title with
+    /// a notice.
+    fn begin_level(&mut self, _engine: &mut Engine, _start: &LevelStart) -> Result<(), SetupError> {
+        Ok(())
+    }
+
+    /// What the HUD shows this frame (crosshair, objective, prompt, counters).
+    fn hud(&self) -> HudInfo {
+        HudInfo::default()
+    }
+
+    /// What the ending screen shows once the level ended.
+    fn summary(&self) -> GameSummary {
+        GameSummary::default()
+    }
+}
 
 /// The game as the title menu shows it.
 #[derive(Clone, Debug, PartialEq)]
@@ -99,16 +127,4 @@ pub struct GameSummary {
     pub headline: String,
     /// Lines under it (score, secrets found…).
     pub lines: Vec<String>,
-}
-
-/// Progress a game's hooks report (`Commands::checkpoint`, `Commands::end_level`) or the level's
-/// rules reach (`LevelEvent::Ended`); the shell saves it (`Engine::take_progress_events`).
-#[derive(Clone, Debug, PartialEq)]
-pub enum ProgressEvent {
-    /// The player reached this checkpoint of the level being played.
-    Checkpoint(String),
-    /// The level ended.
-    Ended(Outcome),
-    /// The level with this id was finished while play goes on (`Commands::finish_level`).
-    Finished(String),
 }

@@ -1,0 +1,96 @@
+//! Timing a game's replay in real time: [`bench_replay`] plays a recording headless with the
+//! given render configuration (the game's: tracer, size, denoising, workload scaling), each
+//! frame as long as the last one took, for at most some seconds of wall time, and measures
+//! the second half of the frames (once the scaling settled): frame time, the main thread's
+//! phases, render and denoise time, the film size and samples per pixel the scaling settles
+//! on, the emitters the light sampling holds ([`BenchFigures`]). The game's table of them is
+//! the game's.
+//!
+//! Main thread (the render thread renders). Must not: change the game.
+
+use std::path::Path;
+use std::time::Instant;
+
+use super::config::{HarnessError, HarnessGame};
+use crate::app::replay::StepInput;
+use crate::app::runner::{Engine, Game, Phase};
+use crate::render::RenderConfig;
+
+/// What one replay's run measured (medians over the second half of its frames).
+#[derive(Clone, Debug, Default)]
+pub struct BenchFigures {
+    /// Frames run.
+    pub frames: usize,
+    /// Milliseconds per frame, wall clock.
+    pub frame_ms: f64,
+    /// Milliseconds per frame of each main-thread phase, in `Phase::ALL` order.
+    pub phase_ms: Vec<f64>,
+    /// The render thread's milliseconds per frame (tracing).
+    pub render_ms: f64,
+    /// The denoiser's milliseconds per frame (its guide pass included; 0 when off).
+    pub denoise_ms: f64,
+    /// The film size the scaling settled on (the median).
+    pub film: (u32, u32),
+    /// The most samples per pixel a frame took.
+    pub spp: u32,
+    /// Emissive triangles the light sampling held (the median).
+    pub lights: u32,
+}
+
+/// The median of `v` (NaN when empty).
+pub fn median(mut v: Vec<f64>) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Plays the recording at `path` of `config`'s game with `render` for at most `seconds` of
+/// wall time (or until it finishes).
+pub fn bench_replay<C: HarnessGame>(
+    config: &C,
+    path: &Path,
+    render: RenderConfig,
+    seconds: f64,
+) -> Result<BenchFigures, HarnessError> {
+    let (replay, start) = config.open_replay(path)?;
+    let mut game = config.new_game(start);
+    let mut engine = Engine::new(render, config.environment(&game))?;
+    game.setup(&mut engine)
+        .map_err(|e| HarnessError::Setup(e.to_string()))?;
+    engine.set_step_input(StepInput::Replay(replay));
+    let begun = Instant::now();
+    let mut last = Instant::now();
+    let mut dt = 1.0 / 30.0;
+    let (mut frame_ms, mut phases, mut rendered) = (Vec::new(), Vec::new(), Vec::new());
+    while !engine.replay_finished() && begun.elapsed().as_secs_f64() < seconds {
+        let report = engine.frame(dt, &mut game)?;
+        rendered.extend(engine.rendered().into_iter().flatten());
+        let now = Instant::now();
+        dt = (now - last).as_secs_f64().min(0.1);
+        last = now;
+        frame_ms.push(dt * 1e3);
+        phases.push(report.phases);
+    }
+    let _ = engine.shutdown();
+    let late = &rendered[rendered.len() / 2..];
+    let mut figures = BenchFigures {
+        frames: frame_ms.len(),
+        frame_ms: median(frame_ms[frame_ms.len() / 2..].to_vec()),
+        render_ms: median(late.iter().map(|r| r.render_seconds * 1e3).collect()),
+        denoise_ms: median(late.iter().map(|r| r.denoise_seconds * 1e3).collect()),
+        spp: late.iter().map(|r| r.spp).max().unwrap_or(0),
+        lights: median(late.iter().map(|r| f64::from(r.lights)).collect()) as u32,
+        ..Default::default()
+    };
+    let mut films: Vec<(u32, u32)> = late.iter().map(|r| r.film_size).collect();
+    films.sort_unstable();
+    figures.film = films.get(films.len() / 2).copied().unwrap_or_default();
+    let late_phases = &phases[phases.len() / 2..];
+    figures.phase_ms = Phase::ALL
+        .iter()
+        .map(|&p| median(late_phases.iter().map(|t| t.get(p) * 1e3).collect()))
+        .collect();
+    Ok(figures)
+}
