@@ -79,7 +79,7 @@ impl GpuTracer {
     /// Uploads `scene` and builds the pipeline.
     pub fn new(context: Arc<GpuContext>, scene: &RenderScene) -> Result<Self, RenderError> {
         let device = &context.device;
-        let max_binding = context.limits.max_storage_buffer_binding_size as u64;
+        let max_binding = context.limits.max_storage_buffer_binding_size;
         let contents: [(&str, Vec<u8>); 13] = [
             ("nodes", non_empty(&scene.nodes)),
             ("blocks", non_empty::<GpuTri4>(&scene.blocks)),
@@ -195,7 +195,7 @@ impl GpuTracer {
         if !matches {
             let device = &self.context.device;
             let bytes = width as u64 * height as u64 * 16;
-            if bytes > self.context.limits.max_storage_buffer_binding_size as u64 {
+            if bytes > self.context.limits.max_storage_buffer_binding_size {
                 return Err(RenderError::BadSize {
                     width,
                     height,

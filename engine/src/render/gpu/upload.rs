@@ -98,7 +98,7 @@ impl GpuTracer {
 
     /// Replaces scene buffer `index` by one of at least `needed` bytes, keeping its contents.
     fn grow(&mut self, index: usize, needed: u64) -> Result<(), RenderError> {
-        let limit = self.context.limits.max_storage_buffer_binding_size as u64;
+        let limit = self.context.limits.max_storage_buffer_binding_size;
         let old = &self.scene_buffers[index];
         let size = (old.size() * 2).max(needed).min(limit);
         if needed > limit {
