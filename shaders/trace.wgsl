@@ -1,7 +1,7 @@
 // The path tracing pass: one invocation per pixel traces `frame.spp` samples and adds their
 // radiance to the film. Twin of engine/src/render/cpu/integrator.rs (same algorithm, same RNG
 // draws in the same order). Composed after shared/{types,bindings,rng,sampling,microfacet,
-// bsdf,texture,traverse,surface,lines}.wgsl and shared/light_tree.wgsl by
+// bsdf,texture,traverse,surface,lines,sky_view}.wgsl and shared/light_tree.wgsl by
 // engine/src/render/gpu/shaders.rs.
 
 const FAR: f32 = 3.0e38;
@@ -11,7 +11,12 @@ var<private> count_camera: u32;
 var<private> count_bounce: u32;
 var<private> count_shadow: u32;
 
+// Twin of `sky_radiance` in engine/src/render/cpu/integrator.rs. A physical sky reads the
+// sky-view table (zeros when the scene's table is empty: black, as on the CPU).
 fn sky_radiance(d: vec3<f32>) -> vec3<f32> {
+    if (frame.sky_kind == SKY_PHYSICAL) {
+        return sky_view_radiance(frame.sky_horizon.xyz, d);
+    }
     let zenith = frame.sky_zenith.xyz;
     if (frame.sky_kind != SKY_GRADIENT) {
         return zenith;

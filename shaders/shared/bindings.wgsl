@@ -26,3 +26,6 @@
 // The line emitters the camera sees prefiltered (engine/src/scene/lines.rs): MAX_LINES + 1
 // entries, the scene's first; a zero radius ends the list.
 @group(0) @binding(15) var<storage, read> lines: array<GpuLine>;
+// The physical sky's sky-view table (engine/src/scene/sky_table.rs): always SKY_VIEW_WIDTH ×
+// SKY_VIEW_HEIGHT texels, rgb radiance + padding, row-major; zeros when the sky is not physical.
+@group(0) @binding(16) var<storage, read> sky_view: array<vec4<f32>>;

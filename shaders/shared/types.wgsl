@@ -38,6 +38,10 @@ const LIGHT_NODE_TWO_SIDED: u32 = 2u;
 
 const SKY_CONSTANT: u32 = 0u;
 const SKY_GRADIENT: u32 = 1u;
+const SKY_PHYSICAL: u32 = 2u;
+// The sky-view table's nodes (engine/src/sky/sky_view.rs VIEW_WIDTH, VIEW_HEIGHT).
+const SKY_VIEW_WIDTH: u32 = 128u;
+const SKY_VIEW_HEIGHT: u32 = 129u;
 
 // Eight lanes as two vec4 halves (lanes 0-3, 4-7): the same bytes as Rust's [f32; 8], loaded
 // four lanes at a time.

@@ -160,3 +160,56 @@ fn light_tree_agrees() {
         METHOD_DEFAULT | METHOD_LIGHT_TREE,
     );
 }
+
+/// The physical sky (`SkyDesc::Physical`: the sky-view table on binding 16 read by
+/// `shaders/shared/sky_view.wgsl`, and its sun disc): a diffuse floor and a sphere in
+/// afternoon sun, the camera seeing the floor, the sphere's shadow, the horizon and the sky
+/// above it, with the sun's azimuth off the camera's axes so both sides of the table's
+/// symmetry plane are read.
+#[test]
+fn physical_sky_agrees() {
+    use candela::assets::{Material, MaterialKind, Mesh, SceneInstance, SkyDesc};
+    use candela::sky::{HAZE_TURBIDITY_3, PhysicalSky};
+    use candela_tests::{camera, icosphere, single_mesh_model};
+    use glam::Vec3;
+    let h = 20.0;
+    let floor = Mesh {
+        name: "floor".into(),
+        positions: vec![
+            Vec3::new(-h, 0.0, -h),
+            Vec3::new(-h, 0.0, h),
+            Vec3::new(h, 0.0, h),
+            Vec3::new(h, 0.0, -h),
+        ],
+        triangles: vec![[0, 1, 2], [0, 2, 3]],
+        triangle_materials: vec![0, 0],
+        ..Default::default()
+    };
+    let diffuse = |albedo: f32| Material {
+        kind: MaterialKind::Diffuse,
+        base_color: Vec3::splat(albedo),
+        ..Material::default()
+    };
+    let mut desc = SceneDesc::single(
+        single_mesh_model(floor, diffuse(0.5)),
+        camera(Vec3::new(0.0, 1.5, 6.0), Vec3::new(0.0, 1.2, 0.0), 70.0),
+    );
+    let sphere = single_mesh_model(
+        icosphere(Vec3::new(0.0, 1.0, 0.0), 1.0, 3, false),
+        diffuse(0.7),
+    );
+    desc.models.push(sphere);
+    desc.instances
+        .push(SceneInstance::placed(1, glam::Mat4::IDENTITY));
+    desc.sun = None;
+    desc.sky = SkyDesc::Physical(PhysicalSky {
+        sun_elevation_deg: 35.0,
+        sun_azimuth_deg: 230.0,
+        time: None,
+        haze: HAZE_TURBIDITY_3,
+        ozone: 1.0,
+        ground_albedo: [0.3; 3],
+        sun_scale: 1.0,
+    });
+    let _ = compare("physical sky", &desc, 32, 4);
+}

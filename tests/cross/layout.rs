@@ -252,6 +252,11 @@ fn rust_and_wgsl_constants_agree() {
         ),
         ("MATERIAL_FLAG_LINE", MATERIAL_FLAG_LINE),
         ("MAX_LINES", candela::scene::MAX_LINES as u32),
+        ("SKY_CONSTANT", SKY_CONSTANT),
+        ("SKY_GRADIENT", SKY_GRADIENT),
+        ("SKY_PHYSICAL", SKY_PHYSICAL),
+        ("SKY_VIEW_WIDTH", candela::sky::VIEW_WIDTH as u32),
+        ("SKY_VIEW_HEIGHT", candela::sky::VIEW_HEIGHT as u32),
     ] {
         assert_eq!(wgsl.get(name), Some(&value), "{name} (WGSL vs Rust)");
     }

@@ -2,7 +2,7 @@
 //! or hung: wgpu's device-lost): the frame in hand is rendered again on the CPU tracer, which
 //! renders every frame after it, and one message says so. A window's presenter, whose device
 //! is the same one, is reopened on whatever device the window can get. A scene the GPU tracer
-//! cannot render yet ([`RenderError::Unsupported`]: the physical sky) falls back the same way.
+//! cannot render ([`RenderError::Unsupported`]) falls back the same way.
 //!
 //! Owns: [`fall_back`] (is this error a lost device? then swap in the CPU tracer) and the
 //! message. Render thread only. Must not: retry the lost device (a lost wgpu device never
@@ -14,7 +14,7 @@ use super::tracer::{RenderError, Tracer};
 /// If `error` comes from a lost device (it is [`RenderError::DeviceLost`], or `tracer` says
 /// its device is lost), replaces `tracer` with a [`CpuTracer`] and returns the one message
 /// (also logged at warn level); so does [`RenderError::Unsupported`] (the GPU tracer has no
-/// twin for what the scene asks, e.g. `SkyDesc::Physical`); any other error comes back as it was.
+/// twin for what the scene asks); any other error comes back as it was.
 pub(super) fn fall_back(
     tracer: &mut Box<dyn Tracer>,
     error: RenderError,

@@ -1,7 +1,7 @@
 //! [`SkyTable`]: the physical sky's sky-view texels as the render side holds them — the CPU
-//! tracer reads them in place, the GPU tracer would upload the same vector (its WGSL twin is
-//! not written yet: it answers `RenderError::Unsupported` and the render thread hands the run
-//! to the CPU tracer, `render/device_loss.rs`).
+//! tracer reads them in place, the GPU tracer uploads the same vector (binding 16, rewritten
+//! when this table is rebuilt: `render/gpu/upload.rs`) and reads it with the WGSL twin of the
+//! lookup (`shaders/shared/sky_view.wgsl`).
 //!
 //! Any thread (plain data). Rebuilt only when the sky's description changes ([`SkyTable::
 //! update`] compares it), on the thread that owns the `RenderScene` copy (the render thread

@@ -101,7 +101,7 @@ mod script_determinism;
 mod script_format;
 mod sky_energy;
 mod sky_ephemeris;
-mod sky_gpu_fallback;
+mod sky_gpu;
 mod sky_level;
 mod sky_reference;
 mod structure_layers;

@@ -22,13 +22,6 @@ impl GpuTracer {
         u: &GpuFrameUniforms,
         units: &[u32],
     ) -> Result<Instant, RenderError> {
-        if u.sky_kind == crate::layout::SKY_PHYSICAL {
-            return Err(RenderError::Unsupported(
-                "the physical sky (sky: Physical) has no WGSL twin yet; render it with the CPU \
-                 tracer (--tracer cpu)"
-                    .into(),
-            ));
-        }
         if u.width == 0 || u.height == 0 {
             return Err(RenderError::BadSize {
                 width: u.width,

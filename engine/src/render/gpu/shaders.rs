@@ -33,6 +33,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/traverse.wgsl"),
     shader!("shared/surface.wgsl"),
     shader!("shared/lines.wgsl"),
+    shader!("shared/sky_view.wgsl"),
 ];
 
 /// The path tracing pass (entry point `trace_main`).

@@ -27,10 +27,13 @@ pub struct GpuTracer {
     pub(super) pipeline: wgpu::ComputePipeline,
     pub(super) layout: wgpu::BindGroupLayout,
     /// Uniforms, then the nine scene buffers (bindings 0..=9), then the light tree's nodes and
-    /// lookup (bindings 13 and 14) and the line emitters (15, rewritten whole on each update):
-    /// binding [`scene_binding`]`(i)` of each index `i`.
+    /// lookup (bindings 13 and 14), the line emitters (15, rewritten whole on each update) and
+    /// the sky-view table (16, rewritten when the scene's table changes): binding
+    /// [`scene_binding`]`(i)` of each index `i`.
     pub(super) scene_buffers: Vec<wgpu::Buffer>,
     pub(super) film: Option<FilmBuffers>,
+    /// The sky-view texels last written to binding 16 (compared by pointer on each update).
+    pub(super) sky_texels: Arc<Vec<[f32; 4]>>,
     pub(super) samples: u32,
     /// Created on first use by `trace_rays` (see `ray_batch.rs`).
     pub(super) ray_batch: Option<super::ray_batch::RayBatchPipeline>,
@@ -46,7 +49,7 @@ pub(super) struct FilmBuffers {
     pub(super) bind_group: wgpu::BindGroup,
 }
 
-/// The binding of `scene_buffers[index]`: 0..=9, then 13, 14, 15 (10..=12 are the film's).
+/// The binding of `scene_buffers[index]`: 0..=9, then 13..=16 (10..=12 are the film's).
 pub(super) fn scene_binding(index: usize) -> u32 {
     if index <= 9 {
         index as u32
@@ -76,8 +79,8 @@ impl GpuTracer {
     /// Uploads `scene` and builds the pipeline.
     pub fn new(context: Arc<GpuContext>, scene: &RenderScene) -> Result<Self, RenderError> {
         let device = &context.device;
-        let max_binding = context.limits.max_storage_buffer_binding_size as u64;
-        let contents: [(&str, Vec<u8>); 12] = [
+        let max_binding = context.limits.max_storage_buffer_binding_size;
+        let contents: [(&str, Vec<u8>); 13] = [
             ("nodes", non_empty(&scene.nodes)),
             ("blocks", non_empty::<GpuTri4>(&scene.blocks)),
             ("instances", non_empty(&scene.instances)),
@@ -90,6 +93,7 @@ impl GpuTracer {
             ("light nodes", non_empty(&scene.lights.tree.nodes)),
             ("light lookup", non_empty(&scene.lights.tree.lookup)),
             ("lines", line_bytes(scene)),
+            ("sky view", super::upload::sky_bytes(scene)),
         ];
         for (name, bytes) in &contents {
             if bytes.len() as u64 > max_binding {
@@ -144,6 +148,7 @@ impl GpuTracer {
         entries.push(storage(13, true));
         entries.push(storage(14, true));
         entries.push(storage(15, true));
+        entries.push(storage(16, true));
         let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
             label: Some("trace bindings"),
             entries: &entries,
@@ -175,6 +180,7 @@ impl GpuTracer {
             layout,
             scene_buffers,
             film: None,
+            sky_texels: Arc::clone(&scene.sky.texels),
             samples: 0,
             ray_batch: None,
         })
@@ -189,7 +195,7 @@ impl GpuTracer {
         if !matches {
             let device = &self.context.device;
             let bytes = width as u64 * height as u64 * 16;
-            if bytes > self.context.limits.max_storage_buffer_binding_size as u64 {
+            if bytes > self.context.limits.max_storage_buffer_binding_size {
                 return Err(RenderError::BadSize {
                     width,
                     height,

@@ -2,16 +2,33 @@
 //!
 //! Owns: mapping each write to its storage buffer and byte range, and growing a buffer (to at
 //! least twice its size, within the device's binding limit) when a write ends past it, copying
-//! the old contents on the GPU and rebinding. Render thread only.
+//! the old contents on the GPU and rebinding; rewriting the sky-view table (binding 16) when the
+//! scene's `SkyTable` was rebuilt. Render thread only.
 //! Must not: decide what to write (the commit says).
 
 use super::tracer::GpuTracer;
 use crate::render::tracer::RenderError;
 use crate::scene::RenderScene;
 use crate::scene::SceneWrite;
+use crate::sky::{VIEW_HEIGHT, VIEW_WIDTH};
 
 /// Index of the line emitters' buffer in `GpuTracer::scene_buffers` (binding 15).
 const LINES: usize = 12;
+/// Index of the sky-view table's buffer in `GpuTracer::scene_buffers` (binding 16).
+const SKY_VIEW: usize = 13;
+
+/// The sky-view buffer's contents (binding 16): always `VIEW_WIDTH × VIEW_HEIGHT` texels, the
+/// scene's table, or zeros (a black sky, as the CPU tracer sees an empty table) when the sky is
+/// not physical or its table is not the full size.
+pub(super) fn sky_bytes(scene: &RenderScene) -> Vec<u8> {
+    let len = VIEW_WIDTH * VIEW_HEIGHT;
+    let texels = scene.sky.texels.as_slice();
+    if texels.len() == len {
+        bytemuck::cast_slice(texels).to_vec()
+    } else {
+        vec![0; len * std::mem::size_of::<[f32; 4]>()]
+    }
+}
 
 /// The write of `data` at element `first` of binding `index`: the binding, the byte offset (from
 /// the element type's size) and the bytes.
@@ -24,8 +41,8 @@ fn at<T: bytemuck::Pod>(index: usize, first: u32, data: &[T]) -> (usize, u64, &[
 }
 
 impl GpuTracer {
-    /// Applies `writes` (already applied to `scene`) to the GPU buffers, and rewrites the line
-    /// emitters from `scene`.
+    /// Applies `writes` (already applied to `scene`) to the GPU buffers, rewrites the line
+    /// emitters from `scene`, and the sky-view table when `scene.sky` holds another one.
     pub(super) fn upload(
         &mut self,
         scene: &RenderScene,
@@ -66,6 +83,13 @@ impl GpuTracer {
                 .queue
                 .write_buffer(&self.scene_buffers[LINES], 0, &lines);
         }
+        if !std::sync::Arc::ptr_eq(&self.sky_texels, &scene.sky.texels) {
+            let sky = sky_bytes(scene);
+            self.context
+                .queue
+                .write_buffer(&self.scene_buffers[SKY_VIEW], 0, &sky);
+            self.sky_texels = std::sync::Arc::clone(&scene.sky.texels);
+        }
         if grown {
             self.rebind();
         }
@@ -74,7 +98,7 @@ impl GpuTracer {
 
     /// Replaces scene buffer `index` by one of at least `needed` bytes, keeping its contents.
     fn grow(&mut self, index: usize, needed: u64) -> Result<(), RenderError> {
-        let limit = self.context.limits.max_storage_buffer_binding_size as u64;
+        let limit = self.context.limits.max_storage_buffer_binding_size;
         let old = &self.scene_buffers[index];
         let size = (old.size() * 2).max(needed).min(limit);
         if needed > limit {
@@ -99,6 +123,7 @@ impl GpuTracer {
                     "light nodes",
                     "light lookup",
                     "lines",
+                    "sky view",
                 ][index],
             ),
             size: size.next_multiple_of(4),
