@@ -209,16 +209,28 @@ fn path_uses(
     uses
 }
 
-#[test]
-fn top_level_modules_only_use_the_layers_below_them() {
-    let layers = layers();
-    assert!(
-        layers.len() >= 12,
-        "lib.rs declares only {layers:?}: the layer list was not read"
-    );
-    let position = |m: &str| layers.iter().position(|l| l == m);
+/// What [`layer_problems`] checks: the modules under `dir` (below `src()`), whose layer is the
+/// path part at `level` (0: `src/<layer>`, 1: `src/app/<layer>`), in `layers` order, declared by
+/// `toc` (skipped: its re-exports name every layer).
+struct Layering<'a> {
+    dir: PathBuf,
+    toc: &'a [&'a str],
+    level: usize,
+    layers: &'a [String],
+    /// The declaring file, for messages.
+    declared_in: &'a str,
+    /// The layers a file uses, from its code lines and its module's depth below the crate.
+    uses: fn(&[String], usize) -> Vec<(usize, String)>,
+    /// Whether a used name that is not a layer is a problem (a re-export hiding its layer).
+    unknown_is_a_problem: bool,
+}
+
+/// Every use of a later layer (and every undeclared layer, and unknown names when asked), and
+/// the layer-to-layer uses seen.
+fn layer_problems(l: &Layering<'_>) -> (Vec<String>, BTreeSet<(String, String)>) {
+    let position = |m: &str| l.layers.iter().position(|x| x == m);
     let mut files = Vec::new();
-    rust_files(&src(), &mut files);
+    rust_files(&l.dir, &mut files);
     let mut problems = Vec::new();
     let mut edges = BTreeSet::new();
     for file in &files {
@@ -227,14 +239,15 @@ fn top_level_modules_only_use_the_layers_below_them() {
             .iter()
             .map(|p| p.to_str().expect("utf-8 path"))
             .collect();
-        if parts == ["lib.rs"] {
+        if parts == l.toc {
             continue;
         }
-        let top = parts[0].trim_end_matches(".rs");
-        let Some(own) = position(top) else {
+        let own_name = parts[l.level].trim_end_matches(".rs");
+        let Some(own) = position(own_name) else {
             problems.push(format!(
-                "{}: module `{top}` is not declared in lib.rs",
-                relative.display()
+                "{}: module `{own_name}` is not declared in {}",
+                relative.display(),
+                l.declared_in
             ));
             continue;
         };
@@ -243,22 +256,49 @@ fn top_level_modules_only_use_the_layers_below_them() {
         let is_mod = parts.last().is_some_and(|p| *p == "mod.rs");
         let depth = parts.len() - usize::from(is_mod);
         let text = fs::read_to_string(file).expect("readable source");
-        for (line, used) in crate_uses(&code_lines(&text), depth) {
-            if used == top || used.is_empty() {
+        for (line, used) in (l.uses)(&code_lines(&text), depth) {
+            if used == own_name || used.is_empty() {
                 continue;
             }
             let Some(theirs) = position(&used) else {
-                continue; // crate::SomeReexport at the root (none today) or a macro path
+                if l.unknown_is_a_problem {
+                    problems.push(format!(
+                        "{}:{line}: `{own_name}` names `{used}`, a re-export at the root: name the module it lives in",
+                        relative.display()
+                    ));
+                }
+                continue;
             };
-            edges.insert((top.to_string(), used.clone()));
+            edges.insert((own_name.to_string(), used.clone()));
             if theirs > own {
                 problems.push(format!(
-                    "{}:{line}: `{top}` uses `{used}`, which lib.rs declares after it (a layer may use only the layers before it)",
-                    relative.display()
+                    "{}:{line}: `{own_name}` uses `{used}`, which {} declares after it (a layer may use only the layers before it)",
+                    relative.display(),
+                    l.declared_in
                 ));
             }
         }
     }
+    (problems, edges)
+}
+
+#[test]
+fn top_level_modules_only_use_the_layers_below_them() {
+    let layers = layers();
+    assert!(
+        layers.len() >= 12,
+        "lib.rs declares only {layers:?}: the layer list was not read"
+    );
+    // A crate::SomeReexport at the root (none today) or a macro path is not a layer.
+    let (problems, edges) = layer_problems(&Layering {
+        dir: src(),
+        toc: &["lib.rs"],
+        level: 0,
+        layers: &layers,
+        declared_in: "lib.rs",
+        uses: crate_uses,
+        unknown_is_a_problem: false,
+    });
     assert!(
         edges.len() > 20,
         "only {} module-to-module uses found: the path reader is broken ({edges:?})",
@@ -288,51 +328,15 @@ fn app_sub_modules_only_use_the_ones_declared_before_them() {
         layers.len() >= 8,
         "app/mod.rs declares only {layers:?}: the layer list was not read"
     );
-    let position = |m: &str| layers.iter().position(|l| l == m);
-    let mut files = Vec::new();
-    rust_files(&app, &mut files);
-    let mut problems = Vec::new();
-    let mut edges = BTreeSet::new();
-    for file in &files {
-        let relative = file.strip_prefix(src()).expect("under src");
-        let parts: Vec<&str> = relative
-            .iter()
-            .map(|p| p.to_str().expect("utf-8 path"))
-            .collect();
-        if parts == ["app", "mod.rs"] {
-            continue; // the table of contents: re-exports of every layer
-        }
-        let sub = parts[1].trim_end_matches(".rs");
-        let Some(own) = position(sub) else {
-            problems.push(format!(
-                "{}: sub-module `{sub}` is not declared in app/mod.rs",
-                relative.display()
-            ));
-            continue;
-        };
-        let is_mod = parts.last().is_some_and(|p| *p == "mod.rs");
-        let depth = parts.len() - usize::from(is_mod);
-        let text = fs::read_to_string(file).expect("readable source");
-        for (line, used) in app_uses(&code_lines(&text), depth) {
-            if used == sub || used.is_empty() {
-                continue;
-            }
-            let Some(theirs) = position(&used) else {
-                problems.push(format!(
-                    "{}:{line}: `{sub}` names `app::{used}`, a re-export at app's root: name the sub-module it lives in",
-                    relative.display()
-                ));
-                continue;
-            };
-            edges.insert((sub.to_string(), used.clone()));
-            if theirs > own {
-                problems.push(format!(
-                    "{}:{line}: `{sub}` uses `{used}`, which app/mod.rs declares after it (a sub-module of app may use only the ones before it)",
-                    relative.display()
-                ));
-            }
-        }
-    }
+    let (problems, edges) = layer_problems(&Layering {
+        dir: app,
+        toc: &["app", "mod.rs"],
+        level: 1,
+        layers: &layers,
+        declared_in: "app/mod.rs",
+        uses: app_uses,
+        unknown_is_a_problem: true,
+    });
     assert!(
         edges.len() > 10,
         "only {} sub-module-to-sub-module uses found in app: the path reader is broken ({edges:?})",

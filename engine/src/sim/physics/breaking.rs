@@ -8,8 +8,10 @@
 //! the body reaches them, so a fast boulder carries on through the wall (it never stalls on
 //! pieces that break under it), and CCD on the boulder keeps it from tunnelling through a wall
 //! that holds. A `Break` rule action breaks one at any time. Main thread, fixed step.
-//! Deterministic: breakables and bodies are visited in a fixed order. Must not: touch the ECS
-//! beyond the entity → body map (the pieces' `Transform`s follow their bodies as any others).
+//! Deterministic: breakables are visited in level order, and whether any fast body would hit a
+//! breakable does not depend on the order the bodies are tried in. Must not: touch the ECS
+//! beyond the pieces' [`super::RigidBody`] kind (their `Transform`s follow their bodies as any
+//! others).
 
 use std::collections::HashMap;
 
@@ -108,7 +110,8 @@ impl Breakables {
     }
 
     /// Breaks every standing breakable with an impact speed that a dynamic body moving at
-    /// least that fast would touch within `seconds`.
+    /// least that fast would touch within `seconds`. Costs nothing while no standing breakable
+    /// has an impact speed; otherwise the awake dynamic bodies are gathered once per step.
     pub(super) fn break_on_impact(
         &mut self,
         world: &mut World,
@@ -116,25 +119,39 @@ impl Breakables {
         handles: &HashMap<Entity, RigidBodyHandle>,
         seconds: f32,
     ) {
+        let standing = |(b, broken): &(Breakable, bool)| b.impact_speed.filter(|_| !broken);
+        let Some(slowest) = self.list.iter().filter_map(standing).reduce(f32::min) else {
+            return;
+        };
+        // (body, speed m/s) of the awake dynamic bodies fast enough for some breakable.
+        let movers: Vec<(RigidBodyHandle, f32)> = rapier
+            .active_bodies()
+            .filter(|(_, b)| b.is_dynamic())
+            .map(|(h, b)| (h, b.linvel().length()))
+            .filter(|&(_, speed)| speed >= slowest)
+            .collect();
+        if movers.is_empty() {
+            return;
+        }
         for index in 0..self.list.len() {
-            let (breakable, broken) = &self.list[index];
-            let Some(speed) = breakable.impact_speed.filter(|_| !broken) else {
+            let Some(speed) = standing(&self.list[index]) else {
                 continue;
             };
-            if impact(rapier, handles, &breakable.pieces, speed, seconds) {
+            let fast = movers.iter().filter(|(_, v)| *v >= speed).map(|(h, _)| *h);
+            if impact(rapier, handles, &self.list[index].0.pieces, fast, seconds) {
                 self.break_now(index, world, rapier, handles);
             }
         }
     }
 }
 
-/// Whether a dynamic body moving at `min_speed` or faster would touch one of `pieces`' colliders
-/// within `seconds`, its colliders swept along its velocity.
+/// Whether one of `movers` (dynamic bodies) would touch one of `pieces`' colliders within
+/// `seconds`, its colliders swept along its velocity.
 fn impact(
     rapier: &RapierWorld,
     handles: &HashMap<Entity, RigidBodyHandle>,
     pieces: &[Entity],
-    min_speed: f32,
+    mut movers: impl Iterator<Item = RigidBodyHandle>,
     seconds: f32,
 ) -> bool {
     let targets: Vec<RigidBodyHandle> = pieces
@@ -144,17 +161,11 @@ fn impact(
         .collect();
     let is_piece =
         |_: ColliderHandle, c: &Collider| c.parent().is_some_and(|p| targets.contains(&p));
-    let mut movers: Vec<(Entity, RigidBodyHandle)> =
-        handles.iter().map(|(&e, &h)| (e, h)).collect();
-    movers.sort_by_key(|(e, _)| e.to_bits());
-    movers.into_iter().any(|(_, handle)| {
+    movers.any(|handle| {
         let Some(body) = rapier.bodies.get(handle) else {
             return false;
         };
         let velocity = body.linvel();
-        if !body.is_dynamic() || body.is_sleeping() || velocity.length() < min_speed {
-            return false;
-        }
         let filter = QueryFilter::default()
             .exclude_sensors()
             .exclude_rigid_body(handle)
