@@ -76,7 +76,8 @@ pub use persist::{
 pub use play::steer;
 pub use play::{
     CARRY_PROMPT, FIRST_PERSON_GAME, FirstPersonGame, FlyCamera, Happened, MESSAGE_STEPS,
-    MOUSE_RADIANS_PER_COUNT, PAD_RADIANS_PER_SECOND, TOO_FAR, fly_camera_system, player_input,
+    MOUSE_RADIANS_PER_COUNT, PAD_RADIANS_PER_SECOND, THIRD_PERSON_GAME, TOO_FAR, ThirdPersonGame,
+    fly_camera_system, player_input,
 };
 pub use replay::{
     FORMAT_VERSION, Monkey, OLDEST_VERSION, RecordedAction, RecordedLook, Recorder, Recording,

@@ -93,6 +93,7 @@ mod pipeline_denoise;
 mod player_bad_input;
 mod player_first_person;
 mod player_third_person;
+mod player_third_person_game;
 mod present_requests;
 mod refit_degradation;
 mod scene_light_tree;

@@ -1,0 +1,174 @@
+//! [`ThirdPersonPlayer`]: a level character played in third person — the controller
+//! (`third_person`), the follow camera (`follow_camera`) and what the character can use.
+//!
+//! Each fixed step it turns the follow camera by the look input, moves the character relative
+//! to the camera, places its camera entity, and finds the usable the character faces: the
+//! nearest instance with a `Usable` whose origin is within [`ThirdPersonPlayer::reach_m`] of the
+//! character's centre (horizontally) and in front of it (within 70° of its heading or of the
+//! camera's view). A `use` press uses it. Usables are found by their place, not by a ray, so a
+//! lever seen past the character's own shoulder is usable as soon as the character stands at it.
+//!
+//! Main thread, in the game's fixed step, before physics. Must not: read devices (its input is
+//! a `PlayerInput`), move the body itself (the physics controller does), or know the runner.
+//! Units: metres, seconds, radians; yaw 0 looks along −Z, positive turns right.
+
+use glam::Vec3;
+use hecs::{Entity, World};
+
+use super::follow_camera::{CameraPose, FollowCamera};
+use super::input::PlayerInput;
+use super::third_person::ThirdPersonController;
+use crate::ecs::{CameraRig, Transform};
+use crate::extract::RenderCamera;
+use crate::sim::animation::{CharacterAnimation, heading_direction};
+use crate::sim::physics::PhysicsWorld;
+use crate::sim::triggers::Usable;
+
+/// Cosine of the widest angle between the character's heading (or the camera's view) and a
+/// usable it can use (70°).
+const FACING_COS: f32 = 0.342;
+
+/// What one step of the player did.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ThirdPersonStep {
+    /// The event of the usable used this step (for `Commands::send_event`).
+    pub used: Option<String>,
+    /// The camera's pose after the step.
+    pub camera: Option<CameraPose>,
+}
+
+/// A level character driven in third person.
+#[derive(Clone, Debug)]
+pub struct ThirdPersonPlayer {
+    /// The character's capsule (`CharacterInput`, `CharacterAnimation`).
+    pub body: Entity,
+    /// Its drawn model (skipped by the camera's probes).
+    pub visual: Entity,
+    /// The entity the renderer looks through (`Transform`, `CameraRig`).
+    pub camera: Entity,
+    pub follow: FollowCamera,
+    pub controller: ThirdPersonController,
+    /// How far from the character's centre (horizontally) a usable's origin may be, metres.
+    pub reach_m: f32,
+    focus: Option<(Entity, Usable)>,
+}
+
+impl ThirdPersonPlayer {
+    /// Plays the character `body` (drawn by `visual`) in third person: spawns the camera
+    /// entity and turns the follow camera to look the way `view` looks (a level's camera).
+    pub fn spawn(world: &mut World, body: Entity, visual: Entity, view: &RenderCamera) -> Self {
+        let ahead = view.forward();
+        let mut follow = FollowCamera::default();
+        if ahead.x != 0.0 || ahead.z != 0.0 {
+            follow.yaw_rad = ahead.x.atan2(-ahead.z).rem_euclid(std::f32::consts::TAU);
+        }
+        let rig = CameraRig {
+            vertical_fov: view.vertical_fov_radians(),
+            ..CameraRig::default()
+        };
+        let camera = world.spawn((Transform::IDENTITY, rig));
+        let player = Self {
+            body,
+            visual,
+            camera,
+            follow,
+            controller: ThirdPersonController::default(),
+            reach_m: 1.8,
+            focus: None,
+        };
+        // Place the camera behind the character before the first step.
+        let centre = player.centre(world, None);
+        let pose = player.follow.rotation();
+        let pivot = centre + Vec3::Y * player.follow.pivot_height_m;
+        if let Ok(mut t) = world.get::<&mut Transform>(camera) {
+            t.translation = pivot + pose * Vec3::Z * player.follow.current_m;
+            t.rotation = pose;
+        }
+        player
+    }
+
+    /// The capsule's centre, metres: the simulated pose when `physics` knows the body, else
+    /// its `Transform`.
+    pub fn centre(&self, world: &World, physics: Option<&PhysicsWorld>) -> Vec3 {
+        physics
+            .and_then(|p| p.pose(self.body))
+            .map(|(position, _)| position)
+            .or_else(|| {
+                world
+                    .get::<&Transform>(self.body)
+                    .ok()
+                    .map(|t| t.translation)
+            })
+            .unwrap_or(Vec3::ZERO)
+    }
+
+    /// The character's heading, radians (yaw 0 faces −Z).
+    pub fn heading(&self, world: &World) -> f32 {
+        world
+            .get::<&CharacterAnimation>(self.body)
+            .map_or(0.0, |a| a.heading_rad)
+    }
+
+    /// The usable the character faces (its entity and prompt), as of the last step.
+    pub fn focus(&self) -> Option<&(Entity, Usable)> {
+        self.focus.as_ref()
+    }
+
+    /// One fixed step of `dt_seconds`: camera, move, focus, use.
+    pub fn step(
+        &mut self,
+        world: &mut World,
+        physics: &PhysicsWorld,
+        queries: &crate::query::Queries<'_>,
+        input: &PlayerInput,
+        dt_seconds: f32,
+    ) -> ThirdPersonStep {
+        let centre = self.centre(world, Some(physics));
+        let pose = self
+            .follow
+            .update(input.look, centre, queries, &[self.visual], dt_seconds);
+        self.controller
+            .drive(world, self.body, input, self.follow.yaw_rad, dt_seconds);
+        if let Ok(mut t) = world.get::<&mut Transform>(self.camera) {
+            t.translation = pose.position;
+            t.rotation = pose.rotation;
+        }
+        let facing = [
+            heading_direction(self.heading(world)),
+            heading_direction(self.follow.yaw_rad),
+        ];
+        self.focus = nearest_usable(world, centre, &facing, self.reach_m);
+        let used = match (&self.focus, input.use_pressed) {
+            (Some((_, usable)), true) => Some(usable.event.clone()),
+            _ => None,
+        };
+        ThirdPersonStep {
+            used,
+            camera: Some(pose),
+        }
+    }
+}
+
+/// The usable whose origin is nearest `centre` within `reach` metres horizontally and within
+/// 70° of one of the `facing` directions (unit, horizontal).
+pub fn nearest_usable(
+    world: &World,
+    centre: Vec3,
+    facing: &[Vec3],
+    reach: f32,
+) -> Option<(Entity, Usable)> {
+    let mut best: Option<(f32, Entity, Usable)> = None;
+    for (entity, usable, transform) in world.query::<(Entity, &Usable, &Transform)>().iter() {
+        let mut to = transform.translation - centre;
+        to.y = 0.0;
+        let distance = to.length();
+        if !distance.is_finite() || distance > reach {
+            continue;
+        }
+        let ahead = distance < 0.3 || facing.iter().any(|f| to.dot(*f) >= FACING_COS * distance);
+        if ahead && best.as_ref().is_none_or(|b| distance < b.0) {
+            best = Some((distance, entity, usable.clone()));
+        }
+    }
+    best.map(|(_, e, u)| (e, u))
+}
