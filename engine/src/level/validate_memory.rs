@@ -1,7 +1,7 @@
 //! The rules' memory in [`super::validate_level`]: counters (named once, each counter a rule
 //! uses declared), `Fired` naming a rule that exists, `Counter` conditions with a bound and an
 //! ordered range, `LightsOn` naming a light group some instance or beam belongs to, `SunLit`
-//! in a level with a sun, sequences with steps — and every name in `gameplay.events` waited for by some rule, so a lever that
+//! in a level with a sun (its own or a physical sky's), sequences with steps — and every name in `gameplay.events` waited for by some rule, so a lever that
 //! sends it is never wired to nothing.
 //!
 //! Any thread (reads the level only). Must not: read files or modify the level.
@@ -67,10 +67,15 @@ pub(super) fn memory(c: &mut Problems, level: &Level, groups: &HashSet<u32>) {
                 ConditionEntry::LightsOn(group) if !groups.contains(group) => Some(format!(
                     "{user} waits for light group {group}, which no instance belongs to"
                 )),
-                ConditionEntry::SunLit(volume) if level.sun.is_none() => Some(format!(
-                    "{user} asks whether the volume {volume:?} sees the sun, but the level has \
-                     no sun"
-                )),
+                ConditionEntry::SunLit(volume)
+                    if level.sun.is_none()
+                        && !matches!(level.sky, crate::assets::SkyDesc::Physical(_)) =>
+                {
+                    Some(format!(
+                        "{user} asks whether the volume {volume:?} sees the sun, but the level has \
+                         no sun (a `sun`, or a physical sky that places one)"
+                    ))
+                }
                 ConditionEntry::Sequence(steps) if steps.is_empty() => {
                     Some(format!("{user} has a sequence without steps"))
                 }

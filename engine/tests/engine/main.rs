@@ -63,6 +63,7 @@ mod editor_pick;
 mod editor_problem_select;
 mod editor_recovery;
 mod editor_save;
+mod editor_typing;
 mod editor_ui;
 mod editor_undo;
 mod editor_world;
