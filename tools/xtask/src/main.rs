@@ -1,6 +1,7 @@
 //! `cargo xtask`: the two commands of the README, and the machine set-up they need.
 //!
-//! `cargo xtask play [reflect args…]` plays Reflect in a window; `cargo xtask playground [args…]`
+//! `cargo xtask play [reflect args…]` plays Reflect in a window, `cargo xtask play its_about_time
+//! [args…]` plays It's About Time; `cargo xtask playground [args…]`
 //! plays the game platform's test level;
 //! `cargo xtask render [capture args…]` renders the Cornell box test scene to `out/cornell_box.png`;
 //! `cargo xtask test [nextest args…]` runs every test of the workspace; `cargo xtask fuzz` runs the
@@ -21,7 +22,7 @@ fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let Some(command) = args.first() else {
         eprintln!(
-            "usage: cargo xtask play | playground | render [capture args…] | test [nextest args…] | fuzz"
+            "usage: cargo xtask play [its_about_time] | playground | render [capture args…] | test [nextest args…] | fuzz"
         );
         return ExitCode::from(2);
     };
@@ -92,19 +93,19 @@ fn cargo() -> Command {
     Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
 }
 
-/// Plays Reflect in a window (title menu, chambers, ending); extra arguments go to `reflect`.
+/// The games `cargo xtask play` knows; the first is the default.
+const GAMES: [&str; 2] = ["reflect", "its_about_time"];
+
+/// Plays a game in a window (title menu, levels, ending): Reflect, or the game named first
+/// (`cargo xtask play its_about_time`); the other arguments go to the game's binary.
 fn play(extra: &[String]) -> Result<(), String> {
     packages::ensure(packages::RENDER)?;
+    let (game, extra) = match extra.first() {
+        Some(first) if GAMES.contains(&first.as_str()) => (first.as_str(), &extra[1..]),
+        _ => (GAMES[0], extra),
+    };
     let mut command = cargo();
-    command.args([
-        "run",
-        "--release",
-        "--package",
-        "reflect",
-        "--bin",
-        "reflect",
-        "--",
-    ]);
+    command.args(["run", "--release", "--package", game, "--bin", game, "--"]);
     command.args(extra);
     run(command)
 }

@@ -30,6 +30,7 @@ pub struct ThirdPersonGame {
     level: PlayableLevel,
     game_name: String,
     level_id: String,
+    actions: ActionSet,
     player: Option<ThirdPersonPlayer>,
     spawned: SpawnedLevel,
     log: Vec<(u64, Happened)>,
@@ -51,6 +52,7 @@ impl ThirdPersonGame {
             level,
             game_name: THIRD_PERSON_GAME.into(),
             level_id,
+            actions: ActionSet::standard(),
             player: None,
             spawned: SpawnedLevel::default(),
             log: Vec::new(),
@@ -63,6 +65,17 @@ impl ThirdPersonGame {
     pub fn set_replay_names(&mut self, game: &str, level_id: &str) {
         self.game_name = game.into();
         self.level_id = level_id.into();
+    }
+
+    /// The actions the game reads (the standard set by default; a game appends its own with
+    /// `ActionSet::with`). Set before `setup`; recordings carry them.
+    pub fn set_actions(&mut self, actions: ActionSet) {
+        self.actions = actions;
+    }
+
+    /// The actions the game reads.
+    pub fn actions(&self) -> &ActionSet {
+        &self.actions
     }
 
     /// What the editor (F1) edits: `None` gives the shell's placeholder.
@@ -124,27 +137,25 @@ impl ThirdPersonGame {
         self.start_input = Some(input);
     }
 
-    fn target<'a>(&'a self, set: &'a ActionSet) -> Result<ReplayTarget<'a>, ReplayError> {
+    fn target(&self) -> Result<ReplayTarget<'_>, ReplayError> {
         Ok(ReplayTarget {
             game: &self.game_name,
             level_id: &self.level_id,
             level_hash: level_hash(&self.level_path)?,
             step_hz: 60.0,
-            actions: set,
+            actions: &self.actions,
         })
     }
 
-    /// Opens the recording at `path` for this level (the standard actions at 60 steps per
+    /// Opens the recording at `path` for this level (the game's actions at 60 steps per
     /// second and the level file as it is now; anything else is refused, naming `path`).
     pub fn open_replay(&self, path: &Path) -> Result<Replay, ReplayError> {
-        let set = ActionSet::standard();
-        Replay::open(path, &self.target(&set)?)
+        Replay::open(path, &self.target()?)
     }
 
     /// A recorder of this level's steps (what [`ThirdPersonGame::open_replay`] accepts).
     pub fn recorder(&self) -> Result<Recorder, ReplayError> {
-        let set = ActionSet::standard();
-        let t = self.target(&set)?;
+        let t = self.target()?;
         Ok(Recorder::new(
             t.game,
             t.level_id,
@@ -157,7 +168,7 @@ impl ThirdPersonGame {
 
 impl Game for ThirdPersonGame {
     fn setup(&mut self, engine: &mut Engine) -> Result<(), SetupError> {
-        engine.set_actions(ActionSet::standard());
+        engine.set_actions(self.actions.clone());
         // The camera's probes query the scene in steps: the same input must give the same
         // outcome at any frame rate.
         engine.settle_every_step(true);
