@@ -1,0 +1,93 @@
+//! The `its_about_time` binary's arguments and what each mode does: play in a window inside
+//! the engine's shell (title, HUD, pause, settings, the ending), or replay a recording headless
+//! and print one summary line (exit 0 only when it reached the ending with every artifact).
+//!
+//! Owns: [`Args`] and [`run`]. Main thread. Must not: contain game rules (`game` has them).
+
+use std::path::PathBuf;
+
+use anyhow::bail;
+use candela::app::StepInput;
+use candela::app::harness::{WindowedPlay, play_shots, play_windowed, tour_shots};
+use clap::Parser;
+
+use crate::game::TimeGame;
+use crate::headless::play_replay;
+use crate::replays::{open_replay, recorder};
+use crate::world::{LEVEL_ID, RuinsWorld};
+
+/// It's About Time: WASD walk (Shift walks slowly… runs by default), mouse turns the camera
+/// (click to capture it), E uses, hold Q / R at a sun altar to turn time back / forward,
+/// Space jump, Esc pause, F1 editor.
+#[derive(Clone, Debug, Parser)]
+#[command(name = "its_about_time", version)]
+pub struct Args {
+    /// The level file (default: `assets/its_about_time/ruins.ron`).
+    #[arg(long)]
+    pub level: Option<PathBuf>,
+    /// Play this recording.
+    #[arg(long)]
+    pub replay: Option<PathBuf>,
+    /// No window: replay the recording on the CPU tracer at 16×9, print a summary line, exit
+    /// 0 only if it reached the ending with every artifact.
+    #[arg(long)]
+    pub headless: bool,
+    /// Windowed: take screenshots (title.png, then play.png) into this folder, then quit.
+    #[arg(long)]
+    pub screenshots: Option<PathBuf>,
+    /// Windowed: show the stats overlay from the start (F3 toggles it).
+    #[arg(long)]
+    pub stats: bool,
+    /// Windowed: record every fixed step played into this file (written atomically when the
+    /// window closes); play starts at once, skipping the title.
+    #[arg(long)]
+    pub record: Option<PathBuf>,
+    /// Windowed: denoise each frame before it is shown (`--denoise false`: the raw film).
+    #[arg(long, default_value_t = true, action = clap::ArgAction::Set)]
+    pub denoise: bool,
+}
+
+/// Runs what `args` asks; returns the line to print.
+pub fn run(args: &Args) -> anyhow::Result<String> {
+    let world = RuinsWorld::open(args.level.as_deref())?;
+    if args.headless {
+        let Some(replay) = &args.replay else {
+            bail!("--headless plays a recording: give --replay FILE");
+        };
+        let summary = play_replay(&world, replay)?;
+        let line = summary.line();
+        if !summary.solved() {
+            bail!(
+                "{line}: the recording {} did not reach the ending with every artifact",
+                replay.display()
+            );
+        }
+        return Ok(line);
+    }
+    let mut game = TimeGame::new(world.clone());
+    if let Some(path) = &args.replay {
+        if args.record.is_some() {
+            bail!("--record records the devices: it cannot be given with --replay");
+        }
+        game.start_with(StepInput::Replay(open_replay(&world, path)?));
+    }
+    if let Some(path) = &args.record {
+        game.start_with(StepInput::record(recorder(&world)?, path));
+    }
+    let playing_at_once = args.replay.is_some() || args.record.is_some();
+    let cues = match (&args.screenshots, playing_at_once) {
+        (Some(dir), true) => play_shots(dir, LEVEL_ID, 20, 400),
+        (Some(dir), false) => tour_shots(dir, &[LEVEL_ID.to_string()], 30, 120),
+        (None, true) => vec![candela::app::harness::start_cue(LEVEL_ID)],
+        (None, false) => Vec::new(),
+    };
+    let play = WindowedPlay {
+        title: "It's About Time".into(),
+        app: "its_about_time".into(),
+        cues,
+        stats: args.stats,
+        denoise: args.denoise,
+    };
+    let report = play_windowed(&world, &mut game, play)?;
+    Ok(format!("{} frames", report.frames))
+}
