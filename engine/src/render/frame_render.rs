@@ -100,7 +100,13 @@ pub(super) fn render_one(
 ) -> Result<Rendered, RenderError> {
     let started = Instant::now();
     scene.apply(&commit.writes, &commit.header);
-    scene.sky.update(&commit.sky);
+    // A table rebuilt in the background lands frames after the sky changed: the film restarts
+    // then (the commit's sky change already restarted it when the change came).
+    if scene.sky.update_with(&commit.sky, config.sky_rebuild)
+        && config.sky_rebuild == crate::scene::SkyRebuild::Background
+    {
+        converge.reset();
+    }
     let mut notice = None;
     if let Err(e) = tracer.update(scene, &commit.writes) {
         // A lost device: the CPU tracer reads `scene` itself and needs no update.

@@ -63,6 +63,10 @@ pub struct RenderConfig {
     /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
     /// level's; `capture --light-sampling`).
     pub light_sampling: Option<crate::assets::LightSampling>,
+    /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
+    /// table always matches the commit) or `Background` (games in play: rebuilt on a worker
+    /// thread while frames go on; `scene::SkyTable`).
+    pub sky_rebuild: crate::scene::SkyRebuild,
 }
 
 impl RenderConfig {
@@ -79,6 +83,7 @@ impl RenderConfig {
             scaling: None,
             denoise: false,
             light_sampling: None,
+            sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }
     }
 }

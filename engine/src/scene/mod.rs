@@ -30,5 +30,5 @@ pub use lines::MAX_LINES;
 pub use materials::luminance;
 pub use memory::SceneMemory;
 pub use optics::{Optics, optics_of};
-pub use sky_table::SkyTable;
+pub use sky_table::{SkyRebuild, SkyTable};
 pub use writes::{SceneHeader, SceneWrite};

@@ -7,13 +7,37 @@
 //! update`] compares it), on the thread that owns the `RenderScene` copy (the render thread
 //! when it applies a commit; the builder in `accel/flatten.rs`); a [`SkyBaker`] rebuilds only
 //! what the change needs (nothing while the sun stays in the table's elevation step,
-//! `sky::TABLE_ELEVATION_STEP_DEG`; the sky-view table alone when only the sun moved). Must not: compute
-//! the sky (`crate::sky` does) or know about commits.
+//! `sky::TABLE_ELEVATION_STEP_DEG`; the sky-view table alone when only the sun moved).
+//!
+//! Two ways to wait ([`SkyRebuild`]): `Blocking` (the default: the table always matches the
+//! commit's sky, so captures and pictures repeat bit for bit) and `Background` (games in play:
+//! a rebuild runs on a worker thread while frames go on with the table held, and the newest
+//! finished table is installed at the next update — a sun turned fast at an altar costs the
+//! render thread nothing, and the sky lags it by about one rebuild). Must not: compute the sky
+//! (`crate::sky` does) or know about commits.
 
-use std::sync::Arc;
+use std::sync::mpsc::{Receiver, TryRecvError, channel};
+use std::sync::{Arc, Mutex};
 
 use crate::assets::SkyDesc;
-use crate::sky::{PhysicalSky, SkyBaker};
+use crate::sky::{PhysicalSky, SkyBaker, table_elevation_deg};
+
+/// How [`SkyTable::update_with`] waits for a rebuild.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum SkyRebuild {
+    /// Rebuild on the spot: the table always matches the sky asked for.
+    #[default]
+    Blocking,
+    /// Rebuild on a worker thread, keeping the table held until the new one is done (the
+    /// first table of a sky, or a new atmosphere, is still built on the spot).
+    Background,
+}
+
+/// A rebuild under way on a worker thread: the sky it builds, and where the baker comes back.
+struct Rebuilding {
+    sky: PhysicalSky,
+    done: Mutex<Receiver<SkyBaker>>,
+}
 
 /// The sky-view table of the current physical sky, or nothing for the other skies.
 #[derive(Clone, Debug, Default)]
@@ -23,35 +47,159 @@ pub struct SkyTable {
     /// `sky::VIEW_WIDTH × sky::VIEW_HEIGHT` texels (layout in `sky::sky_view`); empty when the
     /// sky is not physical.
     pub texels: Arc<Vec<[f32; 4]>>,
+    /// The physical sky the texels were built for (lags `source` while a rebuild runs).
+    built: Option<PhysicalSky>,
+    rebuilding: Option<Arc<Rebuilding>>,
+}
+
+impl std::fmt::Debug for Rebuilding {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Rebuilding").field("sky", &self.sky).finish()
+    }
+}
+
+/// Whether `a` and `b` need different sky-view tables or atmospheres (not merely another sun
+/// azimuth or a sun within the same elevation step).
+fn needs_rebuild(a: &PhysicalSky, b: &PhysicalSky) -> bool {
+    let elevation = |s: &PhysicalSky| {
+        s.sun_horizontal()
+            .map(|h| table_elevation_deg(h.elevation_deg))
+            .ok()
+    };
+    (a.haze, a.ozone, a.ground_albedo) != (b.haze, b.ozone, b.ground_albedo)
+        || elevation(a) != elevation(b)
 }
 
 impl SkyTable {
+    /// Brings the texels up to `sky`, waiting for any rebuild ([`SkyRebuild::Blocking`]).
+    pub fn update(&mut self, sky: &SkyDesc) {
+        self.update_with(sky, SkyRebuild::Blocking);
+    }
+
     /// Brings the texels up to `sky` when it is a physical sky other than the one held (about
     /// 0.3 s for a new atmosphere, less when only the sun moved, nothing while it stays in one
-    /// `sky::TABLE_ELEVATION_STEP_DEG` step); clears them for the other skies.
+    /// `sky::TABLE_ELEVATION_STEP_DEG` step); clears them for the other skies. With
+    /// [`SkyRebuild::Background`] a rebuild of the sky-view table runs on a worker thread and
+    /// its result is installed by a later call. Returns whether the texels changed.
     /// A sky that fails its checks (the level loader refuses those first) leaves an empty
     /// table: the tracers then see a black sky.
-    pub fn update(&mut self, sky: &SkyDesc) {
+    pub fn update_with(&mut self, sky: &SkyDesc, how: SkyRebuild) -> bool {
+        let mut changed = self.collect();
         match sky {
             SkyDesc::Physical(p) => {
                 if self.source.as_ref() == Some(p) {
-                    return;
+                    return changed;
                 }
                 self.source = Some(*p);
-                match self.baker.update(p) {
-                    // A kept table keeps its `Arc`: the GPU upload compares pointers.
-                    Ok(_) => self.texels = self.baker.texels().clone(),
-                    Err(_) => {
-                        self.baker.clear();
-                        self.texels = Arc::default();
-                    }
+                let background = how == SkyRebuild::Background
+                    && !self.texels.is_empty()
+                    && self.built.is_some_and(|b| {
+                        (b.haze, b.ozone, b.ground_albedo)
+                            == (p.haze, p.ozone, p.ground_albedo)
+                    });
+                if !background {
+                    self.rebuilding = None;
+                    return self.build_here(p) || changed;
+                }
+                if let Some(built) = &self.built
+                    && !needs_rebuild(built, p)
+                {
+                    // The table held serves this sky: nothing to build (a rebuild for an
+                    // older sun that is still running is then out of date).
+                    self.rebuilding = None;
+                    self.built = Some(*p);
+                    let _ = self.baker.update(p);
+                    return changed;
+                }
+                if self.rebuilding.is_none() {
+                    self.start(*p);
                 }
             }
             _ => {
+                self.rebuilding = None;
+                self.built = None;
                 if self.source.take().is_some() {
                     self.texels = Arc::default();
+                    changed = true;
                 }
             }
         }
+        changed
+    }
+
+    /// Rebuilds for `p` on this thread; whether the texels changed.
+    fn build_here(&mut self, p: &PhysicalSky) -> bool {
+        let before = Arc::clone(&self.texels);
+        match self.baker.update(p) {
+            // A kept table keeps its `Arc`: the GPU upload compares pointers.
+            Ok(_) => {
+                self.texels = self.baker.texels().clone();
+                self.built = Some(*p);
+            }
+            Err(_) => {
+                self.baker.clear();
+                self.texels = Arc::default();
+                self.built = None;
+            }
+        }
+        !Arc::ptr_eq(&before, &self.texels)
+    }
+
+    /// Starts rebuilding for `sky` on a worker thread, from a copy of the baker.
+    fn start(&mut self, sky: PhysicalSky) {
+        let (send, done) = channel();
+        let mut baker = self.baker.clone();
+        let spawned = std::thread::Builder::new()
+            .name("sky table".into())
+            .spawn(move || {
+                if baker.update(&sky).is_ok() {
+                    // The table may have moved on (the receiver gone): nothing to do then.
+                    let _ = send.send(baker);
+                }
+            });
+        if spawned.is_ok() {
+            self.rebuilding = Some(Arc::new(Rebuilding {
+                sky,
+                done: Mutex::new(done),
+            }));
+        } else {
+            let _ = self.build_here(&sky);
+        }
+    }
+
+    /// Installs a finished background rebuild, and starts the next one when the sky has moved
+    /// on since; whether the texels changed.
+    fn collect(&mut self) -> bool {
+        let Some(rebuilding) = self.rebuilding.clone() else {
+            return false;
+        };
+        let received = match rebuilding.done.lock() {
+            Ok(done) => done.try_recv(),
+            Err(_) => Err(TryRecvError::Disconnected),
+        };
+        match received {
+            Ok(baker) => {
+                self.baker = baker;
+                self.texels = self.baker.texels().clone();
+                self.built = Some(rebuilding.sky);
+                self.rebuilding = None;
+                if let Some(wanted) = self.source
+                    && needs_rebuild(&rebuilding.sky, &wanted)
+                {
+                    self.start(wanted);
+                }
+                true
+            }
+            Err(TryRecvError::Empty) => false,
+            Err(TryRecvError::Disconnected) => {
+                self.rebuilding = None;
+                false
+            }
+        }
+    }
+
+    /// Whether a background rebuild is under way (the texels lag the sky asked for).
+    pub fn rebuilding(&self) -> bool {
+        self.rebuilding.is_some()
     }
 }

@@ -82,7 +82,7 @@ for x in (-3.2, 3.2):
 add("lintel", 0, 4.0, -14, scale=(2.0, 1, 1))
 for x in (-5.5, 5.5):
     add("torch", x, 0, -15)
-    add("torch_flame", x, 1.32, -15, body=None)
+    add("torch_flame", x, 1.5, -15, body=None)
 add("glyph_tile", -1.6, 0.0, -18.5)
 add("glyph_glow_0", -1.6, 0.0, -18.5, body=None)
 add("glyph_tile", 1.6, 0.0, -18.5)
@@ -96,7 +96,7 @@ add("lintel", -4.5, 3.0, 3.2, rot=(0, 90, 0), scale=(1, 1, 1))
 
 # --- The sun altar, where time turns.
 add("sun_altar", 5, 0, 5, name="sun_altar")
-add("sun_disc", 5, 0.95, 5, rot=(90, -60, 0), body=None)
+add("sun_disc", 5, 1.45, 5, rot=(90, -60, 0), body=None)
 
 # --- The shrine of the sun glyph: a closed stone room (3 x 3 m inside) whose only opening is a
 # slot in its west wall, aimed at where the sun stands at about 15:15 local time on 21 March
@@ -146,9 +146,9 @@ add("block_medium", 22, 0, 0, name="pedestal")
 add("sun_disc", 22, 1.3, 0, name="artifact_sun", rot=(90, -90, 0),
     dynamic=True, body="Kinematic(shape: Box)")
 add("torch", 24.5, 0, -4.5)
-add("torch_flame", 24.5, 1.32, -4.5, body=None)
+add("torch_flame", 24.5, 1.5, -4.5, body=None)
 add("torch", 24.5, 0, 4.5)
-add("torch_flame", 24.5, 1.32, 4.5, body=None)
+add("torch_flame", 24.5, 1.5, 4.5, body=None)
 
 # --- Fallen stones and low ruined walls about the plaza.
 wall(-14, 6, -8, 6, 2, block="block_medium")

@@ -45,6 +45,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         scaling: None,
         denoise: false,
         light_sampling: None,
+        sky_rebuild: candela::scene::SkyRebuild::Blocking,
     };
     let mut engine = Engine::new(config, Environment::of(&desc.scene))?;
     engine.spawn_level(desc);

@@ -228,6 +228,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             .map(|f| ScalingTarget::new(1.0 / f)),
         denoise: args.denoise,
         light_sampling: None,
+        sky_rebuild: candela::scene::SkyRebuild::Background,
     };
     let speed = args
         .speed

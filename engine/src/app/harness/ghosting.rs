@@ -182,6 +182,7 @@ fn run_policy(
         scaling: None,
         denoise: false,
         light_sampling: None,
+        sky_rebuild: crate::scene::SkyRebuild::Blocking,
     };
     let mut engine = Engine::new(config, setup.environment())?;
     let backdrop_material = Material {

@@ -54,7 +54,13 @@ pub fn play_replay<C: HarnessGame, S>(
     let (replay, start) = config.open_replay(path)?;
     let recorded = replay.steps() + 1;
     let mut game = config.new_game(start);
-    let mut engine = Engine::new(RenderConfig::cpu(16, 9), config.environment(&game))?;
+    // The sky's table follows a moving sun on a worker thread: the run's outcome never reads
+    // the picture, and a sun turned fast would otherwise stall every frame.
+    let render = RenderConfig {
+        sky_rebuild: crate::scene::SkyRebuild::Background,
+        ..RenderConfig::cpu(16, 9)
+    };
+    let mut engine = Engine::new(render, config.environment(&game))?;
     game.setup(&mut engine)
         .map_err(|e| HarnessError::Setup(e.to_string()))?;
     engine.set_step_input(StepInput::Replay(replay));

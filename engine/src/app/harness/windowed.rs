@@ -50,6 +50,9 @@ pub fn play_windowed<C: HarnessGame>(
         tracer: TracerChoice::Auto,
         denoise: play.denoise,
         scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        // A sun turned fast (an altar) must not stall the frames: the sky's table follows on a
+        // worker thread.
+        sky_rebuild: crate::scene::SkyRebuild::Background,
         ..RenderConfig::cpu(640, 360)
     };
     Ok(run_game(window, shell, render, environment, game)?)

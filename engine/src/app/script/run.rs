@@ -204,6 +204,7 @@ pub fn run_script(
         scaling: None,
         denoise: false,
         light_sampling: options.light_sampling,
+        sky_rebuild: crate::scene::SkyRebuild::Blocking,
     };
     let render_error = |source| ScriptError::Render {
         path: script.source.clone(),
