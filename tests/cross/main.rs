@@ -24,6 +24,7 @@ mod present;
 mod reflect_kit;
 mod reflect_record;
 mod reflect_window;
+mod ruins_kit;
 mod shell_screens;
 mod sounds;
 mod stability;

@@ -73,6 +73,8 @@ pub(crate) struct Material {
     pub(crate) name: String,
     pub(crate) pbr_metallic_roughness: Pbr,
     #[serde(skip_serializing_if = "Option::is_none")]
+    pub(crate) normal_texture: Option<TextureInfo>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) emissive_factor: Option<[f32; 3]>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub(crate) emissive_texture: Option<TextureInfo>,

@@ -93,6 +93,7 @@ fn material_json(m: &MaterialSpec) -> anyhow::Result<Material> {
     anyhow::ensure!(
         m.base_color_texture.is_none()
             && m.emissive_texture.is_none()
+            && m.normal_texture.is_none()
             && m.glass_ior.is_none()
             && m.emissive_strength == 1.0,
         "material {}: the skinned writer writes factors only",
@@ -106,6 +107,7 @@ fn material_json(m: &MaterialSpec) -> anyhow::Result<Material> {
             metallic_factor: m.metallic,
             roughness_factor: m.roughness,
         },
+        normal_texture: None,
         emissive_factor: (m.emissive != [0.0; 3]).then_some(m.emissive),
         emissive_texture: None,
         extensions: MaterialExtensions {

@@ -7,7 +7,7 @@
 //!
 //! What the engine's loader (`engine/src/assets/gltf/material.rs`) reads is all that is written:
 //! `baseColorFactor` (+ base colour texture, sRGB), metallic and roughness factors,
-//! `emissiveFactor` (+ emissive texture) with `KHR_materials_emissive_strength` (radiance
+//! `normalTexture`, `emissiveFactor` (+ emissive texture) with `KHR_materials_emissive_strength` (radiance
 //! W·sr⁻¹·m⁻² = factor × strength), `KHR_materials_transmission` and `KHR_materials_ior` for
 //! glass. Textures are referenced by URI relative to the `.gltf` file, sampled REPEAT/LINEAR.
 //!
@@ -35,6 +35,9 @@ pub struct MaterialSpec {
     pub emissive: [f32; 3],
     pub emissive_strength: f32,
     pub emissive_texture: Option<String>,
+    /// A tangent-space normal map (glTF convention: +X towards +u, +Y towards the top of the
+    /// image, stored as `n * 0.5 + 0.5`); the engine generates MikkTSpace tangents for it.
+    pub normal_texture: Option<String>,
     /// `Some(ior)`: transmissive glass (transmission 1, metallic must be 0).
     pub glass_ior: Option<f32>,
 }
@@ -55,10 +58,29 @@ pub struct GltfFiles {
     pub bin: Vec<u8>,
 }
 
-/// Writes `mesh` with `materials` as `<name>.gltf` (referring to `bin_uri`) and its buffer.
+/// Writes `mesh` with `materials` as `<name>.gltf` (referring to `bin_uri`) and its buffer,
+/// naming the Reflect kit as the generator (see [`write_gltf_by`]).
+pub fn write_gltf(
+    name: &str,
+    bin_uri: &str,
+    mesh: &MeshData,
+    materials: &[MaterialSpec],
+) -> anyhow::Result<GltfFiles> {
+    write_gltf_by(
+        "candela assetgen (reflect-kit)",
+        name,
+        bin_uri,
+        mesh,
+        materials,
+    )
+}
+
+/// Writes `mesh` with `materials` as `<name>.gltf` (referring to `bin_uri`) and its buffer,
+/// with `generator` as the asset's generator string.
 /// Materials without triangles are still written (their index is kept); primitives are only
 /// written for materials that have triangles.
-pub fn write_gltf(
+pub fn write_gltf_by(
+    generator: &'static str,
     name: &str,
     bin_uri: &str,
     mesh: &MeshData,
@@ -190,6 +212,7 @@ pub fn write_gltf(
                     metallic_factor: m.metallic,
                     roughness_factor: m.roughness,
                 },
+                normal_texture: texture_of(&m.normal_texture),
                 emissive_factor: emissive.then_some(m.emissive),
                 emissive_texture: texture_of(&m.emissive_texture),
                 extensions: MaterialExtensions {
@@ -218,7 +241,7 @@ pub fn write_gltf(
     let root = Root {
         asset: Asset {
             version: "2.0",
-            generator: "candela assetgen (reflect-kit)",
+            generator,
         },
         extensions_used,
         scene: 0,

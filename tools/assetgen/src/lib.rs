@@ -11,7 +11,8 @@
 //! Also [`sounds`]: the games' sounds (`assets/common/sounds/*.wav`), synthesised; and
 //! [`reflect_kit`]: the game Reflect's art kit (`assets/reflect/kit/`, glTF + PNG, written by
 //! [`gltf_writer`]); and [`hero`]: the skinned, animated hero (`assets/common/hero/hero.glb`,
-//! written by [`gltf_skin`]). Must not: depend on third-party data.
+//! written by [`gltf_skin`]); and [`ruins_kit`]: the art kit of It's About Time
+//! (`assets/its_about_time/kit/`, glTF + PNG with normal maps). Must not: depend on third-party data.
 
 use candela::assets::{
     BoxEntry, CameraDesc, CityEntry, GridEntry, InstanceEntry, Level, LevelMaterial, MaterialKind,
@@ -26,6 +27,7 @@ pub mod gltf_writer;
 pub mod hero;
 pub mod reflect_kit;
 mod reflect_sounds;
+pub mod ruins_kit;
 pub mod sounds;
 
 /// Light groups of the demo.

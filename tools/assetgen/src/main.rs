@@ -4,6 +4,8 @@
 //! `assets/common/sounds`). See `assetgen::sounds`.
 //! `assetgen reflect-kit [--out DIR]`: writes the Reflect art kit (default
 //! `assets/reflect/kit`), glTF + PNG. See `assetgen::reflect_kit`.
+//! `assetgen ruins-kit [--out DIR]`: writes the It's About Time art kit (default
+//! `assets/its_about_time/kit`), glTF + PNG. See `assetgen::ruins_kit`.
 //! `assetgen hero [--out DIR]`: writes the skinned hero (default `assets/common/hero`),
 //! `hero.glb`. See `assetgen::hero`.
 
@@ -34,6 +36,11 @@ enum Command {
     /// The Reflect art kit (glTF pieces and their PNG textures).
     ReflectKit {
         #[arg(long, default_value = "assets/reflect/kit")]
+        out: PathBuf,
+    },
+    /// The It's About Time art kit (glTF pieces, colour and normal-map PNGs).
+    RuinsKit {
+        #[arg(long, default_value = "assets/its_about_time/kit")]
         out: PathBuf,
     },
     /// The skinned, animated hero (one GLB).
@@ -68,29 +75,16 @@ fn main() -> anyhow::Result<()> {
             Ok(())
         }
         Command::ReflectKit { out } => {
-            let files = assetgen::reflect_kit::kit_files()?;
-            for (file, bytes) in &files {
-                let path = out.join(file);
-                if let Some(dir) = path.parent() {
-                    std::fs::create_dir_all(dir)
-                        .with_context(|| format!("cannot create {}", dir.display()))?;
-                }
-                std::fs::write(&path, bytes)
-                    .with_context(|| format!("cannot write {}", path.display()))?;
-            }
-            let total: usize = files.iter().map(|(_, b)| b.len()).sum();
-            println!(
-                "wrote {} files ({total} bytes) to {}",
-                files.len(),
-                out.display()
-            );
+            write_kit(&out, &assetgen::reflect_kit::kit_files()?)?;
             for piece in assetgen::reflect_kit::pieces() {
-                println!(
-                    "  {:<16} {:>5} triangles, {:>4} emissive",
-                    piece.name,
-                    piece.triangle_count(),
-                    piece.emissive_triangle_count()
-                );
+                print_piece(&piece);
+            }
+            Ok(())
+        }
+        Command::RuinsKit { out } => {
+            write_kit(&out, &assetgen::ruins_kit::kit_files()?)?;
+            for piece in assetgen::ruins_kit::pieces() {
+                print_piece(&piece);
             }
             Ok(())
         }
@@ -107,4 +101,32 @@ fn main() -> anyhow::Result<()> {
             Ok(())
         }
     }
+}
+
+/// Writes a kit's `(relative path, bytes)` files under `out` and says how much it wrote.
+fn write_kit(out: &std::path::Path, files: &[(String, Vec<u8>)]) -> anyhow::Result<()> {
+    for (file, bytes) in files {
+        let path = out.join(file);
+        if let Some(dir) = path.parent() {
+            std::fs::create_dir_all(dir)
+                .with_context(|| format!("cannot create {}", dir.display()))?;
+        }
+        std::fs::write(&path, bytes).with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    let total: usize = files.iter().map(|(_, b)| b.len()).sum();
+    println!(
+        "wrote {} files ({total} bytes) to {}",
+        files.len(),
+        out.display()
+    );
+    Ok(())
+}
+
+fn print_piece(piece: &assetgen::reflect_kit::Piece) {
+    println!(
+        "  {:<22} {:>5} triangles, {:>4} emissive",
+        piece.name,
+        piece.triangle_count(),
+        piece.emissive_triangle_count()
+    );
 }

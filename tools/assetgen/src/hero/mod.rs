@@ -32,6 +32,7 @@ fn plain(name: &str, base: [f32; 3], roughness: f32) -> MaterialSpec {
         emissive: [0.0; 3],
         emissive_strength: 1.0,
         emissive_texture: None,
+        normal_texture: None,
         glass_ior: None,
     }
 }

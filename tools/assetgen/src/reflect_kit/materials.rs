@@ -24,6 +24,7 @@ fn plain(name: &str, base: [f32; 3], metallic: f32, roughness: f32) -> MaterialS
         emissive: [0.0; 3],
         emissive_strength: 1.0,
         emissive_texture: None,
+        normal_texture: None,
         glass_ior: None,
     }
 }
