@@ -86,13 +86,14 @@ pub use replay::{
 pub use runner::{
     Command, Commands, Engine, EngineError, Environment, FixedClock, FrameInput, FrameLimiter,
     FrameReport, FrameStats, FrameWork, Game, LevelEvent, Phase, PhaseTimes, SetupError,
-    SpawnedCharacter, SpawnedLevel, Step, Waves, WorkTotals, waves_system,
+    SpawnedCharacter, SpawnedLevel, Step, TimeChange, TimeError, Waves, WorkTotals,
+    lighting_change, waves_system,
 };
 pub use script::{
     BoundScript, CameraKey, FrameTiming, Interpolation, LightSwitch, Motion, MotionEntry,
     ObjectKey, RunOptions, Screenshot, Script, ScriptError, ScriptLevel, ScriptRender,
-    ScriptReport, ScriptTracer, ShotResult, apply_motion, camera_at, camera_transform, cut_at,
-    matches, run_script,
+    ScriptReport, ScriptTracer, ShotResult, TimeKey, apply_motion, camera_at, camera_transform,
+    cut_at, matches, run_script,
 };
 pub use window::{
     StatsOverlay, WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_game,

@@ -22,6 +22,10 @@ pub struct Motion {
     pub camera: f32,
     /// Whether any rendered object moved, deformed, changed material or light.
     pub objects: bool,
+    /// How far the sky's lighting moved: degrees the sun turned (a time of day, a moved sun),
+    /// infinity for any other change of the sun or sky, 0 for none
+    /// (`app::lighting_change`).
+    pub lighting: f32,
 }
 
 /// One frame, sealed.

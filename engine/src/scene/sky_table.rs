@@ -3,29 +3,34 @@
 //! when this table is rebuilt: `render/gpu/upload.rs`) and reads it with the WGSL twin of the
 //! lookup (`shaders/shared/sky_view.wgsl`).
 //!
-//! Any thread (plain data). Rebuilt only when the sky's description changes ([`SkyTable::
+//! Any thread (plain data). Updated whenever the sky's description changes ([`SkyTable::
 //! update`] compares it), on the thread that owns the `RenderScene` copy (the render thread
-//! when it applies a commit; the builder in `accel/flatten.rs`). Must not: compute the sky
-//! (`crate::sky` does) or know about commits.
+//! when it applies a commit; the builder in `accel/flatten.rs`); a [`SkyBaker`] rebuilds only
+//! what the change needs (nothing while the sun stays in the table's elevation step,
+//! `sky::TABLE_ELEVATION_STEP_DEG`; the sky-view table alone when only the sun moved). Must not: compute
+//! the sky (`crate::sky` does) or know about commits.
 
 use std::sync::Arc;
 
 use crate::assets::SkyDesc;
-use crate::sky::{PhysicalSky, SkyTables};
+use crate::sky::{PhysicalSky, SkyBaker};
 
 /// The sky-view table of the current physical sky, or nothing for the other skies.
 #[derive(Clone, Debug, Default)]
 pub struct SkyTable {
     source: Option<PhysicalSky>,
+    baker: SkyBaker,
     /// `sky::VIEW_WIDTH × sky::VIEW_HEIGHT` texels (layout in `sky::sky_view`); empty when the
     /// sky is not physical.
     pub texels: Arc<Vec<[f32; 4]>>,
 }
 
 impl SkyTable {
-    /// Rebuilds the texels when `sky` is a physical sky other than the one held (about
-    /// 0.3 s); clears them for the other skies. A sky that fails its checks (the level
-    /// loader refuses those first) leaves an empty table: the tracers then see a black sky.
+    /// Brings the texels up to `sky` when it is a physical sky other than the one held (about
+    /// 0.3 s for a new atmosphere, less when only the sun moved, nothing while it stays in one
+    /// `sky::TABLE_ELEVATION_STEP_DEG` step); clears them for the other skies.
+    /// A sky that fails its checks (the level loader refuses those first) leaves an empty
+    /// table: the tracers then see a black sky.
     pub fn update(&mut self, sky: &SkyDesc) {
         match sky {
             SkyDesc::Physical(p) => {
@@ -33,7 +38,14 @@ impl SkyTable {
                     return;
                 }
                 self.source = Some(*p);
-                self.texels = Arc::new(SkyTables::build(p).map(|t| t.texels).unwrap_or_default());
+                match self.baker.update(p) {
+                    // A kept table keeps its `Arc`: the GPU upload compares pointers.
+                    Ok(_) => self.texels = self.baker.texels().clone(),
+                    Err(_) => {
+                        self.baker.clear();
+                        self.texels = Arc::default();
+                    }
+                }
             }
             _ => {
                 if self.source.take().is_some() {

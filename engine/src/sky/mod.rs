@@ -7,14 +7,19 @@
 //! from the local horizon to engine space (north = −Z, east = +X, up = +Y, azimuth from north
 //! towards east; [`Horizontal::direction`]), and the physical sky: the Earth preset's media
 //! (`atmosphere`), the transmittance and multiple-scattering tables, the sky-view table and
-//! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into.
+//! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into;
+//! turning the time of day ([`SkyTime::advanced`], [`SkyNow`], `day`), the tables kept while
+//! the sun moves ([`SkyBaker`]) and the exposure the sky calls for (`exposure`).
 //! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
-//! the layers and uses no engine module (only glam, serde and thiserror).
+//! the layers and uses no engine module (only glam, rayon, serde and thiserror).
 
 mod atmosphere;
+mod baker;
 mod calendar;
+mod day;
 mod error;
+mod exposure;
 mod horizon;
 mod lunar;
 mod multiscatter;
@@ -23,8 +28,13 @@ mod sky_view;
 mod solar;
 mod transmittance;
 
+pub use baker::{Baked, SkyBaker, TABLE_ELEVATION_STEP_DEG, table_elevation_deg};
 pub use calendar::UtcInstant;
+pub use day::SkyNow;
 pub use error::SkyError;
+pub use exposure::{
+    DAYLIGHT_LUX, LUX_PER_Y, NIGHT_DARKENING, NIGHT_FLOOR_LUX, exposure_ev, horizontal_illuminance,
+};
 pub use horizon::{Horizontal, Observer};
 pub use lunar::{MoonState, moon_position};
 pub use physical::{HAZE_TURBIDITY_3, PhysicalSky, SkyTables, SkyTime, sky_view_radiance};

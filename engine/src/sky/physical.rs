@@ -34,6 +34,11 @@ pub struct SkyTime {
     pub day: u32,
     /// Hours since midnight UTC, 0 ≤ h < 24.
     pub utc_hours: f64,
+    /// How fast the day flows in play: seconds of day per simulated second (the fixed steps
+    /// advance it; `app/runner/time_of_day.rs`), 0..=1e6; 0 (the default): the time stands
+    /// still unless the game turns it.
+    #[serde(default)]
+    pub time_rate: f64,
 }
 
 /// A physically based sky (Hillaire 2020, Earth preset) with its sun.
@@ -69,6 +74,21 @@ pub struct PhysicalSky {
 /// Hosek–Wilkie sky at turbidity 3, albedo 0.3 (0.1894; calibrated once by bisection,
 /// checked by `engine/tests/engine/sky_reference.rs`).
 pub const HAZE_TURBIDITY_3: f32 = 22.05;
+
+impl Default for PhysicalSky {
+    /// `sky: Physical(())`: a clear sky (Earth preset), the sun 45° high in the north.
+    fn default() -> Self {
+        Self {
+            sun_elevation_deg: default_elevation(),
+            sun_azimuth_deg: 0.0,
+            time: None,
+            haze: 1.0,
+            ozone: 1.0,
+            ground_albedo: default_albedo(),
+            sun_scale: 1.0,
+        }
+    }
+}
 
 fn default_elevation() -> f32 {
     45.0
@@ -125,6 +145,7 @@ impl PhysicalSky {
         }
         if let Some(time) = &self.time {
             time.instant()?;
+            time.check_rate()?;
             Observer::new(time.latitude_deg, time.longitude_deg)?;
         }
         Ok(())
@@ -145,7 +166,7 @@ impl PhysicalSky {
         })
     }
 
-    fn atmosphere(&self) -> Atmosphere {
+    pub(super) fn atmosphere(&self) -> Atmosphere {
         Atmosphere {
             haze: self.haze,
             ozone: self.ozone,
@@ -164,7 +185,7 @@ impl PhysicalSky {
 }
 
 impl SkyTime {
-    fn instant(&self) -> Result<UtcInstant, SkyError> {
+    pub(super) fn instant(&self) -> Result<UtcInstant, SkyError> {
         let bad = SkyError::Time {
             hour: 24,
             minute: 0,
@@ -203,13 +224,15 @@ pub struct SkyTables {
 }
 
 impl SkyTables {
-    /// Precomputes the transmittance, multiple-scattering and sky-view tables.
+    /// Precomputes the transmittance, multiple-scattering and sky-view tables (the sky-view one
+    /// for the sun's elevation rounded to `TABLE_ELEVATION_STEP_DEG`, as [`super::SkyBaker`]).
     pub fn build(sky: &PhysicalSky) -> Result<Self, SkyError> {
         let h = sky.sun_horizontal()?;
         let atmosphere = sky.atmosphere();
         let transmittance = TransmittanceLut::build(&atmosphere);
         let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
-        let elevation = (h.elevation_deg as f32).to_radians();
+        // The table's elevation step (`baker`), so a table built here equals the render side's.
+        let elevation = (super::baker::table_elevation_deg(h.elevation_deg) as f32).to_radians();
         let texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
         let flat = Horizontal {
             elevation_deg: 0.0,

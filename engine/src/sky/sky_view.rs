@@ -11,6 +11,7 @@
 //! engine's axes (the caller gives elevation and azimuth from the sun).
 
 use glam::Vec3;
+use rayon::prelude::*;
 
 use super::atmosphere::{
     Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, mie_phase,
@@ -33,22 +34,24 @@ pub fn build_view(
     sun_elevation: f32,
 ) -> Vec<[f32; 4]> {
     let sun = Vec3::new(sun_elevation.cos(), 0.0, sun_elevation.sin());
-    let mut texels = Vec::with_capacity(VIEW_WIDTH * VIEW_HEIGHT);
-    for y in 0..VIEW_HEIGHT {
-        let c = 2.0 * y as f32 / (VIEW_HEIGHT - 1) as f32 - 1.0;
-        let elevation = c.signum() * c * c * std::f32::consts::FRAC_PI_2;
-        for x in 0..VIEW_WIDTH {
-            let phi = std::f32::consts::PI * x as f32 / (VIEW_WIDTH - 1) as f32;
-            let dir = Vec3::new(
-                elevation.cos() * phi.cos(),
-                elevation.cos() * phi.sin(),
-                elevation.sin(),
-            );
-            let l = march(atmosphere, transmittance, multiple, dir, sun) * SOLAR_IRRADIANCE;
-            texels.push([l.x, l.y, l.z, 0.0]);
-        }
-    }
-    texels
+    // Rows in parallel (each texel is independent, so the bits do not depend on the threads).
+    (0..VIEW_HEIGHT)
+        .into_par_iter()
+        .flat_map_iter(|y| {
+            let c = 2.0 * y as f32 / (VIEW_HEIGHT - 1) as f32 - 1.0;
+            let elevation = c.signum() * c * c * std::f32::consts::FRAC_PI_2;
+            (0..VIEW_WIDTH).map(move |x| {
+                let phi = std::f32::consts::PI * x as f32 / (VIEW_WIDTH - 1) as f32;
+                let dir = Vec3::new(
+                    elevation.cos() * phi.cos(),
+                    elevation.cos() * phi.sin(),
+                    elevation.sin(),
+                );
+                let l = march(atmosphere, transmittance, multiple, dir, sun) * SOLAR_IRRADIANCE;
+                [l.x, l.y, l.z, 0.0]
+            })
+        })
+        .collect()
 }
 
 /// Radiance per unit solar irradiance arriving at the viewer from direction `dir` (z up).

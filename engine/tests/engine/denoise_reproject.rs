@@ -210,6 +210,7 @@ fn a_turning_camera_keeps_its_history_and_ends_closer_to_the_converged_image() -
             cut: k == 0,
             camera: if k == 0 { 0.0 } else { 0.4f32.to_radians() },
             objects: false,
+            lighting: 0.0,
         };
         let blend = converge.blend_reprojected(&motion);
         let (a, stats) =

@@ -106,6 +106,7 @@ mod sky_ephemeris;
 mod sky_gpu;
 mod sky_level;
 mod sky_reference;
+mod sky_time;
 mod structure_layers;
 mod trace_agreement;
 mod upkeep_camera_motion;

@@ -267,6 +267,7 @@ fn blend_factors(setup: &GhostSetup, policy: ConvergePolicy) -> Vec<f32> {
                 cut: k == 0,
                 camera: 0.0,
                 objects: true,
+                lighting: 0.0,
             })
         })
         .collect()

@@ -1,5 +1,5 @@
 //! [`Commands`]: the work a game's hooks queue for the engine (light groups, cuts, events for
-//! the level's rules, checkpoints, level ends, unplaced sounds), carried out in order right
+//! the level's rules, checkpoints, level ends, unplaced sounds, the time of day), carried out in order right
 //! after the hook returns (`Engine::frame`, `app/runner/frame.rs`); and the
 //! [`ProgressEvent`]s the checkpoints, ends and finishes become, for the shell to save.
 //!
@@ -8,6 +8,7 @@
 //! runner applies each command).
 
 use crate::sim::triggers::Outcome;
+use crate::sky::SkyTime;
 
 /// Work a hook asks of the engine, carried out in order right after the hook returns.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -35,6 +36,23 @@ pub enum Command {
     /// Play the level's sound `name` (from its `gameplay.sounds`) once, not placed, at linear
     /// volume `volume`: a cue for the HUD's messages. Not part of the simulation's state.
     Sound { name: String, volume: f32 },
+    /// Set or turn the physical sky's time of day (`app/runner/time_of_day.rs`).
+    Time(TimeChange),
+}
+
+/// How a [`Command::Time`] changes the physical sky's time of day. Carried out right after the
+/// hook that queued it returns, so the next fixed step sees the new sun and moon; a sky that
+/// is not physical, or (but for `Set`) has no `time`, is left alone (logged).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum TimeChange {
+    /// Date, time, place and day rate all at once.
+    Set(SkyTime),
+    /// The same date and place at these hours UTC (0 ≤ h < 24).
+    Hours(f64),
+    /// Moved by these seconds of day (negative: backwards), across midnights.
+    Advance(f64),
+    /// The day flows at this many seconds of day per simulated second from now on (0..=1e6).
+    Rate(f64),
 }
 
 impl Commands {
@@ -80,6 +98,26 @@ impl Commands {
             name: name.into(),
             volume,
         });
+    }
+
+    /// Sets the physical sky's whole time (date, UTC hours, place, day rate).
+    pub fn set_sky_time(&mut self, time: SkyTime) {
+        self.queue.push(Command::Time(TimeChange::Set(time)));
+    }
+
+    /// Sets the physical sky's time of day to `hours` UTC (0 ≤ h < 24), same date and place.
+    pub fn set_time_of_day(&mut self, hours: f64) {
+        self.queue.push(Command::Time(TimeChange::Hours(hours)));
+    }
+
+    /// Moves the physical sky's time by `seconds` of day (negative: backwards).
+    pub fn advance_time(&mut self, seconds: f64) {
+        self.queue.push(Command::Time(TimeChange::Advance(seconds)));
+    }
+
+    /// Lets the day flow at `rate` seconds of day per simulated second (0 stops it; 0..=1e6).
+    pub fn set_time_rate(&mut self, rate: f64) {
+        self.queue.push(Command::Time(TimeChange::Rate(rate)));
     }
 
     /// Takes the queued commands, oldest first.

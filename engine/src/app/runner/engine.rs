@@ -94,6 +94,11 @@ pub struct Engine {
     pub(in crate::app) settle_steps: bool,
     /// What moved since the last commit (the cut is `cut`'s).
     pub(in crate::app) motion: Motion,
+    /// The sun and sky the last commit carried (for `Motion::lighting`; `time_of_day.rs`).
+    pub(in crate::app) committed_light:
+        Option<(Option<crate::assets::SunDesc>, crate::assets::SkyDesc)>,
+    /// The main thread's own sky tables, for the exposure (`sky_exposure.rs`).
+    pub(in crate::app) sky_meter: crate::sky::SkyBaker,
 }
 
 impl Engine {
@@ -164,6 +169,8 @@ impl Engine {
             step_scene_current: true,
             settle_steps: false,
             motion: Motion::default(),
+            committed_light: None,
+            sky_meter: crate::sky::SkyBaker::default(),
         }
     }
 

@@ -136,7 +136,8 @@ impl Engine {
     }
 
     /// One fixed step: game rules → physics → characters' animation states → skinned
-    /// animation players → level logic and its effects → level events to the game → audio.
+    /// animation players → level logic and its effects → level events to the game → the day
+    /// flows (`time_of_day.rs`) → audio.
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();
@@ -147,14 +148,13 @@ impl Engine {
         tick_skinned(&mut self.world, dt);
         let ended_before = self.logic.outcome().is_some();
         let lights_off = self.upkeep.light_groups_off();
+        let sun = self.sun_for_rules();
         let effects = self.logic.step(
             &mut self.world,
             &self.physics,
             self.upkeep.queries(),
             &lights_off,
-            self.environment
-                .sun
-                .and_then(|s| glam::Vec3::from(s.direction).try_normalize()),
+            sun,
             dt,
         );
         self.carry_out(effects);
@@ -172,11 +172,13 @@ impl Engine {
             }
             self.carry_out_commands();
         }
+        self.flow_time(dt);
         self.audio.tick(dt);
     }
 
     /// What the game's step hooks get for step `index`.
     fn step_view(&mut self, index: u64) -> Step<'_> {
+        let sky = self.sky_now();
         Step {
             world: &mut self.world,
             queries: self.upkeep.queries(),
@@ -187,6 +189,7 @@ impl Engine {
             step_seconds: self.clock.step_seconds,
             commands: &mut self.commands,
             settings: &self.step_settings,
+            sky,
         }
     }
 
@@ -230,6 +233,7 @@ impl Engine {
         work.awake_bodies = self.physics.awake_bodies() as u32;
         let motion = Motion {
             cut: std::mem::take(&mut self.cut),
+            lighting: self.take_lighting_change(),
             ..std::mem::take(&mut self.motion)
         };
         Prepared {
@@ -275,6 +279,11 @@ impl Engine {
                     self.progress_events.push(ProgressEvent::Finished(level));
                 }
                 Command::Sound { name, volume } => self.play_named(&name, volume),
+                Command::Time(change) => {
+                    if let Err(e) = self.change_time(change) {
+                        log::warn!("{change:?}: {e}; the time of day is unchanged");
+                    }
+                }
             }
         }
     }

@@ -111,6 +111,10 @@ pub struct Step<'a> {
     /// The player's settings as they are now, except while recording or replaying: then the
     /// look (mouse sensitivity, invert Y) is the recording's, so a replay turns as it did.
     pub settings: &'a Settings,
+    /// Where the sun and the moon stand at the start of this step (engine space: north −Z,
+    /// east +X, up +Y), the moon's phase and the time of day (`Engine::sky_now`); a time the
+    /// game sets (`Commands::set_time_of_day`) shows from the next step (or the next hook) on.
+    pub sky: Option<crate::sky::SkyNow>,
 }
 
 /// What the per-frame hook gets.

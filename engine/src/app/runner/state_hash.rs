@@ -9,7 +9,8 @@
 //! body's pose, linear and angular velocity and sleep state in entity order
 //! (`PhysicsWorld::state_words`); the level logic's state (`LevelLogic::state_words`: steps,
 //! outcome, rule states, volume occupants, clip playheads, pending events); the light groups
-//! switched off. Not covered: rendering (images, converging), audio output, wall-clock time,
+//! switched off; a physical sky's time of day (date, UTC hours, day rate) or sun angles. Not
+//! covered: rendering (images, converging), audio output, wall-clock time,
 //! and the game's own fields outside the world (a game hashes those itself).
 //!
 //! Main thread, between frames. Must not: change anything.
@@ -85,6 +86,9 @@ impl Engine {
         }
         for group in 0..64 {
             h.word(u64::from(self.upkeep.light_group_on(group)));
+        }
+        for w in self.sky_state_words() {
+            h.word(w);
         }
         h.0
     }

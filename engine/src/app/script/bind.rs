@@ -1,5 +1,6 @@
 //! Binding a checked [`Script`] to a loaded level: every motion's instance name (or `prefix*`)
-//! becomes the list of level instances it moves, every light switch's group is checked to exist.
+//! becomes the list of level instances it moves, every light switch's group is checked to exist,
+//! time-of-day keys need a physical sky with a time.
 //!
 //! Owns: [`BoundScript`] and the errors for names the level lacks (unknown instance, a pattern
 //! that matches nothing, a static instance asked to move, an unused light group). Also loading
@@ -72,6 +73,15 @@ impl Script {
                     group: s.group,
                 });
             }
+        }
+        let timed = matches!(&desc.sky, crate::assets::SkyDesc::Physical(p) if p.time.is_some());
+        if !self.times.is_empty() && !timed {
+            return Err(ScriptError::Invalid {
+                path: self.source.clone(),
+                item: "times[0]".into(),
+                message: "the level's sky must be Physical with a `time` to set the time of day"
+                    .into(),
+            });
         }
         Ok(BoundScript { motion_targets })
     }

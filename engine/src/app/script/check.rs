@@ -1,5 +1,5 @@
 //! Checking a parsed [`Script`] without the level: frames in range, keys in increasing order,
-//! finite values, positive periods and sizes, non-zero axes and scales, safe and unique
+//! finite values and times of day, positive periods and sizes, non-zero axes and scales, safe and unique
 //! screenshot names. Every failure names the script file and the item (`camera[2]`,
 //! `motions[1] ("car_*") key[3]`, `screenshots[0]`).
 //!
@@ -79,6 +79,13 @@ impl Script {
         }
         for (i, s) in self.lights.iter().enumerate() {
             self.check_frame(&format!("lights[{i}]"), s.frame)?;
+        }
+        let frames: Vec<u32> = self.times.iter().map(|k| k.frame).collect();
+        self.check_increasing("times", &frames)?;
+        for (i, k) in self.times.iter().enumerate() {
+            if !(k.utc_hours.is_finite() && (0.0..24.0).contains(&k.utc_hours)) {
+                return Err(self.invalid(format!("times[{i}]"), "utc_hours must be in 0..24"));
+            }
         }
         let mut names = HashSet::new();
         for (i, s) in self.screenshots.iter().enumerate() {

@@ -31,6 +31,7 @@
 //!         ])),
 //!     ],
 //!     lights: [(frame: 30, group: 2, on: false)],
+//!     times: [(frame: 0, utc_hours: 5.5), (frame: 60, utc_hours: 12)],
 //!     screenshots: [(frame: 59, name: "overview"), (frame: 119, exr: true)],
 //! )
 //! ```
@@ -53,8 +54,12 @@
 //!   `Spin` turns about `axis` through the object's origin. Phases are
 //!   `phase_deg + 360° × t / period_seconds`. Moved instances must be `dynamic` in the level.
 //! * `lights`: at `frame`, light group `group` turns on or off (the group must exist).
+//! * `times`: at `frame`, the physical sky's time of day is set to `utc_hours` (0 ≤ h < 24, same
+//!   date and place; the level's sky must be `Physical` with a `time`); keys in increasing frame
+//!   order. Between keys the day flows at the sky's `time_rate` (0: it stands still).
 //! * `screenshots`: at `frame`, the converged film is written as `<name>.png` (tonemapped,
-//!   `render.exposure_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
+//!   `render.exposure_ev`, or with `render.auto_exposure: true` the exposure the physical sky's
+//!   horizontal illuminance calls for at that frame, `sky::exposure_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
 //!   defaults to `frame_NNNNN`; it may hold only letters, digits, `_`, `-` and `.`.
 
 use std::path::{Path, PathBuf};
@@ -82,6 +87,8 @@ pub struct Script {
     pub motions: Vec<MotionEntry>,
     #[serde(default)]
     pub lights: Vec<LightSwitch>,
+    #[serde(default)]
+    pub times: Vec<TimeKey>,
     #[serde(default)]
     pub screenshots: Vec<Screenshot>,
     /// The file the script was read from (for messages and relative paths); not in the file.
@@ -122,6 +129,9 @@ pub struct ScriptRender {
     pub seed: u32,
     /// Exposure of the PNG screenshots, stops.
     pub exposure_ev: f32,
+    /// Expose the PNG screenshots for the physical sky's horizontal illuminance at their frame
+    /// instead (`Engine::sky_exposure_ev`; `exposure_ev` for other skies).
+    pub auto_exposure: bool,
 }
 
 impl Default for ScriptRender {
@@ -133,6 +143,7 @@ impl Default for ScriptRender {
             spp: 4,
             seed: 0,
             exposure_ev: 0.0,
+            auto_exposure: false,
         }
     }
 }
@@ -245,6 +256,15 @@ pub struct LightSwitch {
     pub frame: u32,
     pub group: u32,
     pub on: bool,
+}
+
+/// The time of day set at a frame.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TimeKey {
+    pub frame: u32,
+    /// Hours since midnight UTC, 0 ≤ h < 24.
+    pub utc_hours: f64,
 }
 
 /// A screenshot at a frame.

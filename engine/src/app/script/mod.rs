@@ -18,7 +18,7 @@ mod run;
 pub use bind::{BoundScript, matches};
 pub use desc::{
     CameraKey, Interpolation, LightSwitch, Motion, MotionEntry, ObjectKey, Screenshot, Script,
-    ScriptError, ScriptLevel, ScriptRender, ScriptTracer,
+    ScriptError, ScriptLevel, ScriptRender, ScriptTracer, TimeKey,
 };
 pub use motion::{apply_motion, camera_at, camera_transform, cut_at};
 pub use run::{FrameTiming, RunOptions, ScriptReport, ShotResult, run_script};

@@ -40,6 +40,7 @@ use crate::accel::UpkeepStats;
 use crate::app::runner::FrameReport;
 use crate::app::runner::FrameWork;
 use crate::app::runner::Step;
+use crate::app::runner::TimeChange;
 use crate::app::runner::{Engine, Environment};
 use crate::assets::Needs;
 use crate::ecs::{CameraRig, Transform};
@@ -112,6 +113,8 @@ struct Collector<'a> {
     script: &'a Script,
     options: &'a RunOptions,
     exposure_ev: f32,
+    /// With `render.auto_exposure`: the sky's exposure at each screenshot's frame.
+    shot_exposure: std::collections::HashMap<u32, f32>,
     report: ScriptReport,
 }
 
@@ -144,7 +147,11 @@ impl Collector<'_> {
                 };
                 let file = dir.join(format!("{stem}.png"));
                 let tonemap = TonemapSettings {
-                    exposure_ev: self.exposure_ev,
+                    exposure_ev: self
+                        .shot_exposure
+                        .get(&shot.frame)
+                        .copied()
+                        .unwrap_or(self.exposure_ev),
                     ..Default::default()
                 };
                 write_png(&file, film.width, film.height, &film.mean, &tonemap)
@@ -235,6 +242,7 @@ pub fn run_script(
         script,
         options,
         exposure_ev: script.render.exposure_ev,
+        shot_exposure: Default::default(),
         report: ScriptReport {
             frames: Vec::with_capacity(script.frames as usize),
             tracer,
@@ -286,6 +294,15 @@ pub fn run_script(
         for switch in script.lights.iter().filter(|s| s.frame == frame) {
             engine.set_light_group(switch.group, switch.on);
         }
+        for key in script.times.iter().filter(|k| k.frame == frame) {
+            engine
+                .change_time(TimeChange::Hours(key.utc_hours))
+                .map_err(|e| ScriptError::Invalid {
+                    path: script.source.clone(),
+                    item: format!("times (frame {frame})"),
+                    message: e.to_string(),
+                })?;
+        }
         if script.screenshots.iter().any(|s| s.frame == frame) {
             engine.capture_next();
         }
@@ -300,6 +317,13 @@ pub fn run_script(
                 return Err(render_error(e));
             }
         };
+        // The exposure of the sky this frame's commit carried (a function of the time alone).
+        if script.render.auto_exposure
+            && script.screenshots.iter().any(|s| s.frame == frame)
+            && let Some(ev) = engine.sky_exposure_ev()
+        {
+            collector.shot_exposure.insert(frame, ev);
+        }
         collector.report.frames.push(FrameTiming {
             frame,
             update_seconds: script_seconds + report.update_seconds(),

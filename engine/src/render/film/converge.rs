@@ -6,7 +6,9 @@
 //! smear; the denoiser reprojects per pixel and uses [`Converge::blend_reprojected`]); an exact running mean (`f = 1/n` for the n-th still frame) while nothing moves; and a
 //! floor on `f` while objects move so that they do not leave ghosts. After a floored blend the
 //! frame count drops to the film's effective count, so that once motion stops new frames get
-//! the weight the film's real noise calls for (see [`Converge::blend`]). Render thread.
+//! the weight the film's real noise calls for (see [`Converge::blend`]). The light is treated
+//! like motion: a sun that jumps (a time set, a new sky) restarts the image, a sun that moves
+//! slowly (the day flowing) keeps a floor of its own. Render thread.
 //! Must not: look at pixels.
 
 use crate::commit::Motion;
@@ -20,6 +22,13 @@ pub struct ConvergePolicy {
     pub moving_floor: f32,
     /// Camera motion (metres + radians per frame) above which the image restarts.
     pub camera_reset: f32,
+    /// Smallest `f` while the sun moves slowly (`Motion::lighting` above 0, at most
+    /// `lighting_reset`): a shadow's old place fades within about 1/floor frames. Lower than
+    /// `moving_floor`: a flowing day moves the sun by thousandths of a degree a frame.
+    pub lighting_floor: f32,
+    /// Sun motion (degrees per commit) above which the image restarts (any other change of
+    /// the sky or sun is infinite and restarts it too).
+    pub lighting_reset_deg: f32,
 }
 
 impl Default for ConvergePolicy {
@@ -27,6 +36,8 @@ impl Default for ConvergePolicy {
         Self {
             moving_floor: 0.25,
             camera_reset: 1e-4,
+            lighting_floor: 0.1,
+            lighting_reset_deg: 0.5,
         }
     }
 }
@@ -58,13 +69,24 @@ impl Converge {
     /// noisier (in standard deviation) than an exact mean of its effective frames for the
     /// default floor, 4.8× for a floor of 1 (see the test below).
     pub fn blend(&mut self, motion: &Motion) -> f32 {
-        if motion.cut || motion.camera > self.policy.camera_reset {
+        if motion.cut
+            || motion.camera > self.policy.camera_reset
+            || motion.lighting > self.policy.lighting_reset_deg
+        {
             self.frames = 0;
         }
         self.frames += 1;
         let mut f = 1.0 / self.frames as f32;
-        if motion.objects && self.policy.moving_floor > f {
-            f = self.policy.moving_floor.min(1.0);
+        let mut floor = if motion.objects {
+            self.policy.moving_floor
+        } else {
+            0.0
+        };
+        if motion.lighting > 0.0 {
+            floor = floor.max(self.policy.lighting_floor);
+        }
+        if floor > f {
+            f = floor.min(1.0);
             let effective = ((2.0 - f) / f).round().max(1.0) as u32;
             self.frames = self.frames.min(effective);
         }
@@ -81,6 +103,7 @@ impl Converge {
             cut: motion.cut,
             camera: 0.0,
             objects: moving,
+            lighting: motion.lighting,
         })
     }
 }
@@ -112,6 +135,38 @@ mod tests {
             1.0
         );
         assert_eq!(c.blend(&still), 0.5);
+    }
+
+    #[test]
+    fn a_jumping_sun_restarts_a_slow_sun_floors_no_change_averages() {
+        let mut c = Converge::default();
+        let still = Motion::default();
+        for _ in 0..20 {
+            c.blend(&still);
+        }
+        // An unchanged sky keeps averaging: the 21st still frame gets 1/21.
+        assert!((c.blend(&still) - 1.0 / 21.0).abs() < 1e-7);
+        // The day flowing: a thousandth of a degree a frame keeps the lighting floor.
+        let slow = Motion {
+            lighting: 1e-3,
+            ..still
+        };
+        for _ in 0..10 {
+            assert_eq!(c.blend(&slow), c.policy.lighting_floor);
+        }
+        // A time set hours away (or a new sky): the film restarts.
+        let jump = Motion {
+            lighting: 30.0,
+            ..still
+        };
+        assert_eq!(c.blend(&jump), 1.0);
+        assert_eq!(c.blend(&still), 0.5);
+        let other = Motion {
+            lighting: f32::INFINITY,
+            ..still
+        };
+        assert_eq!(c.blend(&other), 1.0);
+        assert_eq!(c.blend_reprojected(&jump), 1.0);
     }
 
     /// √Σ wᵢ² of the film after the blend factors `fs` (each frame's noise weight).
