@@ -5,13 +5,18 @@
 //! frame, `sky_view_radiance`), and it is built for the elevation rounded to
 //! [`TABLE_ELEVATION_STEP_DEG`] ([`table_elevation_deg`]): it is rebuilt only when the sun
 //! crosses into another step, and the table is a function of the sky alone (not of the path
-//! the sun took), so replays and screenshots repeat. The sun disc's own direction is not the
-//! table's: the tracers take it from the sky's description every frame, exactly.
+//! the sun took), so replays and screenshots repeat. After each rebuild the next step's table
+//! in the direction the sun moves is built ahead on a thread of its own; when the sun gets
+//! there the update takes it (waiting for it if it is not done), so a steadily moving sun does
+//! not stall the caller — and the bits are those of a build on the spot. The sun disc's own
+//! direction is not the table's: the tracers take it from the sky's description every frame,
+//! exactly.
 //!
 //! Any thread (the render thread's `scene::SkyTable` holds one). Must not: know scenes, commits
 //! or tracers.
 
-use std::sync::Arc;
+use std::sync::mpsc::{Receiver, channel};
+use std::sync::{Arc, Mutex};
 
 use super::atmosphere::Atmosphere;
 use super::error::SkyError;
@@ -57,18 +62,51 @@ pub enum Baked {
     Kept,
     /// The sky-view table was rebuilt on the kept transmittance and multiple-scattering tables.
     View,
+    /// The sky-view table built ahead for this step was taken (the sun moved on steadily).
+    Ahead,
     /// Everything was rebuilt (a new atmosphere).
     All,
 }
 
+/// A sky-view table being built ahead on a thread of its own.
+struct Ahead {
+    key: AtmosphereKey,
+    elevation_deg: f64,
+    texels: Receiver<Vec<[f32; 4]>>,
+}
+
 /// The sky-view table of the latest physical sky, and the tables it was built from.
-#[derive(Clone, Default)]
+#[derive(Default)]
 pub struct SkyBaker {
     luts: Option<Arc<Luts>>,
     /// The sun elevation (degrees) the sky-view table was built for.
     built_elevation_deg: Option<f64>,
     /// `VIEW_WIDTH × VIEW_HEIGHT` texels (layout in `sky_view`).
     texels: Arc<Vec<[f32; 4]>>,
+    /// The next step's table, being built (a mutex only so that the baker is `Sync`).
+    ahead: Mutex<Option<Ahead>>,
+}
+
+impl Clone for SkyBaker {
+    /// A copy without the table being built ahead (the copy builds its own when it needs it).
+    fn clone(&self) -> Self {
+        Self {
+            luts: self.luts.clone(),
+            built_elevation_deg: self.built_elevation_deg,
+            texels: self.texels.clone(),
+            ahead: Mutex::new(None),
+        }
+    }
+}
+
+/// The sky-view texels for a sun at `elevation_deg` on `luts`.
+fn view(luts: &Luts, elevation_deg: f64) -> Vec<[f32; 4]> {
+    build_view(
+        &luts.atmosphere,
+        &luts.transmittance,
+        &luts.multiple,
+        (elevation_deg as f32).to_radians(),
+    )
 }
 
 impl std::fmt::Debug for SkyBaker {
@@ -111,14 +149,58 @@ impl SkyBaker {
                 l
             }
         };
-        self.texels = Arc::new(build_view(
-            &luts.atmosphere,
-            &luts.transmittance,
-            &luts.multiple,
-            (elevation as f32).to_radians(),
-        ));
-        self.built_elevation_deg = Some(elevation);
+        let texels = match self.take_ahead(k, elevation) {
+            Some(texels) => {
+                baked = Baked::Ahead;
+                texels
+            }
+            None => view(&luts, elevation),
+        };
+        self.texels = Arc::new(texels);
+        let previous = self.built_elevation_deg.replace(elevation);
+        if baked != Baked::All
+            && let Some(previous) = previous
+            && previous != elevation
+        {
+            let next = table_elevation_deg(
+                elevation + TABLE_ELEVATION_STEP_DEG * (elevation - previous).signum(),
+            );
+            self.build_ahead(luts, next);
+        }
         Ok(baked)
+    }
+
+    /// The table built ahead for `elevation` under atmosphere `key`, waiting for it if it is not
+    /// done; `None` when none was built for it (one built for another step is dropped).
+    fn take_ahead(&self, key: AtmosphereKey, elevation: f64) -> Option<Vec<[f32; 4]>> {
+        let ahead = self.ahead.lock().ok()?.take()?;
+        (ahead.key == key && ahead.elevation_deg == elevation)
+            .then(|| ahead.texels.recv().ok())
+            .flatten()
+    }
+
+    /// Starts building the sky-view table for `elevation` on a thread of its own.
+    fn build_ahead(&self, luts: Arc<Luts>, elevation: f64) {
+        if !(-90.0..=90.0).contains(&elevation) {
+            return;
+        }
+        let (send, texels) = channel();
+        let key = luts.key;
+        let started = std::thread::Builder::new()
+            .name("sky ahead".into())
+            .spawn(move || {
+                // The receiver may be gone (the sun went elsewhere): nothing to do then.
+                let _ = send.send(view(&luts, elevation));
+            });
+        if started.is_ok()
+            && let Ok(mut slot) = self.ahead.lock()
+        {
+            *slot = Some(Ahead {
+                key,
+                elevation_deg: elevation,
+                texels,
+            });
+        }
     }
 
     /// The luminance-weighted horizontal illuminance under `sky` (sky units; `exposure`): the

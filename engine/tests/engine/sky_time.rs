@@ -2,7 +2,8 @@
 //! the next step's sun and moon and in the state hash, runs repeat bit for bit, the day flows at
 //! the sky's `time_rate`, converging restarts on a jumping sun and floors on a slow one (and
 //! keeps averaging when nothing changes), the sky-view table is kept while the sun stays in one
-//! elevation step, and the sky's exposure falls as the sun climbs. CPU tracer, tiny films.
+//! elevation step (and built ahead, bit for bit, for the next), and the sky's exposure falls as
+//! the sun climbs. CPU tracer, tiny films.
 
 use candela::app::{Engine, Step, TimeChange, lighting_change};
 use candela::assets::SkyDesc;
@@ -223,6 +224,16 @@ fn the_sky_table_is_kept_within_an_elevation_step_and_rebuilt_past_it() {
     // The kept tables give the same sky as a full build at the same elevation step.
     let full = candela::sky::SkyTables::build(&sky(20.2)).unwrap();
     assert_eq!(full.texels, **baker.texels());
+    // The sun moving on steadily: the next step's table was built ahead, with the same bits.
+    assert_eq!(baker.update(&sky(20.3)).unwrap(), Baked::Ahead);
+    let full = candela::sky::SkyTables::build(&sky(20.3)).unwrap();
+    assert_eq!(full.texels, **baker.texels());
+    // Turning back: the table built ahead (20.4) is not the one needed; built on the spot.
+    assert_eq!(baker.update(&sky(20.2)).unwrap(), Baked::View);
+    assert_eq!(
+        candela::sky::SkyTables::build(&sky(20.2)).unwrap().texels,
+        **baker.texels()
+    );
     assert_eq!(
         baker
             .update(&PhysicalSky {
@@ -249,6 +260,10 @@ fn the_sky_exposure_falls_as_the_sun_climbs_and_noon_and_night_both_read() {
         evs.push((elevation, ev));
         assert!(ev.is_finite() && ev <= last, "{evs:?}");
         last = ev;
+    }
+    // Printed for docs/ACCURACY.md ("Exposure from the sky"): `--no-capture`.
+    for (e, ev) in &evs {
+        println!("sun {e:5.1} deg: exposure {ev:6.2} EV");
     }
     let at = |e: f32| evs.iter().find(|(x, _)| *x == e).unwrap().1;
     assert!(
