@@ -60,6 +60,12 @@ impl Queries<'_> {
         }
     }
 
+    /// Whether the scene holds no instance yet (the first fixed steps of a level run before
+    /// its first commit): a ray then meets nothing, which says nothing about the world.
+    pub fn is_empty(&self) -> bool {
+        self.upkeep.scene().instances.is_empty()
+    }
+
     /// The closest hit of `ray` (world space; `t_min < t < t_max`).
     pub fn closest(&self, ray: &Ray) -> Option<QueryHit> {
         let scene = self.upkeep.scene();

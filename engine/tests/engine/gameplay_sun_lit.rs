@@ -59,6 +59,9 @@ fn a_slot_in_a_walls_shadow_is_lit_only_when_the_sun_comes_round() -> anyhow::Re
             .collect())
     };
     let west = lit_towards(&mut engine, [-1.0, 0.5, 0.0])?;
+    // The first step ran before the level's first commit, on an empty query scene: the shaded
+    // slot must not have counted as lit then (its rule would have risen and fallen).
+    let shaded_fired_early = engine.logic().rule_fired("shaded_lit");
     let east = lit_towards(&mut engine, [1.0, 0.5, 0.0])?;
     let west_again = lit_towards(&mut engine, [-1.0, 0.4, 0.0])?;
     let _ = std::fs::remove_dir_all(&dir);
@@ -68,6 +71,7 @@ fn a_slot_in_a_walls_shadow_is_lit_only_when_the_sun_comes_round() -> anyhow::Re
         [false, true],
         "sun in the west: the wall shades the slot"
     );
+    assert!(!shaded_fired_early, "the shaded slot was lit before the scene held the wall");
     assert_eq!(east, [true, true], "sun in the east: both slots lit");
     assert_eq!(west_again, [false, true], "the shadow comes back");
     Ok(())

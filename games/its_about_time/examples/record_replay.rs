@@ -57,7 +57,12 @@ fn main() -> anyhow::Result<()> {
     let world = RuinsWorld::open(None)?;
     let out = full_game(world.root.path());
     let mut game = TimeGame::new(world.clone());
-    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.inner().environment())?;
+    // As the harness replays it: the sky's table follows the turned sun on a worker thread.
+    let render = RenderConfig {
+        sky_rebuild: candela::scene::SkyRebuild::Background,
+        ..RenderConfig::cpu(16, 9)
+    };
+    let mut engine = Engine::new(render, game.inner().environment())?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     engine.set_step_input(StepInput::record(recorder(&world)?, &out));

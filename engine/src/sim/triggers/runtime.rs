@@ -352,11 +352,16 @@ fn sun_volumes(c: &Condition, read: &mut [bool]) {
 }
 
 /// Whether the centre of `volume`'s entity sees the sun towards `sun` (unit): a query ray
-/// meets nothing but the volume's own instance and laser beams.
+/// meets nothing but the volume's own instance and laser beams. Never before the scene holds
+/// the level (the steps before the first commit would otherwise see the sun through
+/// everything).
 fn sees_sun(world: &World, queries: &Queries<'_>, volume: Entity, sun: Vec3) -> bool {
     let Some(placed) = world_from_model(world, volume) else {
         return false;
     };
+    if queries.is_empty() {
+        return false;
+    }
     let ray = Ray::new(placed.w_axis.truncate(), sun);
     queries
         .closest_where(&ray, |e| {
