@@ -176,16 +176,24 @@ fn a_body_walked_through_the_water_leaves_ripples_along_its_path() {
     }
     let settled = mean_square(&world, water, -4.0..-1.0);
     let mut along = Vec::new();
+    // Printed for docs/PERFORMANCE.md, never asserted.
+    let mut stepping = std::time::Duration::ZERO;
     for step in 1..=300 {
         let x = -4.0 + 1.2 * step as f32 * DT;
         move_to(&mut world, wader, Vec3::new(x, 0.4, 0.0));
+        let started = std::time::Instant::now();
         water_system(&mut world, f64::from(DT));
+        stepping += started.elapsed();
         if step % 75 == 0 {
             // The stretch walked so far, up to 0.5 m behind the body.
             along.push(mean_square(&world, water, -4.0..x - 0.5));
         }
     }
     println!("mean square heights along the path: start {settled}, then {along:?} m²");
+    println!(
+        "water_system, 96 x 96 quads, one wader: {:.1} µs per fixed step",
+        stepping.as_secs_f64() * 1e6 / 300.0
+    );
     assert!(along[0] > 1e-6, "no ripples behind the body: {along:?}");
     assert!(
         along.iter().all(|&m| m > 100.0 * settled.max(1e-12)),
