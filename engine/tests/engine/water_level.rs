@@ -6,11 +6,12 @@
 
 use std::path::{Path, PathBuf};
 
-use candela::app::{Engine, Environment, Step};
+use candela::app::{Engine, Environment, Phase, Step};
 use candela::assets::AssetRoot;
 use candela::ecs::Transform;
 use candela::level::load_level;
 use candela::render::RenderConfig;
+use candela::sim::physics::CharacterInput;
 use candela::sim::water::WaterSim;
 use glam::Vec3;
 
@@ -67,6 +68,9 @@ struct Run {
     hashes: Vec<u64>,
     heights: Vec<Vec<f32>>,
     bytes: Vec<usize>,
+    /// Seconds per frame in the pose and upkeep phases (printed, never asserted).
+    pose: Vec<f64>,
+    upkeep: Vec<f64>,
     scene_heights: Vec<f32>,
     hash_sees_water: bool,
 }
@@ -82,6 +86,8 @@ fn run(frames: usize) -> anyhow::Result<Run> {
         hashes: Vec::new(),
         heights: Vec::new(),
         bytes: Vec::new(),
+        pose: Vec::new(),
+        upkeep: Vec::new(),
         scene_heights: Vec::new(),
         hash_sees_water: false,
     };
@@ -96,6 +102,8 @@ fn run(frames: usize) -> anyhow::Result<Run> {
         let report = engine.frame(1.0 / 60.0, &mut walk)?;
         let _ = engine.rendered();
         out.bytes.push(report.commit_bytes);
+        out.pose.push(report.phases.get(Phase::Pose));
+        out.upkeep.push(report.phases.get(Phase::Upkeep));
         out.hashes.push(engine.state_hash());
         let sim = engine.world().get::<&WaterSim>(pool)?;
         out.heights.push(sim.field.heights().to_vec());
@@ -137,6 +145,12 @@ fn two_runs_of_a_wading_level_agree_at_every_frame() -> anyhow::Result<()> {
     let max = bytes.iter().max().copied().unwrap_or(0);
     println!(
         "96x96 simulated water, a wader and a ball: commit bytes per frame mean {mean}, max {max}"
+    );
+    let ms = |v: &[f64]| v[60..].iter().sum::<f64>() * 1e3 / (v.len() - 60) as f64;
+    println!(
+        "per frame: pose {:.3} ms (swell + ripples + normals), upkeep {:.3} ms (refit)",
+        ms(&a.pose),
+        ms(&a.upkeep)
     );
     Ok(())
 }
@@ -251,4 +265,78 @@ fn simulating_a_model_that_is_not_a_grid_is_refused() {
     for part in ["not_grid.ron", "instance 3", "grid model", "\"ball\""] {
         assert!(message.contains(part), "{part:?} missing from: {message}");
     }
+}
+
+/// The explorer (the skinned hero, `common/hero/hero.glb`) walks 3 s through the pool,
+/// thigh deep, then stands: the ripples come from the character's capsule through the physics
+/// world, and the commit with the water, the explorer and a falling ball stays within
+/// Brigade's 2 MB.
+#[test]
+fn the_explorer_wading_leaves_ripples_and_the_commit_stays_under_2_mb() -> anyhow::Result<()> {
+    let assets = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../assets");
+    let dir = Dir::new("hero");
+    let hero = r#"characters: [(name: "hero", model: "common/hero/hero.glb", model_yaw_deg: 180,
+        spawn: (-4, -0.6, 0), capsule: (height: 1.8, radius: 0.3),
+        controller: (walk_speed: 2, run_speed: 5, jump_speed: 4),
+        states: [(name: "idle", clip: "idle", contact: Grounded, max_speed_mps: 0.3),
+                 (name: "walk", clip: "walk", contact: Grounded, min_speed_mps: 0.3)])],
+)"#;
+    let text = level("(96, 96)", WAVES)
+        .trim_end()
+        .trim_end_matches(')')
+        .to_string()
+        + hero;
+    let path = dir.write("hero.ron", &text);
+    let level = load_level(&path, &AssetRoot::new(&assets)?)?;
+    let mut engine = Engine::new(RenderConfig::cpu(16, 9), Environment::of(&level.scene))?;
+    let spawned = engine.spawn_level(&level);
+    let (pool, body) = (spawned.by_name["pool"], spawned.characters["hero"].body);
+    let worst = |engine: &Engine| -> anyhow::Result<f32> {
+        let sim = engine.world().get::<&WaterSim>(pool)?;
+        Ok(sim
+            .field
+            .heights()
+            .iter()
+            .fold(0.0f32, |m, h| m.max(h.abs())))
+    };
+    // Ten seconds standing (the entry ring dies down), three walking, twenty standing.
+    let mut bytes = Vec::new();
+    let mut walked = 0.0f32;
+    let mut standing = 0.0f32;
+    for frame in 0..1980 {
+        let walking = (600..780).contains(&frame);
+        let mut steer = |step: &mut Step<'_>| {
+            if let Ok(mut input) = step.world.get::<&mut CharacterInput>(body) {
+                input.move_direction = if walking { Vec3::X } else { Vec3::ZERO };
+            }
+        };
+        let report = engine.frame(1.0 / 60.0, &mut steer)?;
+        let _ = engine.rendered();
+        if walking {
+            bytes.push(report.commit_bytes);
+        }
+        if frame == 599 {
+            standing = worst(&engine)?;
+        }
+        if frame == 779 {
+            walked = worst(&engine)?;
+        }
+    }
+    let settled = worst(&engine)?;
+    let feet = engine.world().get::<&Transform>(body)?.translation;
+    let max = bytes.iter().max().copied().unwrap_or(0);
+    println!(
+        "explorer: ripples {standing} m standing, {walked} m after walking, {settled} m settled; \
+         body at {feet}; commit bytes while walking: max {max}"
+    );
+    assert!(feet.x > -1.0, "the explorer did not walk: {feet}");
+    assert!(walked > 1e-3, "no wake: {walked} m");
+    assert!(
+        walked > 10.0 * standing,
+        "standing {standing} m vs walking {walked} m"
+    );
+    assert!(settled < 0.1 * walked, "still rippling: {settled} m");
+    assert!(max > 0 && max < 2_000_000, "commit {max} bytes");
+    drop(engine.shutdown());
+    Ok(())
 }
