@@ -121,7 +121,7 @@ pub(super) fn check_simulated_water(
     }
     let (dx, dz) = (grid.size[0] / nx as f32, grid.size[1] / nz as f32);
     let courant = sim.courant(VALIDATED_STEP_SECONDS, dx, dz);
-    if !(courant < 1.0) {
+    if courant.is_nan() || courant >= 1.0 {
         let limit = sim.wave_speed / courant;
         return Err(format!(
             "{}: {} m/s breaks the CFL limit on grid {:?} (cells {dx} × {dz} m, 1/60 s step, \

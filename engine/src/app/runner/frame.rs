@@ -136,8 +136,9 @@ impl Engine {
         steps
     }
 
-    /// One fixed step: game rules → physics → water ripples → characters' animation states → skinned
-    /// animation players → level logic and its effects → level events to the game → audio.
+    /// One fixed step: game rules → physics → water ripples → characters' animation states →
+    /// skinned animation players → level logic and its effects → level events to the game →
+    /// audio.
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();

@@ -32,7 +32,7 @@ impl GridLayout {
     pub fn infer(base: &[Vec3]) -> Option<Self> {
         let origin = *base.first()?;
         let columns = base.iter().take_while(|p| p.z == origin.z).count();
-        if columns < 3 || base.len() % columns != 0 || base.len() / columns < 3 {
+        if columns < 3 || !base.len().is_multiple_of(columns) || base.len() / columns < 3 {
             return None;
         }
         let rows = base.len() / columns;
