@@ -133,6 +133,11 @@ pub struct WaveDesc {
     pub wavelength: f32,
     /// Metres per second.
     pub speed: f32,
+    /// Also simulate ripples on the grid (a damped wave equation in the fixed steps, pushed by
+    /// whatever wades), added on top of the two sine waves; none by default. See
+    /// [`super::WaterSimDesc`].
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub simulate: Option<super::WaterSimDesc>,
 }
 
 /// Scale, then rotate, then translate. Rotation: Euler angles in degrees, applied as yaw about

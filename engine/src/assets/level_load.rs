@@ -111,6 +111,7 @@ pub fn scene_from_level(
                 instance.model
             )));
         }
+        super::level_water::check_simulated_water(level, i, instance).map_err(level_error)?;
         instances.push(SceneInstance {
             model,
             world_from_model,

@@ -60,6 +60,8 @@ pub use level_gameplay::{
     GameplayEntry, LaserEntry, MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
 };
 mod level_load;
+mod level_water;
+pub use level_water::{VALIDATED_STEP_SECONDS, WaterSimDesc};
 mod level_shapes;
 mod needs;
 pub use level_load::{load_scene, scene_from_level};

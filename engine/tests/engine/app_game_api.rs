@@ -264,6 +264,7 @@ fn level_waves_move_in_the_engine_frame() {
             amplitude: 0.2,
             wavelength: 2.0,
             speed: 1.0,
+            simulate: None,
         }),
         ..SceneInstance::placed(0, Mat4::IDENTITY)
     }];

@@ -111,4 +111,6 @@ mod structure_layers;
 mod trace_agreement;
 mod upkeep_camera_motion;
 mod upkeep_equivalence;
+mod water_level;
+mod water_sim;
 mod work_report;

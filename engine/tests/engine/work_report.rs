@@ -188,6 +188,7 @@ fn deforming_mesh_costs_a_refit_per_frame() {
             amplitude: 0.1,
             wavelength: 1.0,
             speed: 1.0,
+            simulate: None,
         },
         positions.clone(),
     );

@@ -254,6 +254,7 @@ pub fn demo_level() -> Level {
         amplitude: 0.08,
         wavelength: 3.0,
         speed: 1.2,
+        simulate: None,
     });
     instances.push(pool);
     lamps(&city, &mut instances);

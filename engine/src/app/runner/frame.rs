@@ -22,6 +22,7 @@ use crate::ecs::propagate_transforms;
 use crate::scene::{SceneHeader, SceneWrite};
 use crate::sim::animation::{animate_characters, deform_skinned, tick_skinned};
 use crate::sim::triggers::Effect;
+use crate::sim::water::water_system;
 
 /// What the upkeep phase leaves for sealing.
 struct Prepared {
@@ -135,15 +136,16 @@ impl Engine {
         steps
     }
 
-    /// One fixed step: game rules → physics → characters' animation states → skinned
-    /// animation players → level logic and its effects → level events to the game → the day
-    /// flows (`time_of_day.rs`) → audio.
+    /// One fixed step: game rules → physics → water ripples → characters' animation states →
+    /// skinned animation players → level logic and its effects → level events to the game →
+    /// the day flows (`time_of_day.rs`) → audio.
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();
         game.fixed_step(&mut self.step_view(index));
         self.carry_out_commands();
         self.physics.step(&mut self.world, dt);
+        water_system(&mut self.world, dt);
         animate_characters(&mut self.world, dt);
         tick_skinned(&mut self.world, dt);
         let ended_before = self.logic.outcome().is_some();

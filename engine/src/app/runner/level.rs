@@ -25,6 +25,7 @@ use crate::level::{PlayableCharacter, PlayableLevel};
 use crate::sim::animation::{CharacterAnimation, SkinnedAnimator};
 use crate::sim::physics::{Breakable, SensorContacts, character_bundle};
 use crate::sim::triggers::{LevelLogic, beam_model, spawn_beam_pool};
+use crate::sim::water::WaterSim;
 
 impl Engine {
     /// Registers the level's models and materials with the upkeep and spawns one entity per
@@ -84,6 +85,15 @@ impl Engine {
                     dirty: false,
                 };
                 let _ = self.world.insert(entity, (waves, deformable));
+                if let Some(sim) = desc_waves.simulate {
+                    match WaterSim::on_grid(&mesh.positions, sim) {
+                        Some(water) => drop(self.world.insert_one(entity, water)),
+                        None => log::error!(
+                            "{}: instance {i}: waves.simulate needs a regular grid mesh",
+                            desc.source.display()
+                        ),
+                    }
+                }
             }
             if let Some(Some(physics)) = level.bodies.get(i) {
                 let _ = self

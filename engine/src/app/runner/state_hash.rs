@@ -9,8 +9,9 @@
 //! body's pose, linear and angular velocity and sleep state in entity order
 //! (`PhysicsWorld::state_words`); the level logic's state (`LevelLogic::state_words`: steps,
 //! outcome, rule states, volume occupants, clip playheads, pending events); the light groups
-//! switched off; a physical sky's time of day (date, UTC hours, day rate) or sun angles. Not
-//! covered: rendering (images, converging), audio output, wall-clock time,
+//! switched off; a physical sky's time of day (date, UTC hours, day rate) or sun angles; every
+//! simulated water's heights, speeds and waders' push (`HeightField::state_words`) in entity
+//! order. Not covered: rendering (images, converging), audio output, wall-clock time,
 //! and the game's own fields outside the world (a game hashes those itself).
 //!
 //! Main thread, between frames. Must not: change anything.
@@ -18,6 +19,7 @@
 use super::engine::Engine;
 use crate::ecs::Transform;
 use crate::sim::physics::{Carrier, CharacterState};
+use crate::sim::water::WaterSim;
 
 /// FNV-1a over 64-bit words.
 struct Fnv(u64);
@@ -84,6 +86,17 @@ impl Engine {
         for w in self.logic.state_words() {
             h.word(w);
         }
+        let mut waters: Vec<(u64, &WaterSim)> = Vec::new();
+        let mut query = self.world.query::<(hecs::Entity, &WaterSim)>();
+        waters.extend(query.iter().map(|(e, w)| (e.to_bits().get(), w)));
+        waters.sort_by_key(|(e, _)| *e);
+        for (e, water) in waters {
+            h.word(e);
+            for w in water.field.state_words() {
+                h.word(w);
+            }
+        }
+        drop(query);
         for group in 0..64 {
             h.word(u64::from(self.upkeep.light_group_on(group)));
         }

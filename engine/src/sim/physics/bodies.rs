@@ -22,7 +22,7 @@ use rapier3d::prelude::{
 };
 
 use super::character::CharacterController;
-use super::convert::{pose_from_rapier, pose_to_rapier, vec_to_rapier};
+use super::convert::{pose_from_rapier, pose_to_rapier, vec_from_rapier, vec_to_rapier};
 use super::shapes::{ColliderShape, ShapeError};
 use crate::ecs::Transform;
 
@@ -140,6 +140,16 @@ impl Collider {
     pub fn as_sensor(mut self) -> Self {
         self.sensor = true;
         self
+    }
+
+    /// The shape's axis-aligned bounds in the body's frame, `offset` included: (centre, half
+    /// extents), metres. For whatever needs a body's extent without rapier (water waders).
+    pub fn local_bounds(&self) -> (Vec3, Vec3) {
+        let aabb = self.shape.compute_local_aabb();
+        (
+            self.offset + vec_from_rapier(aabb.center()),
+            vec_from_rapier(aabb.half_extents()),
+        )
     }
 }
 
