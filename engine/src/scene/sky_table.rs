@@ -54,7 +54,9 @@ pub struct SkyTable {
 
 impl std::fmt::Debug for Rebuilding {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Rebuilding").field("sky", &self.sky).finish()
+        f.debug_struct("Rebuilding")
+            .field("sky", &self.sky)
+            .finish()
     }
 }
 
@@ -94,8 +96,7 @@ impl SkyTable {
                 let background = how == SkyRebuild::Background
                     && !self.texels.is_empty()
                     && self.built.is_some_and(|b| {
-                        (b.haze, b.ozone, b.ground_albedo)
-                            == (p.haze, p.ozone, p.ground_albedo)
+                        (b.haze, b.ozone, b.ground_albedo) == (p.haze, p.ozone, p.ground_albedo)
                     });
                 if !background {
                     self.rebuilding = None;

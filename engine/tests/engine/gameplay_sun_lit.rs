@@ -71,7 +71,10 @@ fn a_slot_in_a_walls_shadow_is_lit_only_when_the_sun_comes_round() -> anyhow::Re
         [false, true],
         "sun in the west: the wall shades the slot"
     );
-    assert!(!shaded_fired_early, "the shaded slot was lit before the scene held the wall");
+    assert!(
+        !shaded_fired_early,
+        "the shaded slot was lit before the scene held the wall"
+    );
     assert_eq!(east, [true, true], "sun in the east: both slots lit");
     assert_eq!(west_again, [false, true], "the shadow comes back");
     Ok(())

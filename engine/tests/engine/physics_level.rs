@@ -225,7 +225,9 @@ fn root_of(level: &Path, assets: &Path) -> PathBuf {
             .join("reference")
             .join(level.file_stem().unwrap_or_default()),
         Some("test_scenes/bench") => external.join("obj"),
-        Some("test_scenes/gameplay") | Some("reflect") => assets.to_path_buf(),
+        Some("test_scenes/gameplay") | Some("reflect") | Some("its_about_time") => {
+            assets.to_path_buf()
+        }
         _ => assets.join("test_scenes"),
     }
 }
