@@ -35,6 +35,10 @@ pub struct Args {
     /// Windowed: take screenshots (title.png, then play.png) into this folder, then quit.
     #[arg(long)]
     pub screenshots: Option<PathBuf>,
+    /// With --replay and --screenshots: the frames (counted from the start of play, ascending)
+    /// to take `play_<frame>.png` at, instead of one `play.png` at frame 400.
+    #[arg(long, value_delimiter = ',')]
+    pub shots_at: Vec<u32>,
     /// Windowed: show the stats overlay from the start (F3 toggles it).
     #[arg(long)]
     pub stats: bool,
@@ -45,6 +49,26 @@ pub struct Args {
     /// Windowed: denoise each frame before it is shown (`--denoise false`: the raw film).
     #[arg(long, default_value_t = true, action = clap::ArgAction::Set)]
     pub denoise: bool,
+}
+
+/// The title, then play from the start with a shot `play_<frame>.png` at each of `frames`
+/// (ascending, counted from the start of play), then quit.
+fn replay_shots(dir: &std::path::Path, frames: &[u32]) -> Vec<candela::app::shell::Cue> {
+    use candela::app::shell::{Cue, ShellInput};
+    let mut cues = vec![
+        Cue::screenshot(20, dir.join("title.png")),
+        candela::app::harness::start_cue(LEVEL_ID),
+    ];
+    let mut at = 0;
+    for &frame in frames {
+        cues.push(Cue::screenshot(
+            frame.saturating_sub(at).max(1),
+            dir.join(format!("play_{frame}.png")),
+        ));
+        at = frame.max(at);
+    }
+    cues.push(Cue::input(2, ShellInput::Quit));
+    cues
 }
 
 /// Runs what `args` asks; returns the line to print.
@@ -76,6 +100,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     let playing_at_once = args.replay.is_some() || args.record.is_some();
     let cues = match (&args.screenshots, playing_at_once) {
+        (Some(dir), true) if !args.shots_at.is_empty() => replay_shots(dir, &args.shots_at),
         (Some(dir), true) => play_shots(dir, LEVEL_ID, 20, 400),
         (Some(dir), false) => tour_shots(dir, &[LEVEL_ID.to_string()], 30, 120),
         (None, true) => vec![candela::app::harness::start_cue(LEVEL_ID)],

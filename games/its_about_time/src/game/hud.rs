@@ -18,7 +18,10 @@ impl TimeGame {
         if self.ended() {
             "The ruins are at peace".into()
         } else if self.artifacts.len() < total {
-            if self.artifacts.is_empty() {
+            if self.artifacts.is_empty() && self.gate_open {
+                "The sun gate stands open: take what lies behind it before the light moves on"
+                    .into()
+            } else if self.artifacts.is_empty() {
                 "Find the artifacts hidden in the ruins. The sun gate opens when sunlight \
                  falls on its glyph: turn time at the sun altar"
                     .into()

@@ -68,6 +68,8 @@ pub struct TimeGame {
     messages: Vec<(u64, String)>,
     /// Whether the explorer stands at a sun altar (its prompt is up).
     at_altar: bool,
+    /// Whether the level's `sun_gate` rule holds (the gate is open).
+    gate_open: bool,
 }
 
 impl TimeGame {
@@ -91,6 +93,7 @@ impl TimeGame {
             sky: None,
             messages: Vec::new(),
             at_altar: false,
+            gate_open: false,
         }
     }
 
@@ -207,6 +210,9 @@ impl Game for TimeGame {
         self.inner.level_event(step, event);
         match event {
             LevelEvent::Rule { name, firing } => {
+                if name == "sun_gate" {
+                    self.gate_open = firing.rising;
+                }
                 if let Some(line) = day::rule_message(name, firing.rising) {
                     self.say(line);
                 }
