@@ -50,6 +50,21 @@ pub enum Happened {
     Ended(String),
 }
 
+impl Happened {
+    /// What a level event is in the log: a rule rising or falling, the level ending; `None`
+    /// for the events the log leaves out (volumes, clips).
+    pub fn of_level_event(event: &LevelEvent) -> Option<Self> {
+        match event {
+            LevelEvent::Rule { name, firing } => Some(Happened::Rule {
+                name: name.clone(),
+                rising: firing.rising,
+            }),
+            LevelEvent::Ended(outcome) => Some(Happened::Ended(format!("{outcome:?}"))),
+            _ => None,
+        }
+    }
+}
+
 /// A level played in first person.
 pub struct FirstPersonGame {
     level_path: PathBuf,
@@ -258,15 +273,9 @@ impl Game for FirstPersonGame {
     }
 
     fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
-        let happened = match event {
-            LevelEvent::Rule { name, firing } => Happened::Rule {
-                name: name.clone(),
-                rising: firing.rising,
-            },
-            LevelEvent::Ended(outcome) => Happened::Ended(format!("{outcome:?}")),
-            _ => return,
-        };
-        self.log.push((step.index, happened));
+        if let Some(happened) = Happened::of_level_event(event) {
+            self.log.push((step.index, happened));
+        }
     }
 
     fn has_ui(&self) -> bool {

@@ -227,15 +227,9 @@ impl Game for ThirdPersonGame {
     }
 
     fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
-        let happened = match event {
-            LevelEvent::Rule { name, firing } => Happened::Rule {
-                name: name.clone(),
-                rising: firing.rising,
-            },
-            LevelEvent::Ended(outcome) => Happened::Ended(format!("{outcome:?}")),
-            _ => return,
-        };
-        self.log.push((step.index, happened));
+        if let Some(happened) = Happened::of_level_event(event) {
+            self.log.push((step.index, happened));
+        }
     }
 
     fn shell(&mut self) -> Option<&mut dyn ShellHooks> {
