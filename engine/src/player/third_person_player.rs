@@ -78,11 +78,11 @@ impl ThirdPersonPlayer {
         };
         // Place the camera behind the character before the first step.
         let centre = player.centre(world, None);
-        let pose = player.follow.rotation();
+        let rotation = player.follow.rotation();
         let pivot = centre + Vec3::Y * player.follow.pivot_height_m;
         if let Ok(mut t) = world.get::<&mut Transform>(camera) {
-            t.translation = pivot + pose * Vec3::Z * player.follow.current_m;
-            t.rotation = pose;
+            t.translation = pivot + rotation * Vec3::Z * player.follow.current_m;
+            t.rotation = rotation;
         }
         player
     }

@@ -20,7 +20,7 @@ use std::sync::mpsc::{Receiver, TryRecvError, channel};
 use std::sync::{Arc, Mutex};
 
 use crate::assets::SkyDesc;
-use crate::sky::{PhysicalSky, SkyBaker, table_elevation_deg};
+use crate::sky::{PhysicalSky, SkyBaker};
 
 /// How [`SkyTable::update_with`] waits for a rebuild.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -47,8 +47,6 @@ pub struct SkyTable {
     /// `sky::VIEW_WIDTH × sky::VIEW_HEIGHT` texels (layout in `sky::sky_view`); empty when the
     /// sky is not physical.
     pub texels: Arc<Vec<[f32; 4]>>,
-    /// The physical sky the texels were built for (lags `source` while a rebuild runs).
-    built: Option<PhysicalSky>,
     rebuilding: Option<Arc<Rebuilding>>,
 }
 
@@ -58,18 +56,6 @@ impl std::fmt::Debug for Rebuilding {
             .field("sky", &self.sky)
             .finish()
     }
-}
-
-/// Whether `a` and `b` need different sky-view tables or atmospheres (not merely another sun
-/// azimuth or a sun within the same elevation step).
-fn needs_rebuild(a: &PhysicalSky, b: &PhysicalSky) -> bool {
-    let elevation = |s: &PhysicalSky| {
-        s.sun_horizontal()
-            .map(|h| table_elevation_deg(h.elevation_deg))
-            .ok()
-    };
-    (a.haze, a.ozone, a.ground_albedo) != (b.haze, b.ozone, b.ground_albedo)
-        || elevation(a) != elevation(b)
 }
 
 impl SkyTable {
@@ -95,30 +81,21 @@ impl SkyTable {
                 self.source = Some(*p);
                 let background = how == SkyRebuild::Background
                     && !self.texels.is_empty()
-                    && self.built.is_some_and(|b| {
-                        (b.haze, b.ozone, b.ground_albedo) == (p.haze, p.ozone, p.ground_albedo)
-                    });
+                    && self.baker.holds_atmosphere_of(p);
                 if !background {
                     self.rebuilding = None;
                     return self.build_here(p) || changed;
                 }
-                if let Some(built) = &self.built
-                    && !needs_rebuild(built, p)
-                {
-                    // The table held serves this sky: nothing to build (a rebuild for an
-                    // older sun that is still running is then out of date).
+                if !self.baker.needs_update(p) {
+                    // The table held serves this sky: a rebuild for another sun that is
+                    // still running is out of date.
                     self.rebuilding = None;
-                    self.built = Some(*p);
-                    let _ = self.baker.update(p);
-                    return changed;
-                }
-                if self.rebuilding.is_none() {
+                } else if self.rebuilding.is_none() {
                     self.start(*p);
                 }
             }
             _ => {
                 self.rebuilding = None;
-                self.built = None;
                 if self.source.take().is_some() {
                     self.texels = Arc::default();
                     changed = true;
@@ -133,14 +110,10 @@ impl SkyTable {
         let before = Arc::clone(&self.texels);
         match self.baker.update(p) {
             // A kept table keeps its `Arc`: the GPU upload compares pointers.
-            Ok(_) => {
-                self.texels = self.baker.texels().clone();
-                self.built = Some(*p);
-            }
+            Ok(_) => self.texels = self.baker.texels().clone(),
             Err(_) => {
                 self.baker.clear();
                 self.texels = Arc::default();
-                self.built = None;
             }
         }
         !Arc::ptr_eq(&before, &self.texels)
@@ -182,10 +155,9 @@ impl SkyTable {
             Ok(baker) => {
                 self.baker = baker;
                 self.texels = self.baker.texels().clone();
-                self.built = Some(rebuilding.sky);
                 self.rebuilding = None;
                 if let Some(wanted) = self.source
-                    && needs_rebuild(&rebuilding.sky, &wanted)
+                    && self.baker.needs_update(&wanted)
                 {
                     self.start(wanted);
                 }
@@ -202,5 +174,46 @@ impl SkyTable {
     /// Whether a background rebuild is under way (the texels lag the sky asked for).
     pub fn rebuilding(&self) -> bool {
         self.rebuilding.is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn sky_at(elevation_deg: f32) -> SkyDesc {
+        SkyDesc::Physical(PhysicalSky {
+            sun_elevation_deg: elevation_deg,
+            ..PhysicalSky::default()
+        })
+    }
+
+    #[test]
+    fn a_background_rebuild_keeps_the_table_until_done_then_matches_a_blocking_one() {
+        let how = SkyRebuild::Background;
+        let mut table = SkyTable::default();
+        // The first table of a sky is built on the spot.
+        assert!(table.update_with(&sky_at(20.0), how));
+        assert!(!table.texels.is_empty() && !table.rebuilding());
+        let held = Arc::clone(&table.texels);
+        // The sun moves to another step: the update returns at once with the table held.
+        let moved = sky_at(35.0);
+        assert!(!table.update_with(&moved, how));
+        assert!(table.rebuilding() && Arc::ptr_eq(&held, &table.texels));
+        // A later update installs the finished table (a bound on waiting, not on speed).
+        let installed = (0..1200).any(|_| {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+            table.update_with(&moved, how)
+        });
+        assert!(installed && !table.rebuilding(), "the rebuild never landed");
+        let mut blocking = SkyTable::default();
+        blocking.update(&moved);
+        assert_eq!(
+            *table.texels, *blocking.texels,
+            "the same bits as a build on the spot"
+        );
+        // A sun within the same 0.1° step starts nothing.
+        assert!(!table.update_with(&sky_at(35.02), how));
+        assert!(!table.rebuilding());
     }
 }

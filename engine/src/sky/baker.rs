@@ -226,6 +226,23 @@ impl SkyBaker {
         self.built_elevation_deg
     }
 
+    /// Whether the tables held were built for `sky`'s atmosphere (haze, ozone, ground albedo):
+    /// an update for it rebuilds at most the sky-view table.
+    pub fn holds_atmosphere_of(&self, sky: &PhysicalSky) -> bool {
+        self.luts.as_ref().is_some_and(|l| l.key == key(sky))
+    }
+
+    /// Whether [`SkyBaker::update`] for `sky` would build anything (another atmosphere, or the
+    /// sun in another elevation step than the table's); a sky whose sun fails its checks needs
+    /// nothing built.
+    pub fn needs_update(&self, sky: &PhysicalSky) -> bool {
+        let Ok(h) = sky.sun_horizontal() else {
+            return false;
+        };
+        !self.holds_atmosphere_of(sky)
+            || self.built_elevation_deg != Some(table_elevation_deg(h.elevation_deg))
+    }
+
     /// Forgets everything (the next update rebuilds all).
     pub fn clear(&mut self) {
         *self = Self::default();

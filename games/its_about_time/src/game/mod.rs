@@ -54,7 +54,6 @@ pub enum TimeEvent {
 
 /// It's About Time.
 pub struct TimeGame {
-    world: RuinsWorld,
     inner: ThirdPersonGame,
     /// Fixed steps played, and the one the ending came in.
     steps: u64,
@@ -70,6 +69,8 @@ pub struct TimeGame {
     at_altar: bool,
     /// Whether the level's `sun_gate` rule holds (the gate is open).
     gate_open: bool,
+    /// The artifacts the level holds, in level order.
+    in_level: Vec<String>,
 }
 
 impl TimeGame {
@@ -82,8 +83,15 @@ impl TimeGame {
             &world.path,
             world.root.clone(),
         )));
+        let in_level = world
+            .level
+            .gameplay
+            .usables
+            .iter()
+            .map(|u| u.usable.event.clone())
+            .filter(|e| e.starts_with(ARTIFACT_PREFIX))
+            .collect();
         Self {
-            world,
             inner,
             steps: 0,
             step_seconds: 1.0 / 60.0,
@@ -94,6 +102,7 @@ impl TimeGame {
             messages: Vec::new(),
             at_altar: false,
             gate_open: false,
+            in_level,
         }
     }
 
@@ -119,15 +128,8 @@ impl TimeGame {
 
     /// The artifacts the level holds (usables whose event starts with `artifact_`), in level
     /// order.
-    pub fn artifacts_in_level(&self) -> Vec<String> {
-        self.world
-            .level
-            .gameplay
-            .usables
-            .iter()
-            .map(|u| u.usable.event.clone())
-            .filter(|e| e.starts_with(ARTIFACT_PREFIX))
-            .collect()
+    pub fn artifacts_in_level(&self) -> &[String] {
+        &self.in_level
     }
 
     /// The artifacts taken so far, in order.
@@ -156,7 +158,10 @@ impl TimeGame {
     }
 
     fn say(&mut self, line: impl Into<String>) {
-        self.messages.push((self.steps, line.into()));
+        let now = self.steps;
+        self.messages
+            .retain(|(at, _)| now.saturating_sub(*at) < MESSAGE_STEPS);
+        self.messages.push((now, line.into()));
     }
 }
 
