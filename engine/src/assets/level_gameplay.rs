@@ -326,6 +326,16 @@ pub enum ConditionEntry {
     /// last commit's BVH, the one the picture is traced on) meets nothing but the volume's own
     /// instance. False in a level without a sun.
     SunLit(String),
+    /// The sun's centre stands between `at_least` and `at_most` degrees above the horizon
+    /// (a bound left out is open; at least one must be given): `SunElevation(at_most:
+    /// Some(-6.0))` holds after civil dusk, a night shrine's torches. False in a level
+    /// without a sun (a `sun`, or a physical sky that places one).
+    SunElevation {
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        at_least: Option<f32>,
+        #[serde(default, skip_serializing_if = "Option::is_none")]
+        at_most: Option<f32>,
+    },
     /// The named rule has run its `then` at least once since the level started (earlier
     /// rules in level order count in the same step).
     Fired(String),

@@ -340,7 +340,8 @@ fn rewire(c: &mut ConditionEntry, from: &str, to: &str) -> usize {
         ConditionEntry::Event(_)
         | ConditionEntry::LightsOn(_)
         | ConditionEntry::Fired(_)
-        | ConditionEntry::Counter { .. } => 0,
+        | ConditionEntry::Counter { .. }
+        | ConditionEntry::SunElevation { .. } => 0,
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)
         | ConditionEntry::AtLeast { of: cs, .. }

@@ -230,6 +230,10 @@ fn condition(n: &Names, c: &ConditionEntry, item: ItemRef) -> Result<Condition, 
         },
         ConditionEntry::LightsOn(group) => Condition::LightsOn(*group),
         ConditionEntry::SunLit(v) => Condition::SunLit(volume(v)?),
+        ConditionEntry::SunElevation { at_least, at_most } => Condition::SunElevation {
+            at_least: at_least.unwrap_or(f32::NEG_INFINITY),
+            at_most: at_most.unwrap_or(f32::INFINITY),
+        },
         ConditionEntry::Fired(rule) => {
             Condition::Fired(find(&n.rules, rule, "rule", (item, "when"))?)
         }

@@ -310,7 +310,9 @@ fn condition_names<'a>(c: &'a ConditionEntry, out: &mut Vec<(bool, &'a str)>) {
         | ConditionEntry::Sequence(cs) => cs.iter().for_each(|c| condition_names(c, out)),
         ConditionEntry::Not(c) | ConditionEntry::Times { of: c, .. } => condition_names(c, out),
         // Checked with the rules' memory (`validate_memory.rs`).
-        ConditionEntry::LightsOn(_) | ConditionEntry::Fired(_) | ConditionEntry::Counter { .. } => {
-        }
+        ConditionEntry::LightsOn(_)
+        | ConditionEntry::Fired(_)
+        | ConditionEntry::Counter { .. }
+        | ConditionEntry::SunElevation { .. } => {}
     }
 }

@@ -1,7 +1,8 @@
 //! The rules' memory in [`super::validate_level`]: counters (named once, each counter a rule
 //! uses declared), `Fired` naming a rule that exists, `Counter` conditions with a bound and an
 //! ordered range, `LightsOn` naming a light group some instance or beam belongs to, `SunLit`
-//! in a level with a sun (its own or a physical sky's), sequences with steps — and every name in `gameplay.events` waited for by some rule, so a lever that
+//! and `SunElevation` in a level with a sun (its own or a physical sky's), elevation bounds
+//! that are numbers within ±90° and ordered, sequences with steps — and every name in `gameplay.events` waited for by some rule, so a lever that
 //! sends it is never wired to nothing.
 //!
 //! Any thread (reads the level only). Must not: read files or modify the level.
@@ -76,6 +77,9 @@ pub(super) fn memory(c: &mut Problems, level: &Level, groups: &HashSet<u32>) {
                          no sun (a `sun`, or a physical sky that places one)"
                     ))
                 }
+                ConditionEntry::SunElevation { at_least, at_most } => {
+                    sun_elevation(&user, level, *at_least, *at_most)
+                }
                 ConditionEntry::Sequence(steps) if steps.is_empty() => {
                     Some(format!("{user} has a sequence without steps"))
                 }
@@ -128,5 +132,34 @@ fn walk<'a>(c: &'a ConditionEntry, out: &mut Vec<&'a ConditionEntry>) {
         | ConditionEntry::Sequence(cs) => cs.iter().for_each(|c| walk(c, out)),
         ConditionEntry::Not(c) | ConditionEntry::Times { of: c, .. } => walk(c, out),
         _ => {}
+    }
+}
+
+/// What is wrong with a `SunElevation` condition of `user` (`None`: nothing).
+fn sun_elevation(
+    user: &str,
+    level: &Level,
+    at_least: Option<f32>,
+    at_most: Option<f32>,
+) -> Option<String> {
+    let bad = |b: Option<f32>| b.is_some_and(|d| !(-90.0..=90.0).contains(&d));
+    if level.sun.is_none() && !matches!(level.sky, crate::assets::SkyDesc::Physical(_)) {
+        return Some(format!(
+            "{user} reads the sun's elevation, but the level has no sun (a `sun`, or a physical \
+             sky that places one)"
+        ));
+    }
+    match (at_least, at_most) {
+        (None, None) => Some(format!(
+            "{user} reads the sun's elevation without a bound (give at_least, at_most or both)"
+        )),
+        _ if bad(at_least) || bad(at_most) => Some(format!(
+            "{user} bounds the sun's elevation by {at_least:?} / {at_most:?} degrees: each bound \
+             must be a number from -90 to 90"
+        )),
+        (Some(lo), Some(hi)) if lo > hi => Some(format!(
+            "{user} wants the sun at least {lo}° and at most {hi}° high, which no elevation is"
+        )),
+        _ => None,
     }
 }

@@ -34,6 +34,7 @@ fn step(book: &mut RuleBook, inside: &[u32], events: &[&str], lights_off: &[u32]
         events: &events,
         lights_off,
         sun_lit: &[],
+        sun_elevation_deg: None,
     });
     (firings.iter())
         .filter(|f| f.rising)

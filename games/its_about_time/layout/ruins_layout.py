@@ -6,66 +6,17 @@ Run from the repository root: python3 games/its_about_time/layout/ruins_layout.p
 The written file is the level; edit this script (or the level in the F1 editor) and re-record the
 replay (cargo run --release -p its_about_time --example record_replay). Metres, degrees; x east,
 y up, z south (north is -Z)."""
-import math, pathlib
+import math
+import pathlib
+
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from kit import (BLOCK, add, artifact_rules, box_piece, breakables, clip, clips, column, counters,
+                 events, inst, lights_off, materials, rules, usables, volumes, wall)
+import puzzles
 
 OUT = pathlib.Path("assets/its_about_time/ruins.ron")
-inst = []
-
-def add(model, x, y, z, name=None, rot=(0, 0, 0), scale=None, body="Static(shape: Box)", dynamic=False):
-    s = f'(model: "{model}"'
-    if name:
-        s += f', name: "{name}"'
-    t = f"translation: ({x:g}, {y:g}, {z:g})"
-    if rot != (0, 0, 0):
-        t += f", rotation_deg: ({rot[0]:g}, {rot[1]:g}, {rot[2]:g})"
-    if scale:
-        t += f", scale: ({scale[0]:g}, {scale[1]:g}, {scale[2]:g})"
-    s += f", transform: ({t})"
-    if dynamic:
-        s += ", dynamic: true"
-    if body:
-        s += f", body: {body}"
-    inst.append(s + "),")
-
-BLOCK = {"block_large": (2.4, 1.2, 1.2), "block_medium": (1.6, 0.8, 0.8), "block_small": (1.0, 0.5, 0.6)}
-
-def wall(x0, z0, x1, z1, courses, block="block_large", skip=None, prefix=None):
-    """A wall of `courses` courses of blocks from (x0, z0) to (x1, z1) (axis-aligned), every other
-    course set half a block along; `skip(s, y)` leaves out blocks whose centre is at distance s
-    along the wall and height y (a doorway)."""
-    bx, by, bz = BLOCK[block]
-    length = abs(x1 - x0) + abs(z1 - z0)
-    along_x = abs(x1 - x0) > abs(z1 - z0)
-    n = max(1, round(length / bx))
-    step = length / n
-    sx = step / bx
-    for c in range(courses):
-        offset = 0.5 * step if c % 2 else 0.0
-        k = 0
-        while True:
-            s0 = k * step - offset
-            if s0 >= length - 1e-6:
-                break
-            a, b = max(0.0, s0), min(length, s0 + step)
-            k += 1
-            if b - a < 0.3:
-                continue
-            mid = (a + b) / 2
-            y = c * by
-            if skip and skip(mid, y + by / 2):
-                continue
-            scale_len = (b - a) / bx
-            if along_x:
-                x = min(x0, x1) + mid
-                add(block, x, y, z0, scale=(scale_len, 1, 1) if abs(scale_len - 1) > 1e-3 else None)
-            else:
-                z = min(z0, z1) + mid
-                add(block, x0, y, z, rot=(0, 90, 0), scale=(scale_len, 1, 1) if abs(scale_len - 1) > 1e-3 else None)
-
-def column(x, z, drums=3):
-    for d in range(drums):
-        add("column_drum", x, d, z)
-    add("column_capital", x, drums, z)
 
 # --- The temple to the north: three tiers, steps, carved panels, torches, its altar.
 TZ = -26
@@ -112,10 +63,6 @@ t = (GX - W0) / -sun[0]
 slot_z = GZ + sun[2] * t
 slot_y = 0.01 + sun[1] * t
 SW, SH = 0.7, 0.9          # slot width (z) and height (y)
-def box_piece(x0, x1, y0, y1, z0, z1):
-    bx, by, bz = BLOCK["block_large"]
-    add("block_large", (x0 + x1) / 2, y0, (z0 + z1) / 2,
-        scale=((x1 - x0) / bx, (y1 - y0) / by, (z1 - z0) / bz))
 zs0, zs1 = slot_z - SW / 2, slot_z + SW / 2
 ys0, ys1 = slot_y - SH / 2, slot_y + SH / 2
 # West wall in four pieces round the slot.
@@ -150,14 +97,18 @@ add("torch_flame", 24.5, 1.5, -4.5, body=None)
 add("torch", 24.5, 0, 4.5)
 add("torch_flame", 24.5, 1.5, 4.5, body=None)
 
-# --- Fallen stones and low ruined walls about the plaza.
+# --- The puzzles after the sun gate (puzzles.py).
+puzzles.weights()
+puzzles.rolling_stone()
+puzzles.night_shrine()
+
+# --- Fallen stones and low ruined walls about the plaza (clear of the puzzles' ways).
 wall(-14, 6, -8, 6, 2, block="block_medium")
 wall(-14, -6, -14, 6, 1, block="block_medium")
-for (x, z, r) in [(-9, 10, 20), (8, 12, -35), (-12, -10, 10), (12, -12, 65), (-20, 2, 0)]:
+for (x, z, r) in [(8, 12, -35), (-12, -10, 10), (12, -12, 65), (-6, 20, 30)]:
     add("block_medium", x, 0, z, rot=(0, r, 0))
 add("block_large", -16, 0, -18, rot=(0, 15, 0))
 add("block_large", -16, 1.2, -18.3, rot=(0, 40, 0))
-add("boulder", 18, 0.85, 14, rot=(10, 30, 0))
 for (x, z) in [(-10, -2), (-10, -8)]:
     column(x, z, 1)
 
@@ -170,14 +121,45 @@ for tx in (-60, -20, 20, 60):
 
 PIECES = ["block_large", "block_medium", "block_small", "steps", "column_drum", "column_capital",
           "carved_panel", "lintel", "temple_tier", "torch", "torch_flame", "sun_altar", "sun_disc",
-          "glyph_tile", "glyph_glow_0", "glyph_glow_2", "boulder", "sand_terrain"]
+          "glyph_tile", "glyph_glow_0", "glyph_glow_1", "glyph_glow_2", "glyph_glow_3", "boulder",
+          "sand_terrain", "lever_base", "lever_handle", "pressure_plate", "pressure_plate_frame",
+          "push_block"] + [f"brittle_wall_piece_{i}" for i in range(9)]
 models = "\n".join(f'        (name: "{p}", path: "its_about_time/kit/{p}.gltf"),' for p in PIECES)
 
-level = f"""// It's About Time: the ruins (first slice: the temple, the sun altar and the sun gate; the other
-// four puzzles follow). Written by games/its_about_time/layout/ruins_layout.py from the kit made by
+
+def block(name, items):
+    body = "\n".join("            " + i for i in items)
+    return f"        {name}: [\n{body}\n        ],"
+
+
+# The sun gate and the artifact it guards (the first puzzle, laid out above).
+clip("gate_open", "sun_gate", "Translation", [(0, [0, 0, 0]), (2, [0, 3.4, 0])])
+clip("artifact_sun_taken", "artifact_sun", "Translation", [(0, [0, 0, 0]), (1, [0, -2.3, 0])])
+volumes[:0] = ['(name: "sun_glyph", instance: "sun_glyph", detects: [Player]),',
+               '(name: "temple_altar", instance: "temple_altar", detects: [Player]),']
+events[:0] = ["sun_altar", "artifact_sun"]
+usables[:0] = ['(instance: "sun_altar", prompt: "Hold Q or R to turn time", event: "sun_altar"),',
+               '(instance: "artifact_sun", prompt: "E  take the Sun Disc", event: "artifact_sun"),']
+ARTIFACTS = 4
+rules[:0] = [
+    '// E at the altar only rings it; holding Q or R there turns time (the game does that).',
+    '(name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "chime", at: "sun_altar", volume: 0.4)]),',
+    '(name: "sun_gate", when: SunLit("sun_glyph"), then: [Play(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")], '
+    'otherwise: [Reverse(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")]),',
+    '(name: "take_sun", when: Event("artifact_sun"), then: [Count(counter: "artifacts"), Play(clip: "artifact_sun_taken"), '
+    'Sound(sound: "chime")], once: true),',
+]
+rules.append(f'(name: "ending", when: All([Occupied("temple_altar"), Counter(counter: "artifacts", at_least: {ARTIFACTS})]), '
+             'then: [Sound(sound: "chime"), Win], once: true),')
+counters[:0] = ['(name: "artifacts"),']
+event_list = ", ".join(f'"{e}"' for e in events)
+
+level = f"""// It's About Time: the ruins: the temple, the sun altar, the sun gate, the court of weights,
+// the rolling stone and the night shrine (the water stair follows). Written by
+// games/its_about_time/layout/ruins_layout.py (with kit.py and puzzles.py) from the kit made by
 // `cargo run --release -p assetgen -- ruins-kit`; the explorer is assets/common/hero/hero.glb.
-// The replay assets/its_about_time/replays/full_game.replay carries this file's hash: re-record it
-// after a change (cargo run --release -p its_about_time --example record_replay).
+// The replays in assets/its_about_time/replays/ carry this file's hash: re-record them after a
+// change (cargo run --release -p its_about_time --example record_replay).
 // Metres, seconds, degrees; x east, y up, z south (north is -Z). 19.69 N, 98.84 W, 21 March.
 Level(
     models: [
@@ -186,6 +168,9 @@ Level(
     materials: [
         (name: "hidden", kind: Diffuse, base_color: (0.1, 0.1, 0.1)),
         (name: "plaza_sand", kind: Diffuse, base_color: (0.62, 0.47, 0.31)),
+        (name: "jade", kind: MetalRough, base_color: (0.12, 0.42, 0.26), roughness: 0.25),
+        (name: "obsidian", kind: MetalRough, base_color: (0.03, 0.03, 0.035), roughness: 0.1),
+        (name: "silver", kind: Conductor, base_color: (0.93, 0.93, 0.95), roughness: 0.08),
     ],
     boxes: [
         // A trigger volume's body: the volume is its sensor shape; the box itself is a speck.
@@ -193,7 +178,7 @@ Level(
         (name: "plaza", size: (90, 0.4, 90), material: "plaza_sand"),
     ],
     instances: [
-        {chr(10).join('        ' + i for i in inst).lstrip()}
+{chr(10).join('        ' + i for i in inst)}
     ],
     camera: (position: (0, 3, 17), look_at: (0, 1.2, 8), vertical_fov_deg: 60),
     sky: Physical((
@@ -225,34 +210,14 @@ Level(
             (name: "chime", path: "common/sounds/chime.wav"),
             (name: "door", path: "common/sounds/door_slide.wav"),
         ],
-        animations: [
-            (name: "gate_open", tracks: [(target: "sun_gate", property: Translation, interpolation: Linear,
-                keys: [(time_seconds: 0, value: [{CX0 - 0.6:g}, 0, 0]), (time_seconds: 2, value: [{CX0 - 0.6:g}, 3.4, 0])])]),
-            (name: "artifact_sun_taken", tracks: [(target: "artifact_sun", property: Translation, interpolation: Linear,
-                keys: [(time_seconds: 0, value: [22, 1.3, 0]), (time_seconds: 1, value: [22, -1, 0])])]),
-        ],
-        volumes: [
-            (name: "sun_glyph", instance: "sun_glyph", detects: [Player]),
-            (name: "temple_altar", instance: "temple_altar", detects: [Player]),
-        ],
-        counters: [(name: "artifacts")],
-        events: ["sun_altar", "artifact_sun"],
-        usables: [
-            (instance: "sun_altar", prompt: "Hold Q or R to turn time", event: "sun_altar"),
-            (instance: "artifact_sun", prompt: "E  take the Sun Disc", event: "artifact_sun"),
-        ],
-        rules: [
-            // E at the altar only rings it; holding Q or R there turns time (the game does that).
-            (name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "chime", at: "sun_altar", volume: 0.4)]),
-            (name: "sun_gate", when: SunLit("sun_glyph"),
-                then: [Play(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")],
-                otherwise: [Reverse(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")]),
-            (name: "take_sun", when: Event("artifact_sun"),
-                then: [Count(counter: "artifacts"), Play(clip: "artifact_sun_taken"), Sound(sound: "chime")],
-                once: true),
-            (name: "ending", when: All([Occupied("temple_altar"), Counter(counter: "artifacts", at_least: 1)]),
-                then: [Sound(sound: "chime"), Win], once: true),
-        ],
+{block("animations", clips)}
+{block("volumes", volumes)}
+{block("counters", counters)}
+        lights_off: [{", ".join(str(g) for g in lights_off)}],
+        events: [{event_list}],
+{block("usables", usables)}
+{block("breakables", breakables)}
+{block("rules", rules)}
     ),
 )
 """

@@ -24,7 +24,8 @@ pub const MAX_COUNTS: f32 = 40.0;
 pub enum Task {
     /// Walk to a point (x, z) until within `within` metres.
     Walk { to: Vec2, within: f32 },
-    /// Press E (every other step) until the usable sending `event` was used.
+    /// Press E (every other step) until the usable sending `event` was used once more than
+    /// when the task began (a torch lit a second time).
     Use { event: String },
     /// At an altar: hold R (`forward`) or Q until the level's rule `rule` holds, then one more
     /// second of steps with nothing held.
@@ -71,6 +72,8 @@ pub struct Bot {
     next: usize,
     waited: u32,
     toggle: bool,
+    /// How often the event of the `Use` under way had been used when it began.
+    uses_before: Option<usize>,
 }
 
 impl Bot {
@@ -80,6 +83,7 @@ impl Bot {
             next: 0,
             waited: 0,
             toggle: false,
+            uses_before: None,
         }
     }
 
@@ -96,6 +100,7 @@ impl Bot {
     fn advance(&mut self) {
         self.next += 1;
         self.waited = 0;
+        self.uses_before = None;
     }
 
     /// What to do this step.
@@ -123,12 +128,11 @@ impl Bot {
                 act.forward = error.abs() < 0.3;
             }
             Task::Use { event } => {
-                let used = game
-                    .inner()
-                    .log()
-                    .iter()
-                    .any(|(_, h)| *h == candela::app::Happened::Used(event.clone()));
-                if used {
+                let uses = (game.inner().log().iter())
+                    .filter(|(_, h)| *h == candela::app::Happened::Used(event.clone()))
+                    .count();
+                let before = *self.uses_before.get_or_insert(uses);
+                if uses > before {
                     self.advance();
                 } else {
                     self.toggle = !self.toggle;

@@ -31,6 +31,8 @@ pub struct RunSummary {
     pub state_hash: u64,
     /// Everything that happened, with the step.
     pub log: Vec<(u64, TimeEvent)>,
+    /// The level's breakables that have broken (the rolling stone's wall).
+    pub broken: usize,
 }
 
 impl RunSummary {
@@ -78,6 +80,10 @@ pub fn play_replay(world: &RuinsWorld, replay: &Path) -> anyhow::Result<RunSumma
         steps: end.engine.clock().steps,
         state_hash: end.engine.state_hash(),
         log: end.game.log().to_vec(),
+        broken: (0..)
+            .map_while(|i| end.engine.physics().broken(i))
+            .filter(|&b| b)
+            .count(),
     })?;
     Ok(summary)
 }

@@ -6,7 +6,7 @@
 //! Modules: `world` (loading the ruins), `game` (the rules: artifacts, the sun altar that
 //! turns time, the ending), `replays`, `harness` (the game as the engine's harness runs it),
 //! `headless` (a replay's summary), `bot` (the scripted explorer that records the committed
-//! replays), `cli`.
+//! replays) and `routes` (its ways through the ruins), `cli`.
 //! Main thread throughout. Must not: reach into the renderer.
 
 pub mod bot;
@@ -15,4 +15,5 @@ pub mod game;
 pub mod harness;
 pub mod headless;
 pub mod replays;
+pub mod routes;
 pub mod world;

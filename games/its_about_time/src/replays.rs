@@ -13,7 +13,13 @@ use crate::world::RuinsWorld;
 
 /// The committed recording that plays the whole game, start to ending, under `root`.
 pub fn full_game(root: &Path) -> PathBuf {
-    root.join("its_about_time/replays/full_game.replay")
+    named(root, "full_game")
+}
+
+/// The committed recording named `name` (`full_game`, or a puzzle's: see
+/// [`crate::routes::NAMES`]) under `root`.
+pub fn named(root: &Path, name: &str) -> PathBuf {
+    root.join(format!("its_about_time/replays/{name}.replay"))
 }
 
 /// Opens the recording at `path` against `world` (refused, naming the file, when it was made

@@ -1,6 +1,7 @@
 //! Broken versions of the ruins give a clear error naming the file and the item, never a
-//! panic: an artifact whose event no rule waits for (wired to nothing), an explorer missing,
-//! and a rule that counts an artifact no counter holds.
+//! panic: an artifact whose event no rule waits for (wired to nothing), a lever wired to
+//! nothing, an explorer missing, a rule that counts an artifact no counter holds, and the night
+//! shrine's torches waiting for a sun below −90°.
 
 use std::path::{Path, PathBuf};
 
@@ -32,6 +33,7 @@ fn copy_dir(from: &Path, to: &Path) -> anyhow::Result<()> {
 fn load_error(name: &str, text: &str) -> anyhow::Result<String> {
     let root = std::env::temp_dir().join(format!("iat_bad_{name}_{}", std::process::id()));
     let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
+    let _ = std::fs::remove_dir_all(&root);
     std::fs::create_dir_all(root.join("its_about_time"))?;
     for folder in ["common/hero", "common/sounds", "its_about_time/kit"] {
         copy_dir(&assets.join(folder), &root.join(folder))?;
@@ -87,5 +89,35 @@ fn a_count_of_an_unknown_counter_is_named() -> anyhow::Result<()> {
     );
     let err = load_error("counter", &text)?;
     assert!(err.contains("ruins.ron") && err.contains("relics"), "{err}");
+    Ok(())
+}
+
+#[test]
+fn a_lever_wired_to_nothing_is_named() -> anyhow::Result<()> {
+    let text = ruins()?.replace(
+        "when: Event(\"boulder_lever\")",
+        "when: Fired(\"take_sun\")",
+    );
+    assert_ne!(text, ruins()?, "the ruins have no boulder lever rule");
+    let err = load_error("lever", &text)?;
+    assert!(
+        err.contains("ruins.ron") && err.contains("boulder_lever"),
+        "{err}"
+    );
+    Ok(())
+}
+
+#[test]
+fn a_sun_below_the_nadir_is_named() -> anyhow::Result<()> {
+    let text = ruins()?.replace(
+        "Event(\"torch_eye\"), SunElevation(at_most: Some(-6))",
+        "Event(\"torch_eye\"), SunElevation(at_most: Some(-100))",
+    );
+    assert_ne!(text, ruins()?, "the ruins have no eye torch rule");
+    let err = load_error("nadir", &text)?;
+    assert!(
+        err.contains("ruins.ron") && err.contains("torch_eye") && err.contains("-90 to 90"),
+        "{err}"
+    );
     Ok(())
 }

@@ -204,6 +204,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             exposure_ev: args.exposure,
             ..Default::default()
         },
+        auto_exposure: false,
         show_stats: !args.no_stats,
         input,
         frames: args.frames,

@@ -39,6 +39,8 @@ pub fn play_windowed<C: HarnessGame>(
     let window = WindowConfig {
         title: play.title,
         show_stats: play.stats,
+        // A level under a physical sky is exposed for its time of day (noon and night read).
+        auto_exposure: true,
         ..WindowConfig::default()
     };
     let shell = ShellConfig {

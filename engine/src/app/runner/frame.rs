@@ -151,12 +151,14 @@ impl Engine {
         let ended_before = self.logic.outcome().is_some();
         let lights_off = self.upkeep.light_groups_off();
         let sun = self.sun_for_rules();
+        let sun_elevation = self.sun_elevation_for_rules();
         let effects = self.logic.step(
             &mut self.world,
             &self.physics,
             self.upkeep.queries(),
             &lights_off,
             sun,
+            sun_elevation,
             dt,
         );
         self.carry_out(effects);

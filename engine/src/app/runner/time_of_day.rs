@@ -99,6 +99,20 @@ impl Engine {
         }
     }
 
+    /// The sun's elevation above the horizon in degrees that the level's rules test
+    /// (`SunElevation`): a physical sky's sun at any height, or the level's sun; `None` without
+    /// a sun.
+    pub(in crate::app) fn sun_elevation_for_rules(&self) -> Option<f32> {
+        match &self.environment.sky {
+            SkyDesc::Physical(p) => p.sun_horizontal().ok().map(|h| h.elevation_deg as f32),
+            _ => self
+                .environment
+                .sun
+                .and_then(|s| Vec3::from(s.direction).try_normalize())
+                .map(|d| d.y.clamp(-1.0, 1.0).asin().to_degrees()),
+        }
+    }
+
     /// The sky's part of the state hash: a physical sky's time (date, UTC hours, day rate) or
     /// its sun angles; nothing for the other skies (the level fixes them).
     pub(in crate::app) fn sky_state_words(&self) -> Vec<u64> {

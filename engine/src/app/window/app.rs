@@ -369,9 +369,10 @@ impl<'g> WindowApp<'g> {
         if let Some(path) = shot.clone() {
             self.shots.push((engine.frames(), path));
         }
+        let tonemap = self.config.tonemap_now(engine);
         engine.present_next(PresentRequest {
             surface_size: (size.width, size.height),
-            tonemap: self.config.tonemap,
+            tonemap,
             vsync: running.vsync,
             overlay: built,
             screenshot: shot.is_some() || (last && self.config.screenshot.is_some()),

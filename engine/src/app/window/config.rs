@@ -32,6 +32,11 @@ pub struct WindowConfig {
     /// Vsync does not pace under Xvfb, so tests and captures rely on this.
     pub max_fps: Option<f64>,
     pub tonemap: TonemapSettings,
+    /// Expose each frame for the physical sky's light now (`Engine::sky_exposure_ev`, in
+    /// place of `tonemap.exposure_ev`: a function of the time of day, as capture scripts'
+    /// `render.auto_exposure`, so noon and night both read); with other skies, or off,
+    /// `tonemap` as it is.
+    pub auto_exposure: bool,
     /// Show the stats overlay from the start (F3 toggles).
     pub show_stats: bool,
     pub input: InputMap,
@@ -45,6 +50,21 @@ pub struct WindowConfig {
     pub stop: Arc<AtomicBool>,
 }
 
+impl WindowConfig {
+    /// The tonemap for the frame `engine` is about to present (see [`Self::auto_exposure`]).
+    pub fn tonemap_now(&self, engine: &mut crate::app::Engine) -> TonemapSettings {
+        let sky = if self.auto_exposure {
+            engine.sky_exposure_ev()
+        } else {
+            None
+        };
+        TonemapSettings {
+            exposure_ev: sky.unwrap_or(self.tonemap.exposure_ev),
+            ..self.tonemap
+        }
+    }
+}
+
 impl Default for WindowConfig {
     fn default() -> Self {
         Self {
@@ -54,6 +74,7 @@ impl Default for WindowConfig {
             vsync: true,
             max_fps: None,
             tonemap: TonemapSettings::default(),
+            auto_exposure: false,
             show_stats: true,
             input: InputMap::fly_camera_defaults(),
             frames: None,

@@ -84,7 +84,8 @@ fn volumes_of<'a>(c: &'a ConditionEntry, out: &mut Vec<&'a str>) {
         ConditionEntry::Event(_)
         | ConditionEntry::LightsOn(_)
         | ConditionEntry::Fired(_)
-        | ConditionEntry::Counter { .. } => {}
+        | ConditionEntry::Counter { .. }
+        | ConditionEntry::SunElevation { .. } => {}
         ConditionEntry::All(cs)
         | ConditionEntry::Any(cs)
         | ConditionEntry::AtLeast { of: cs, .. }

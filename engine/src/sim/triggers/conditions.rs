@@ -22,6 +22,8 @@ pub struct Facts<'a> {
     /// Per volume: its centre sees the sun (computed only for volumes a `SunLit` condition
     /// reads; `false` for the others and without a sun).
     pub sun_lit: &'a [bool],
+    /// The sun's elevation above the horizon, degrees (`None`: the level has no sun).
+    pub sun_elevation_deg: Option<f32>,
 }
 
 /// The rule book's memory, read by `Fired` and `Counter` conditions.
@@ -117,6 +119,9 @@ pub(super) fn eval(
         }
         Condition::LightsOn(group) => !facts.lights_off.contains(group),
         Condition::SunLit(v) => facts.sun_lit.get(*v).copied().unwrap_or(false),
+        Condition::SunElevation { at_least, at_most } => facts
+            .sun_elevation_deg
+            .is_some_and(|e| (*at_least..=*at_most).contains(&e)),
         Condition::Fired(rule) => memory.fired.get(*rule).copied().unwrap_or(false),
         Condition::Counter {
             counter,

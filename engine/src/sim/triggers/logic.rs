@@ -220,6 +220,7 @@ mod tests {
                     events: &[],
                     lights_off: &[],
                     sun_lit: &[],
+                    sun_elevation_deg: None,
                 })
                 .1
             })
@@ -296,6 +297,7 @@ mod tests {
             events: &["opened".to_string()],
             lights_off: &[],
             sun_lit: &[],
+            sun_elevation_deg: None,
         });
         assert_eq!(
             firings,
@@ -310,6 +312,7 @@ mod tests {
             events: &[],
             lights_off: &[],
             sun_lit: &[],
+            sun_elevation_deg: None,
         });
         assert_eq!(actions, vec![Action::Lose], "an event holds for one step");
     }

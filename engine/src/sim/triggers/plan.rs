@@ -149,6 +149,11 @@ pub enum Condition {
     LightsOn(u32),
     /// Volume (index) centre sees the sun.
     SunLit(usize),
+    /// The sun's elevation within `[at_least, at_most]` degrees (open bounds as ±∞).
+    SunElevation {
+        at_least: f32,
+        at_most: f32,
+    },
     /// Rule (index) has run its `then` at least once.
     Fired(usize),
     /// Counter (index) within `[at_least, at_most]` (open bounds as `i32::MIN`/`MAX`).

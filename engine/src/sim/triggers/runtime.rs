@@ -249,8 +249,10 @@ impl LevelLogic {
 
     /// One fixed step of `dt_seconds`, with light groups `lights_off` switched off (as the
     /// engine has them before the step; `LightsOn` conditions read them) and the sun towards
-    /// `sun` (world space, unit; `SunLit` conditions cast a query ray that way); returns the
-    /// effects the engine carries out.
+    /// `sun` (world space, unit; `SunLit` conditions cast a query ray that way) at
+    /// `sun_elevation_deg` above the horizon (`SunElevation` conditions; `None` without a
+    /// sun, while `sun` is also `None` for a sun below the horizon); returns the effects the
+    /// engine carries out.
     #[allow(clippy::too_many_arguments)]
     pub fn step(
         &mut self,
@@ -259,6 +261,7 @@ impl LevelLogic {
         queries: Queries<'_>,
         lights_off: &[u32],
         sun: Option<Vec3>,
+        sun_elevation_deg: Option<f32>,
         dt_seconds: f64,
     ) -> Vec<Effect> {
         self.steps += 1;
@@ -285,6 +288,7 @@ impl LevelLogic {
             events: &names,
             lights_off,
             sun_lit: &sun_lit,
+            sun_elevation_deg,
         });
         let mut effects = Vec::new();
         let mut action_rule = firings.iter().flat_map(|f| {

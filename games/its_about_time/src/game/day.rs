@@ -54,13 +54,42 @@ pub fn artifact_name(event: &str) -> String {
     }
 }
 
+/// Where an artifact lies and how it is won, for the objective line (by its event, as the
+/// ruins level names them).
+pub fn artifact_hint(event: &str) -> &'static str {
+    match event.trim_start_matches(super::ARTIFACT_PREFIX) {
+        "sun" => {
+            "the sun gate (east): turn time at the sun altar until sunlight falls on its glyph"
+        }
+        "weights" => "the court of weights (west): weigh down the plates carved beside its vault",
+        "stone" => "the rolling stone (south-east): pull the lever by the ramp",
+        "night" => {
+            "the night shrine (north-west): after dark, light the torches in the wall's order"
+        }
+        "water" => "the water stair: raise the pool with the levers",
+        _ => "somewhere in the ruins",
+    }
+}
+
 /// What the HUD says when one of the level's rules rises or falls (by the rule's name, as
 /// the ruins level names them), or nothing.
 pub fn rule_message(rule: &str, rising: bool) -> Option<&'static str> {
     match (rule, rising) {
         ("sun_gate", true) => Some("Sunlight falls on the glyph · the sun gate opens"),
         ("sun_gate", false) => Some("The glyph falls into shadow · the gate closes"),
+        ("weights_open", true) => Some("Stone grinds on stone · the vault of weights opens"),
+        ("boulder_released", true) => Some("The chock slides away · the boulder rolls"),
+        ("night_falls", true) => Some("Night falls over the ruins"),
+        ("night_falls", false) => Some("The sky pales · day returns"),
+        ("shrine_open", true) => Some("The torches burn in order · the shrine opens"),
         ("ending", true) => Some("The temple accepts the artifacts"),
+        (r, true) if r.starts_with("torch_") && r.ends_with("_daylight") => {
+            Some("The torch will not take in daylight · come back after dark")
+        }
+        (r, true) if r.starts_with("torch_") && r.ends_with("_wrong") => {
+            Some("The flames die · that was not the order on the wall")
+        }
+        (r, true) if r.starts_with("torch_") && r.ends_with("_lit") => Some("The torch catches"),
         _ => None,
     }
 }
@@ -90,5 +119,17 @@ mod tests {
     fn artifacts_have_names() {
         assert_eq!(artifact_name("artifact_sun"), "Sun Disc");
         assert_eq!(artifact_name("artifact_odd_one"), "odd one");
+        assert!(artifact_hint("artifact_night").contains("after dark"));
+    }
+
+    #[test]
+    fn the_torches_rules_have_words() {
+        assert!(rule_message("torch_eye_daylight", true).is_some_and(|m| m.contains("after dark")));
+        assert!(rule_message("torch_sun_wrong", true).is_some_and(|m| m.contains("order")));
+        assert_eq!(
+            rule_message("torch_sun_lit", true),
+            Some("The torch catches")
+        );
+        assert_eq!(rule_message("torch_sun_lit", false), None);
     }
 }

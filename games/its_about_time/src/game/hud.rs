@@ -12,24 +12,26 @@ use crate::world::LEVEL_ID;
 pub const ALTAR_PROMPT: &str = "Hold Q  turn time back · hold R  turn time forward";
 
 impl TimeGame {
-    /// The objective line for where the player is in the game.
+    /// The objective line for where the player is in the game: the sun gate first, then
+    /// where the next artifact not yet taken lies.
     fn objective(&self) -> String {
-        let total = self.artifacts_in_level().len();
         if self.ended() {
-            "The ruins are at peace".into()
-        } else if self.artifacts.len() < total {
-            if self.artifacts.is_empty() && self.gate_open {
+            return "The ruins are at peace".into();
+        }
+        let left: Vec<&String> = (self.artifacts_in_level().iter())
+            .filter(|a| !self.artifacts.contains(a))
+            .collect();
+        match left.first() {
+            None => "Bring the artifacts back to the temple altar".into(),
+            Some(a) if a.as_str() == "artifact_sun" && self.gate_open => {
                 "The sun gate stands open: take what lies behind it before the light moves on"
                     .into()
-            } else if self.artifacts.is_empty() {
-                "Find the artifacts hidden in the ruins. The sun gate opens when sunlight \
-                 falls on its glyph: turn time at the sun altar"
-                    .into()
-            } else {
-                "Find the remaining artifacts".into()
             }
-        } else {
-            "Bring the artifacts back to the temple altar".into()
+            Some(a) if self.artifacts.is_empty() => format!(
+                "Find the artifacts hidden in the ruins. First, {}",
+                day::artifact_hint(a)
+            ),
+            Some(a) => format!("{} to find. Next, {}", left.len(), day::artifact_hint(a)),
         }
     }
 

@@ -46,8 +46,13 @@ pub enum TimeEvent {
     Artifact(String),
     /// Time was turned at an altar by this many seconds of day in one step.
     Turned(f64),
-    /// A rule's condition rose or fell.
-    Rule { name: String, rising: bool },
+    /// A rule's condition rose or fell, at this local solar time (hours; `None` when the sky
+    /// has no time).
+    Rule {
+        name: String,
+        rising: bool,
+        hours: Option<f64>,
+    },
     /// The ending was reached.
     Ending,
 }
@@ -226,6 +231,7 @@ impl Game for TimeGame {
                     TimeEvent::Rule {
                         name: name.clone(),
                         rising: firing.rising,
+                        hours: step.sky.as_ref().and_then(day::local_hours),
                     },
                 ));
             }
