@@ -1,6 +1,7 @@
 //! The `its_about_time` binary's arguments and what each mode does: play in a window inside
 //! the engine's shell (title, HUD, pause, settings, the ending), or replay a recording headless
-//! and print one summary line (exit 0 only when it reached the ending with every artifact).
+//! and print one summary line (exit 0 only when it reached the ending with every artifact), or
+//! time each area's replay (`--bench`).
 //!
 //! Owns: [`Args`] and [`run`]. Main thread. Must not: contain game rules (`game` has them).
 
@@ -32,6 +33,13 @@ pub struct Args {
     /// 0 only if it reached the ending with every artifact.
     #[arg(long)]
     pub headless: bool,
+    /// No window: play each puzzle's committed replay in real time on the CPU tracer (640×360
+    /// output, workload scaling holding 30 fps) and print the frame figures as a Markdown table.
+    #[arg(long)]
+    pub bench: bool,
+    /// With --bench: seconds of wall time per replay.
+    #[arg(long, default_value_t = 12.0)]
+    pub bench_seconds: f64,
     /// Windowed: take screenshots (title.png, then play.png) into this folder, then quit.
     #[arg(long)]
     pub screenshots: Option<PathBuf>,
@@ -74,6 +82,9 @@ fn replay_shots(dir: &std::path::Path, frames: &[u32]) -> Vec<candela::app::shel
 /// Runs what `args` asks; returns the line to print.
 pub fn run(args: &Args) -> anyhow::Result<String> {
     let world = RuinsWorld::open(args.level.as_deref())?;
+    if args.bench {
+        return crate::bench::bench(&world, args.bench_seconds, args.denoise);
+    }
     if args.headless {
         let Some(replay) = &args.replay else {
             bail!("--headless plays a recording: give --replay FILE");
@@ -112,6 +123,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         cues,
         stats: args.stats,
         denoise: args.denoise,
+        max_exposure_ev: Some(crate::game::NIGHT_MAX_EV),
     };
     let report = play_windowed(&world, &mut game, play)?;
     Ok(format!("{} frames", report.frames))

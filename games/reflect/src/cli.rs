@@ -204,6 +204,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         cues,
         stats: args.stats,
         denoise: args.denoise,
+        max_exposure_ev: None,
     };
     let report = play_windowed(&world, &mut game, play)?;
     Ok(format!("{} frames", report.frames))

@@ -127,6 +127,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         // Denoised as Reflect is: the row kernels take 5–10 ms a frame at 320×180 on two cores
         // (docs/PERFORMANCE.md, "Denoiser time per frame"), and a 1-spp film in motion is noise.
         denoise: true,
+        max_exposure_ev: None,
     };
     // The shell's window with the render configuration game binaries share (the tracer
     // `auto` picks, 640×360 at 1 spp, holding 30 fps by workload scaling).

@@ -205,6 +205,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             ..Default::default()
         },
         auto_exposure: false,
+        max_exposure_ev: f32::INFINITY,
         show_stats: !args.no_stats,
         input,
         frames: args.frames,

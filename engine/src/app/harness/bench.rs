@@ -37,6 +37,39 @@ pub struct BenchFigures {
     pub lights: u32,
 }
 
+/// The head of a Markdown table of [`BenchFigures`]: `first` names the rows, `extra` are
+/// columns the game adds after the standard ones (cells it appends to [`table_row`]).
+pub fn table_head(first: &str, extra: &[&str]) -> String {
+    let mut out = format!("| {first} | frames | frame ms (median) | fps |");
+    for p in Phase::ALL {
+        out += &format!(" {} ms |", p.name());
+    }
+    out += " render ms | denoise ms | internal res | spp | emitters sampled |";
+    for e in extra {
+        out += &format!(" {e} |");
+    }
+    out += "\n|---|";
+    out += &"---:|".repeat(3 + Phase::ALL.len() + 5 + extra.len());
+    out + "\n"
+}
+
+/// One row of [`table_head`]'s table (no line end: a game appends its extra cells and `\n`).
+pub fn table_row(name: &str, f: &BenchFigures) -> String {
+    let mut out = format!(
+        "| {name} | {} | {:.1} | {:.1} |",
+        f.frames,
+        f.frame_ms,
+        1e3 / f.frame_ms
+    );
+    for ms in &f.phase_ms {
+        out += &format!(" {ms:.2} |");
+    }
+    out + &format!(
+        " {:.1} | {:.1} | {}×{} | {} | {} |",
+        f.render_ms, f.denoise_ms, f.film.0, f.film.1, f.spp, f.lights
+    )
+}
+
 /// The median of `v` (NaN when empty).
 pub fn median(mut v: Vec<f64>) -> f64 {
     if v.is_empty() {

@@ -25,7 +25,7 @@ pub mod soak;
 mod soak_levels;
 mod windowed;
 
-pub use bench::{BenchFigures, bench_replay, median};
+pub use bench::{BenchFigures, bench_replay, median, table_head, table_row};
 pub use capture::{SETTLE_FRAMES, capture_converged};
 pub use config::{HarnessError, HarnessGame};
 pub use first_person::FirstPersonLevel;

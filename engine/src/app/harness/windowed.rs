@@ -28,6 +28,10 @@ pub struct WindowedPlay {
     pub stats: bool,
     /// Denoise each frame before it is shown.
     pub denoise: bool,
+    /// Under a physical sky, the most exposure (stops) the sky's meter may set: the meter
+    /// reads the sky alone, so at night it would expose for starlight and blow out a
+    /// torch-lit scene (`None`: no cap).
+    pub max_exposure_ev: Option<f32>,
 }
 
 /// Plays `game` (of `config`'s game) in a window until the player or a cue quits.
@@ -41,6 +45,7 @@ pub fn play_windowed<C: HarnessGame>(
         show_stats: play.stats,
         // A level under a physical sky is exposed for its time of day (noon and night read).
         auto_exposure: true,
+        max_exposure_ev: play.max_exposure_ev.unwrap_or(f32::INFINITY),
         ..WindowConfig::default()
     };
     let shell = ShellConfig {

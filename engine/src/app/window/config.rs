@@ -37,6 +37,9 @@ pub struct WindowConfig {
     /// `render.auto_exposure`, so noon and night both read); with other skies, or off,
     /// `tonemap` as it is.
     pub auto_exposure: bool,
+    /// With `auto_exposure`: the most exposure the sky's meter may set, stops (it reads the
+    /// sky alone; a game lit by torches at night caps it).
+    pub max_exposure_ev: f32,
     /// Show the stats overlay from the start (F3 toggles).
     pub show_stats: bool,
     pub input: InputMap,
@@ -59,7 +62,7 @@ impl WindowConfig {
             None
         };
         TonemapSettings {
-            exposure_ev: sky.unwrap_or(self.tonemap.exposure_ev),
+            exposure_ev: sky.map_or(self.tonemap.exposure_ev, |ev| ev.min(self.max_exposure_ev)),
             ..self.tonemap
         }
     }
@@ -75,6 +78,7 @@ impl Default for WindowConfig {
             max_fps: None,
             tonemap: TonemapSettings::default(),
             auto_exposure: false,
+            max_exposure_ev: f32::INFINITY,
             show_stats: true,
             input: InputMap::fly_camera_defaults(),
             frames: None,

@@ -36,6 +36,12 @@ pub const ARTIFACT_PREFIX: &str = "artifact_";
 /// Seconds of day an altar turns per second held (three quarters of an hour a second).
 pub const ALTAR_RATE: f64 = 2700.0;
 
+/// The most exposure, stops, the window's sky meter may set: about what the ground a few
+/// metres from a lit torch needs (a flame of 0.1 m² at radiance 2 gives 0.02 W·m⁻² at 3 m;
+/// 0.5 / π of that × 2⁶ is mid grey), so after sunset the ruins read by torchlight instead of
+/// being exposed for the starlight the meter sees.
+pub const NIGHT_MAX_EV: f32 = 6.0;
+
 /// Fixed steps a HUD message stays up (3 s at 60 steps per second).
 const MESSAGE_STEPS: u64 = 180;
 

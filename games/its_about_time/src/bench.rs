@@ -1,0 +1,40 @@
+//! `its_about_time --bench`: each area of the ruins played from its puzzle's committed replay
+//! (`assets/its_about_time/replays/<puzzle>.replay`) in real time, headless, as the game plays
+//! it — the CPU tracer at 640×360 output with workload scaling holding 30 fps, the denoiser on,
+//! the sky following turned time on a worker thread — measuring the frame time split by phase
+//! (scene upkeep is the per-frame BVH upkeep with the explorer, the water and every mover), the
+//! internal resolution and samples per pixel the scaling settles on, and the emitters the light
+//! sampling holds. Printed as a Markdown table (`docs/PERFORMANCE.md`).
+//!
+//! Each run is the engine harness's (`candela::app::harness::bench_replay`); the game chooses
+//! the render configuration and lays out the table.
+//!
+//! Owns: [`bench`]. Main thread (the render thread renders). Must not: change the game.
+
+use candela::app::harness::{bench_replay, table_head, table_row};
+use candela::render::scaling::ScalingTarget;
+use candela::render::{RenderConfig, TracerChoice};
+
+use crate::replays::named;
+use crate::routes::NAMES;
+use crate::world::RuinsWorld;
+
+/// Plays every puzzle's replay on `world` for at most `seconds` of wall time each; returns the
+/// Markdown table.
+pub fn bench(world: &RuinsWorld, seconds: f64, denoise: bool) -> anyhow::Result<String> {
+    let mut out = table_head("area (replay)", &[]);
+    for name in NAMES.iter().filter(|n| **n != "full_game") {
+        let config = RenderConfig {
+            tracer: TracerChoice::Cpu,
+            denoise,
+            scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+            sky_rebuild: candela::scene::SkyRebuild::Background,
+            ..RenderConfig::cpu(640, 360)
+        };
+        let replay = named(world.root.path(), name);
+        let f = bench_replay(world, &replay, config, seconds)?;
+        out += &(table_row(name, &f) + "\n");
+        eprintln!("{name}: done");
+    }
+    Ok(out)
+}
