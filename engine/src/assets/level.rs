@@ -13,7 +13,7 @@
 //!     instances: [(model: "box")],
 //!     camera: (position: (0, 1, 3.8), look_at: (0, 1, 0), vertical_fov_deg: 40),
 //!     sky: Constant((0, 0, 0)),
-//!     render: (max_bounces: 7),
+//!     render: (max_bounces: 7, target_fps: 30, min_scale: 0.25),
 //!     needs: (emitters: true),
 //! )
 //! ```
@@ -257,6 +257,14 @@ pub struct RenderSettings {
     /// How next-event estimation picks an emissive triangle (`light_sampling: Tree`).
     #[serde(skip_serializing_if = "LightSampling::is_power")]
     pub light_sampling: LightSampling,
+    /// Frames per second workload scaling holds while the level is played (`None`: 30, the
+    /// games' default; see `level_render`). A player's own target frame rate wins.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub target_fps: Option<f32>,
+    /// Lowest render resolution workload scaling may go to, as a fraction of the output per
+    /// axis, in (0, 1] (`None`: ¼, 320×180 of a 1280×720 window).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_scale: Option<f32>,
 }
 
 impl Default for RenderSettings {
@@ -265,6 +273,8 @@ impl Default for RenderSettings {
             max_bounces: 7,
             roulette_start: 4,
             light_sampling: LightSampling::Power,
+            target_fps: None,
+            min_scale: None,
         }
     }
 }
@@ -345,6 +355,7 @@ impl Level {
                     e.span.start.line, e.span.start.col, e.code
                 ),
             })
+            .and_then(|level| level.render.check(path).map(|()| level))
     }
 
     /// Reads and parses a level file.

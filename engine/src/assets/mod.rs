@@ -60,6 +60,7 @@ pub use level_gameplay::{
     GameplayEntry, LaserEntry, MusicEntry, RuleEntry, SoundEntry, UsableEntry, VolumeEntry,
 };
 mod level_load;
+mod level_render;
 mod level_water;
 pub use level_water::{VALIDATED_STEP_SECONDS, WaterSimDesc};
 mod level_shapes;

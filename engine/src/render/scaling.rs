@@ -35,6 +35,15 @@ impl ScalingTarget {
             min_resolution: 0.25,
         }
     }
+
+    /// What a level declares it needs (`render: (target_fps, min_scale)`, defaults 30 fps and
+    /// ¼): the target the harness holds while the level is played.
+    pub fn of_level(render: &crate::assets::RenderSettings) -> Self {
+        Self {
+            min_resolution: render.min_resolution(),
+            ..Self::new(render.frame_seconds())
+        }
+    }
 }
 
 /// A live change of what the controller holds (the player's settings: target frame rate and

@@ -204,7 +204,13 @@ fn run(
         let mut request = commit.present.take();
         if let Some(wanted) = request.as_ref().and_then(|r| r.scaling) {
             scaling.set_goal(ScalingGoal {
-                target: wanted.frame_seconds.map(ScalingTarget::new),
+                // The player's frame rate, within the bounds the level declared.
+                target: wanted.frame_seconds.map(|frame_seconds| ScalingTarget {
+                    frame_seconds,
+                    ..config
+                        .scaling
+                        .unwrap_or_else(|| ScalingTarget::new(frame_seconds))
+                }),
                 max_resolution: wanted.max_resolution,
             });
         }

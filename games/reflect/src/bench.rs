@@ -1,5 +1,6 @@
 //! `reflect --bench`: each chamber played from its committed replay in real time, headless,
-//! on the CPU tracer at 640×360 with workload scaling holding 30 fps — the frame time split by
+//! on the CPU tracer at 640×360 with workload scaling holding what the chamber's level declares
+//! (`render: (target_fps, min_scale)`, 30 fps and ¼ when it declares nothing) — the frame time split by
 //! phase, the internal resolution and samples per pixel the scaling settles on, and how many
 //! emissive triangles the light sampling holds with the chambers switching their lights and
 //! with every light on. Printed as a Markdown table (`docs/PERFORMANCE.md`).
@@ -12,7 +13,7 @@
 use std::path::Path;
 
 use candela::app::Phase;
-use candela::app::harness::{BenchFigures, bench_replay};
+use candela::app::harness::{BenchFigures, HarnessGame, bench_replay};
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
 use candela::render::{RenderConfig, TracerChoice};
@@ -20,17 +21,19 @@ use candela::render::{RenderConfig, TracerChoice};
 use crate::world::ReflectWorld;
 
 /// Plays a chamber's replay on `world` for at most `seconds` of wall time, as the game plays:
-/// the CPU tracer at 640×360 with workload scaling holding 30 fps.
+/// the CPU tracer at 640×360 with workload scaling holding the level's target.
 fn run(
     world: &ReflectWorld,
     replay: &Path,
     seconds: f64,
     denoise: bool,
 ) -> anyhow::Result<BenchFigures> {
+    let (_, start) = world.open_replay(replay)?;
+    let level = world.environment(&world.new_game(start)).render;
     let config = RenderConfig {
         tracer: TracerChoice::Cpu,
         denoise,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        scaling: Some(ScalingTarget::of_level(&level)),
         ..RenderConfig::cpu(640, 360)
     };
     Ok(bench_replay(world, replay, config, seconds)?)

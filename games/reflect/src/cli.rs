@@ -44,7 +44,7 @@ pub struct Args {
     #[arg(long)]
     pub stats: bool,
     /// Headless: play every chamber's replay in real time on the CPU tracer with workload
-    /// scaling at 30 fps and print the frame figures as a Markdown table.
+    /// scaling holding the frame rate its level declares and print the frame figures as a Markdown table.
     #[arg(long)]
     pub bench: bool,
     /// Headless: write a converged picture of every chamber into this folder (see
@@ -197,7 +197,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     game.inner_mut().use_shell_hud();
     // The shell's window with the render configuration game binaries share (the tracer
-    // `auto` picks, 1 spp, holding 30 fps by workload scaling).
+    // `auto` picks, 1 spp, workload scaling holding the frame rate the level declares).
     let play = WindowedPlay {
         title: "Reflect".into(),
         app: "reflect".into(),

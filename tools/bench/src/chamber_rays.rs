@@ -96,7 +96,7 @@ impl Tracer for KeepingTracer {
 
 /// Runs chamber `args.chamber` (from 1) for `warm_frames` frames; the last frame's scene and
 /// uniforms.
-fn capture(args: &ChamberRaysArgs) -> anyhow::Result<(RenderScene, GpuFrameUniforms)> {
+pub fn capture(args: &ChamberRaysArgs) -> anyhow::Result<(RenderScene, GpuFrameUniforms)> {
     let (path, root) = reflect::cli::locate(None)?;
     let world = ReflectWorld::load(&path, &root)?;
     let chamber = args.chamber.max(1) - 1;

@@ -35,6 +35,7 @@ mod balance;
 mod balance_plot;
 mod balance_pool;
 mod balance_record;
+mod bounce_budget;
 mod build;
 mod chamber_rays;
 mod chart;
@@ -86,6 +87,9 @@ enum Command {
     Rays(rays::RaysArgs),
     /// Rays per second of the CPU path tracer on a Reflect chamber's view, as the game renders it.
     ChamberRays(chamber_rays::ChamberRaysArgs),
+    /// Error and frame time of Reflect's chamber views per bounce cap, against a reference
+    /// with more bounces: how many bounces a chamber needs in play.
+    BounceBudget(bounce_budget::BounceBudgetArgs),
     /// Time to a fixed error against the Cornell reference, beside Mitsuba's.
     Error(error::ErrorArgs),
     /// Error against time for every estimator, bounce cap and BVH build on the reference and
@@ -116,6 +120,7 @@ fn main() -> anyhow::Result<()> {
         Command::Memory(a) => memory::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::ChamberRays(a) => chamber_rays::run(&a),
+        Command::BounceBudget(a) => bounce_budget::run(&a),
         Command::Error(a) => error::run(&a),
         Command::Chart(a) => {
             let plan = a.plan()?;

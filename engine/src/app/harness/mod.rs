@@ -33,4 +33,4 @@ pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
 pub use shots::{play_shots, start_cue, tour_shots};
 pub use soak_levels::{LevelSoak, soak_levels};
-pub use windowed::{WindowedPlay, play_windowed};
+pub use windowed::{WindowedPlay, play_windowed, windowed_render};

@@ -2,7 +2,9 @@
 //! [`play_windowed`] opens the window (`window::run_game`: title menu, HUD, pause, settings,
 //! the player's folders) with the render configuration game binaries share — the tracer
 //! `auto` picks (the CPU one on machines without a GPU) at 640×360 and 1 spp, workload
-//! scaling holding 30 fps, denoised unless asked not to — and the game's [`WindowedPlay`]
+//! scaling holding the frame rate and resolution floor the level declares (`render:
+//! (target_fps, min_scale)`, default 30 fps and ¼; the player's own target frame rate from the
+//! settings screen wins), denoised unless asked not to — and the game's [`WindowedPlay`]
 //! (its window title, its folder name, the shell's cues, the stats overlay).
 //!
 //! Main thread (the window's event loop; the render thread renders). Must not: set the game's
@@ -10,6 +12,7 @@
 
 use super::config::{HarnessError, HarnessGame};
 use crate::app::persist::UserDirs;
+use crate::app::runner::Environment;
 use crate::app::shell::{Cue, ShellConfig};
 use crate::app::window::{WindowConfig, WindowReport, run_game};
 use crate::render::scaling::ScalingTarget;
@@ -53,14 +56,62 @@ pub fn play_windowed<C: HarnessGame>(
         cues: play.cues,
     };
     let environment = config.environment(game);
-    let render = RenderConfig {
+    let render = windowed_render(&environment, play.denoise);
+    Ok(run_game(window, shell, render, environment, game)?)
+}
+
+/// The render configuration of windowed play in a level of `environment`: the tracer `auto`
+/// picks at 640×360, 1 spp, workload scaling holding what the level declares.
+pub fn windowed_render(environment: &Environment, denoise: bool) -> RenderConfig {
+    RenderConfig {
         tracer: TracerChoice::Auto,
-        denoise: play.denoise,
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        denoise,
+        scaling: Some(ScalingTarget::of_level(&environment.render)),
         // A sun turned fast (an altar) must not stall the frames: the sky's table follows on a
         // worker thread.
         sky_rebuild: crate::scene::SkyRebuild::Background,
         ..RenderConfig::cpu(640, 360)
-    };
-    Ok(run_game(window, shell, render, environment, game)?)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assets::{Level, SkyDesc};
+    use std::path::Path;
+
+    /// The environment of a level whose `render` field is `render`.
+    fn environment(render: &str) -> Result<Environment, crate::assets::AssetError> {
+        let text = format!(
+            "Level(camera: (position: (0, 1, 3), look_at: (0, 1, 0), vertical_fov_deg: 40), \
+             render: {render})"
+        );
+        let level = Level::parse(Path::new("level.ron"), &text)?;
+        Ok(Environment {
+            sun: None,
+            sky: SkyDesc::default(),
+            render: level.render,
+            default_camera: level.camera,
+        })
+    }
+
+    #[test]
+    fn a_level_at_20_fps_is_held_at_20() -> Result<(), Box<dyn std::error::Error>> {
+        let level = environment("(max_bounces: 2, target_fps: 20, min_scale: 0.5)")?;
+        let target = windowed_render(&level, true)
+            .scaling
+            .ok_or("windowed play without workload scaling")?;
+        assert_eq!(target.frame_seconds, 1.0 / 20.0);
+        assert_eq!(target.min_resolution, 0.5);
+        Ok(())
+    }
+
+    #[test]
+    fn a_level_declaring_nothing_is_held_at_30() -> Result<(), Box<dyn std::error::Error>> {
+        let target = windowed_render(&environment("(max_bounces: 3)")?, true)
+            .scaling
+            .ok_or("windowed play without workload scaling")?;
+        assert_eq!(target, ScalingTarget::new(1.0 / 30.0));
+        Ok(())
+    }
 }
