@@ -210,6 +210,7 @@ fn physical_sky_agrees() {
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
+        night_sky: 1.0,
     });
     let _ = compare("physical sky", &desc, 32, 4);
 }
