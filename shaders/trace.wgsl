@@ -1,7 +1,7 @@
 // The path tracing pass: one invocation per pixel traces `frame.spp` samples and adds their
 // radiance to the film. Twin of engine/src/render/cpu/integrator.rs (same algorithm, same RNG
 // draws in the same order). Composed after shared/{types,bindings,rng,sampling,microfacet,
-// bsdf,texture,traverse,surface,lines,sky_view}.wgsl and shared/light_tree.wgsl by
+// bsdf,texture,traverse,surface,lines,sky_view,night}.wgsl and shared/light_tree.wgsl by
 // engine/src/render/gpu/shaders.rs.
 
 const FAR: f32 = 3.0e38;
@@ -15,7 +15,7 @@ var<private> count_shadow: u32;
 // sky-view table (zeros when the scene's table is empty: black, as on the CPU).
 fn sky_radiance(d: vec3<f32>) -> vec3<f32> {
     if (frame.sky_kind == SKY_PHYSICAL) {
-        return sky_view_radiance(frame.sky_horizon.xyz, d);
+        return sky_view_radiance(frame.sky_horizon.xyz, d) + night_radiance(d);
     }
     let zenith = frame.sky_zenith.xyz;
     if (frame.sky_kind != SKY_GRADIENT) {
@@ -175,7 +175,8 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
             scale = w / sun_pdf;
         }
-        if (any(e.value != vec3<f32>(0.0))) {
+        if (any(e.value != vec3<f32>(0.0))
+            && disc_lit(wi, sun, frame.sun_sin_radius, frame.sun_terminator)) {
             out.rays[out.count] = shadow_ray(x, ng, wi, FAR);
             out.contribution[out.count] = throughput * e.value * frame.sun_radiance * scale;
             out.count += 1u;
@@ -280,7 +281,8 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         }
         if (!hit.found) {
             var escaped = sky_radiance(ray.direction);
-            if (frame.sun_solid_angle > 0.0 && dot(ray.direction, frame.sun_direction) >= frame.sun_cos_radius) {
+            if (frame.sun_solid_angle > 0.0 && disc_inside(ray.direction, frame.sun_direction, frame.sun_sin_radius)
+                && disc_lit(ray.direction, frame.sun_direction, frame.sun_sin_radius, frame.sun_terminator)) {
                 let w = bsdf_hit_weight(last_delta, last_pdf, 1.0 / frame.sun_solid_angle);
                 escaped += frame.sun_radiance * w;
             }

@@ -350,11 +350,15 @@ pub const SKY_GRADIENT: u32 = 1;
 /// `GpuFrameUniforms::sky_kind`: the physical sky's sky-view table (`scene::SkyTable`), seen
 /// in the frame whose unit horizontal vector towards the sun's azimuth is `sky_horizon.xyz`.
 pub const SKY_PHYSICAL: u32 = 2;
+/// Star cells along each edge of the cube the star field is hashed on (`render/cpu/night.rs`).
+pub const STAR_CELLS: u32 = 128;
+/// A cell holds a star when its hash is below this (0.0916 × 2³²: about 9000 on the sphere).
+pub const STAR_THRESHOLD: u32 = 393_400_000;
 
 /// Everything that changes per frame or per render: camera, sun, sky, image size, sampling.
 /// The camera basis vectors are pre-scaled: a pixel's direction is
 /// `forward + sx * right + sy * up` with `sx, sy` in [-1, 1] over the image.
-/// 192 bytes.
+/// 336 bytes.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
 pub struct GpuFrameUniforms {
@@ -406,8 +410,40 @@ pub struct GpuFrameUniforms {
     pub sky_kind: u32,
     /// Index of the TLAS root in the node buffer.
     pub tlas_root: u32,
+    // The night (`scene/discs.rs` fills these; `render/cpu/night.rs`, `shaders/shared/night.wgsl`).
+    /// Unit vector from the primary disc towards what lights it (the moon: the sun); zero: the
+    /// whole disc is lit (the sun). The lit part is where the visible hemisphere's normal
+    /// faces it.
+    pub sun_terminator: [f32; 3],
+    /// Sine of the primary disc's angular radius.
+    pub sun_sin_radius: f32,
+    /// Unit vector towards the second disc (the fainter of sun and moon), seen by escaping
+    /// rays only.
+    pub second_direction: [f32; 3],
+    /// Cosine of the second disc's angular radius (1: no second disc).
+    pub second_cos_radius: f32,
+    /// Radiance of the lit part of the second disc, linear RGB.
+    pub second_radiance: [f32; 3],
+    /// Sine of the second disc's angular radius.
+    pub second_sin_radius: f32,
+    /// As `sun_terminator`, for the second disc.
+    pub second_terminator: [f32; 3],
+    /// Radiance of a magnitude-0 star's disc (grey; 0: no stars), before extinction.
+    pub star_radiance: f32,
+    /// Airglow radiance at the zenith, linear RGB, before extinction (0: none).
+    pub airglow: [f32; 3],
+    /// Sine of a star disc's angular radius.
+    pub star_sin_radius: f32,
+    /// The air's transmittance straight up; along `d` it is this to the air mass of `d.y`.
+    pub zenith_transmittance: [f32; 3],
+    pub _night_padding: u32,
+    /// Rows of the rotation from engine space to the celestial frame (x: equinox, z: north
+    /// celestial pole; `sky::celestial_frame`); `w` unused.
+    pub celestial_x: [f32; 4],
+    pub celestial_y: [f32; 4],
+    pub celestial_z: [f32; 4],
 }
-const _: () = assert!(size_of::<GpuFrameUniforms>() == 192);
+const _: () = assert!(size_of::<GpuFrameUniforms>() == 336);
 
 impl GpuFrameUniforms {
     /// All zeros: for passes that read nothing but `tlas_root` (batch ray tracing).

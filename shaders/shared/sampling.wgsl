@@ -39,8 +39,10 @@ fn cosine_hemisphere(u: vec2<f32>) -> vec3<f32> {
 }
 
 fn uniform_cone(u: vec2<f32>, cos_max: f32) -> vec3<f32> {
-    let cos_theta = 1.0 - u.x * (1.0 - cos_max);
-    let sin_theta = sqrt(max(1.0 - cos_theta * cos_theta, 0.0));
+    // As the CPU: the sine from 1 − cos keeps full precision for tiny cones.
+    let one_minus_cos = u.x * (1.0 - cos_max);
+    let cos_theta = 1.0 - one_minus_cos;
+    let sin_theta = sqrt(max(one_minus_cos * (2.0 - one_minus_cos), 0.0));
     let phi = 2.0 * PI * u.y;
     return vec3<f32>(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
 }

@@ -39,6 +39,8 @@ const LIGHT_NODE_TWO_SIDED: u32 = 2u;
 const SKY_CONSTANT: u32 = 0u;
 const SKY_GRADIENT: u32 = 1u;
 const SKY_PHYSICAL: u32 = 2u;
+const STAR_CELLS: u32 = 128u;
+const STAR_THRESHOLD: u32 = 393400000u;
 // The sky-view table's nodes (engine/src/sky/sky_view.rs VIEW_WIDTH, VIEW_HEIGHT).
 const SKY_VIEW_WIDTH: u32 = 128u;
 const SKY_VIEW_HEIGHT: u32 = 129u;
@@ -183,6 +185,21 @@ struct GpuFrameUniforms {
     roulette_scale: f32,
     sky_kind: u32,
     tlas_root: u32,
+    sun_terminator: vec3<f32>,
+    sun_sin_radius: f32,
+    second_direction: vec3<f32>,
+    second_cos_radius: f32,
+    second_radiance: vec3<f32>,
+    second_sin_radius: f32,
+    second_terminator: vec3<f32>,
+    star_radiance: f32,
+    airglow: vec3<f32>,
+    star_sin_radius: f32,
+    zenith_transmittance: vec3<f32>,
+    _night_padding: u32,
+    celestial_x: vec4<f32>,
+    celestial_y: vec4<f32>,
+    celestial_z: vec4<f32>,
 }
 
 struct GpuRay {

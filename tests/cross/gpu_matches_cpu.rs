@@ -210,6 +210,62 @@ fn physical_sky_agrees() {
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
+        night_sky: 1.0,
     });
     let _ = compare("physical sky", &desc, 32, 4);
+}
+
+/// A moonlit night (`scene/discs.rs`: the moon is the primary disc, with its phase; stars and
+/// airglow in the sky, `shaders/shared/night.wgsl`): a diffuse floor and a sphere under the
+/// moon, the camera looking east and up so the sky with its stars fills the top of the image.
+/// The values are ~10⁻⁷ (the rounding term is then loose); the RMS check, which does not
+/// depend on scale, is what holds the tracers to the same paths.
+#[test]
+fn moonlit_night_agrees() {
+    use candela::assets::{Material, MaterialKind, Mesh, SceneInstance, SkyDesc};
+    use candela::sky::{PhysicalSky, SkyTime};
+    use candela_tests::{camera, icosphere, single_mesh_model};
+    use glam::Vec3;
+    let h = 20.0;
+    let floor = Mesh {
+        name: "floor".into(),
+        positions: vec![
+            Vec3::new(-h, 0.0, -h),
+            Vec3::new(-h, 0.0, h),
+            Vec3::new(h, 0.0, h),
+            Vec3::new(h, 0.0, -h),
+        ],
+        triangles: vec![[0, 1, 2], [0, 2, 3]],
+        triangle_materials: vec![0, 0],
+        ..Default::default()
+    };
+    let diffuse = |albedo: f32| Material {
+        kind: MaterialKind::Diffuse,
+        base_color: Vec3::splat(albedo),
+        ..Material::default()
+    };
+    let mut desc = SceneDesc::single(
+        single_mesh_model(floor, diffuse(0.5)),
+        camera(Vec3::new(-6.0, 1.5, 0.0), Vec3::new(4.0, 3.0, 0.0), 70.0),
+    );
+    desc.models.push(single_mesh_model(
+        icosphere(Vec3::new(0.0, 1.0, 0.0), 1.0, 3, false),
+        diffuse(0.7),
+    ));
+    desc.instances
+        .push(SceneInstance::placed(1, glam::Mat4::IDENTITY));
+    desc.sun = None;
+    desc.sky = SkyDesc::Physical(PhysicalSky {
+        time: Some(SkyTime {
+            latitude_deg: 48.1,
+            longitude_deg: 11.6,
+            year: 2026,
+            month: 12,
+            day: 23,
+            utc_hours: 19.0,
+            time_rate: 0.0,
+        }),
+        ..PhysicalSky::default()
+    });
+    let _ = compare("moonlit night", &desc, 32, 4);
 }

@@ -138,7 +138,22 @@ fn rust_layouts() -> Vec<RustLayout> {
             light_weight_total,
             roulette_scale,
             sky_kind,
-            tlas_root
+            tlas_root,
+            sun_terminator,
+            sun_sin_radius,
+            second_direction,
+            second_cos_radius,
+            second_radiance,
+            second_sin_radius,
+            second_terminator,
+            star_radiance,
+            airglow,
+            star_sin_radius,
+            zenith_transmittance,
+            _night_padding,
+            celestial_x,
+            celestial_y,
+            celestial_z
         }),
         rust_layout!(GpuRay {
             origin,
@@ -255,6 +270,8 @@ fn rust_and_wgsl_constants_agree() {
         ("SKY_CONSTANT", SKY_CONSTANT),
         ("SKY_GRADIENT", SKY_GRADIENT),
         ("SKY_PHYSICAL", SKY_PHYSICAL),
+        ("STAR_CELLS", candela::layout::STAR_CELLS),
+        ("STAR_THRESHOLD", candela::layout::STAR_THRESHOLD),
         ("SKY_VIEW_WIDTH", candela::sky::VIEW_WIDTH as u32),
         ("SKY_VIEW_HEIGHT", candela::sky::VIEW_HEIGHT as u32),
     ] {

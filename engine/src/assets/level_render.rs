@@ -96,7 +96,10 @@ mod tests {
         assert_eq!(parsed.render.frame_seconds(), 1.0 / 30.0);
         assert_eq!(parsed.render.min_resolution(), 0.25);
         let text = ron::to_string(&parsed.render)?;
-        assert!(!text.contains("target_fps") && !text.contains("min_scale"), "{text}");
+        assert!(
+            !text.contains("target_fps") && !text.contains("min_scale"),
+            "{text}"
+        );
         Ok(())
     }
 
@@ -107,7 +110,10 @@ mod tests {
             &level("(max_bounces: 2, target_fps: 20, min_scale: 0.5)"),
         )?;
         let r = parsed.render;
-        assert_eq!((r.max_bounces, r.target_fps, r.min_scale), (2, Some(20.0), Some(0.5)));
+        assert_eq!(
+            (r.max_bounces, r.target_fps, r.min_scale),
+            (2, Some(20.0), Some(0.5))
+        );
         assert_eq!(r.frame_seconds(), 1.0 / 20.0);
         let again: RenderSettings = ron::from_str(&ron::to_string(&r)?)?;
         assert_eq!(again, r);
@@ -137,7 +143,12 @@ mod tests {
 
     #[test]
     fn edge_values_are_accepted() -> Result<(), Box<dyn std::error::Error>> {
-        for render in ["(min_scale: 1)", "(max_bounces: 64)", "(max_bounces: 1)", "(target_fps: 0.5)"] {
+        for render in [
+            "(min_scale: 1)",
+            "(max_bounces: 64)",
+            "(max_bounces: 1)",
+            "(target_fps: 0.5)",
+        ] {
             Level::parse(Path::new("a.ron"), &level(render))?;
         }
         Ok(())

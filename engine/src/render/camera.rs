@@ -119,6 +119,21 @@ pub fn frame_uniforms(
         roulette_scale: frame.roulette_scale,
         sky_kind: 0,
         tlas_root,
+        sun_terminator: [0.0; 3],
+        sun_sin_radius: 0.0,
+        second_direction: [0.0, 1.0, 0.0],
+        second_cos_radius: 1.0,
+        second_radiance: [0.0; 3],
+        second_sin_radius: 0.0,
+        second_terminator: [0.0; 3],
+        star_radiance: 0.0,
+        airglow: [0.0; 3],
+        star_sin_radius: 0.0,
+        zenith_transmittance: [1.0; 3],
+        _night_padding: 0,
+        celestial_x: [1.0, 0.0, 0.0, 0.0],
+        celestial_y: [0.0, 1.0, 0.0, 0.0],
+        celestial_z: [0.0, 0.0, 1.0, 0.0],
     };
     fill_sun_and_sky(&mut u, sun, sky);
     u

@@ -184,6 +184,7 @@ pub fn fill_sun_and_sky(u: &mut GpuFrameUniforms, sun: Option<&SunDesc>, sky: &S
                 // A uniform disc of radiance L seen face-on gives E = L π sin²θ.
                 let sin2 = radius.sin().powi(2);
                 u.sun_cos_radius = cos_radius;
+                u.sun_sin_radius = ((1.0 - cos_radius) * (1.0 + cos_radius)).sqrt();
                 u.sun_solid_angle = 2.0 * std::f32::consts::PI * (1.0 - cos_radius);
                 u.sun_radiance = (irradiance / (std::f32::consts::PI * sin2)).to_array();
             } else {
@@ -228,6 +229,8 @@ pub fn fill_sun_and_sky(u: &mut GpuFrameUniforms, sun: Option<&SunDesc>, sky: &S
             u.sky_zenith = [0.0; 4];
             u.sky_horizon = azimuth.extend(0.0).to_array();
             u.sky_ground = [0.0; 4];
+            // The sun and the moon, the brighter sampled, and the night (`discs.rs`).
+            super::discs::fill_physical(u, &p);
         }
     }
 }

@@ -18,6 +18,8 @@
 use std::sync::mpsc::{Receiver, channel};
 use std::sync::{Arc, Mutex};
 
+use glam::Vec3;
+
 use super::atmosphere::Atmosphere;
 use super::error::SkyError;
 use super::multiscatter::MultiScatteringLut;
@@ -204,16 +206,16 @@ impl SkyBaker {
     }
 
     /// The luminance-weighted horizontal illuminance under `sky` (sky units; `exposure`): the
-    /// table as last built plus the sun's direct light at its exact elevation. Call after
+    /// table as last built plus the sun's and the moon's direct light at their exact elevations. Call after
     /// [`SkyBaker::update`] with the same sky.
     pub fn horizontal_illuminance(&self, sky: &PhysicalSky) -> Result<f32, SkyError> {
         let h = sky.sun_horizontal()?;
         let sun = sky.sun_irradiance()? * sky.sun_scale;
-        Ok(super::exposure::horizontal_illuminance(
-            &self.texels,
-            sun,
-            h.elevation_deg,
-        ))
+        // The moon's direct light (`night`), luminance-weighted as the rest.
+        let moon = sky.moon_light()?.map_or(0.0, |m| {
+            m.irradiance.dot(Vec3::new(0.2126, 0.7152, 0.0722)) * m.direction.y.max(0.0)
+        });
+        Ok(super::exposure::horizontal_illuminance(&self.texels, sun, h.elevation_deg) + moon)
     }
 
     /// The sky-view texels as last built (empty before the first [`SkyBaker::update`]).

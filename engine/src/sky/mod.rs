@@ -9,7 +9,8 @@
 //! (`atmosphere`), the transmittance and multiple-scattering tables, the sky-view table and
 //! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into;
 //! turning the time of day ([`SkyTime::advanced`], [`SkyNow`], `day`), the tables kept while
-//! the sun moves ([`SkyBaker`]) and the exposure the sky calls for (`exposure`).
+//! the sun moves ([`SkyBaker`]), the exposure the sky calls for (`exposure`) and the night's
+//! lights: the moon's phase law, airglow, stars and the celestial frame (`night`).
 //! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
 //! the layers and uses no engine module (only glam, rayon, serde and thiserror).
@@ -23,6 +24,7 @@ mod exposure;
 mod horizon;
 mod lunar;
 mod multiscatter;
+mod night;
 mod physical;
 mod sky_view;
 mod solar;
@@ -37,6 +39,10 @@ pub use exposure::{
 };
 pub use horizon::{Horizontal, Observer};
 pub use lunar::{MoonState, moon_position};
+pub use night::{
+    AIRGLOW_COLOUR, AIRGLOW_ZENITH_CD_M2, MOON_FULL_RATIO, MoonLight, STAR_ANGULAR_RADIUS_DEG,
+    STAR_ZERO_MAGNITUDE_LUX, celestial_frame, moon_phase_factor,
+};
 pub use physical::{HAZE_TURBIDITY_3, PhysicalSky, SkyTables, SkyTime, sky_view_radiance};
 pub use sky_view::{VIEW_HEIGHT, VIEW_WIDTH};
 pub use solar::{SunState, sun_position};

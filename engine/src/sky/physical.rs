@@ -68,6 +68,10 @@ pub struct PhysicalSky {
     /// `sun_scale`; the sky itself is not changed).
     #[serde(default = "one")]
     pub sun_scale: f32,
+    /// Multiplier of the stars and the airglow (`sky/night.rs`), 0..=1000 (0: none; the moon
+    /// is not changed).
+    #[serde(default = "one")]
+    pub night_sky: f32,
 }
 
 /// The haze whose diffuse-to-global horizontal ratio at 60° sun elevation matches Mitsuba's
@@ -86,6 +90,7 @@ impl Default for PhysicalSky {
             ozone: 1.0,
             ground_albedo: default_albedo(),
             sun_scale: 1.0,
+            night_sky: 1.0,
         }
     }
 }
@@ -140,6 +145,7 @@ impl PhysicalSky {
         check("haze", self.haze, 0.0, 100.0, "0..=100")?;
         check("ozone", self.ozone, 0.0, 10.0, "0..=10")?;
         check("sun_scale", self.sun_scale, 0.0, 1000.0, "0..=1000")?;
+        check("night_sky", self.night_sky, 0.0, 1000.0, "0..=1000")?;
         for a in self.ground_albedo {
             check("ground_albedo", a, 0.0, 1.0, "0..=1")?;
         }

@@ -105,6 +105,8 @@ mod sky_energy;
 mod sky_ephemeris;
 mod sky_gpu;
 mod sky_level;
+mod sky_night;
+mod sky_night_render;
 mod sky_reference;
 mod sky_time;
 mod structure_layers;

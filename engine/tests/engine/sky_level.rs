@@ -68,6 +68,11 @@ fn physical_sky_loads_with_defaults_and_a_time() {
 fn bad_physical_skies_name_the_file_and_the_field() {
     refused("negative_haze", "sky: Physical((haze: -1.0))", "haze");
     refused(
+        "negative_night",
+        "sky: Physical((night_sky: -1.0))",
+        "night_sky",
+    );
+    refused(
         "deep_sun",
         "sky: Physical((sun_elevation_deg: -91.0))",
         "sun_elevation_deg",

@@ -39,6 +39,7 @@ fn sky(elevation: u32, haze: f32) -> PhysicalSky {
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
+        night_sky: 1.0,
     }
 }
 

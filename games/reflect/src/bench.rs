@@ -12,8 +12,7 @@
 
 use std::path::Path;
 
-use candela::app::Phase;
-use candela::app::harness::{BenchFigures, HarnessGame, bench_replay};
+use candela::app::harness::{BenchFigures, HarnessGame, bench_replay, table_head, table_row};
 use candela::assets::AssetRoot;
 use candela::render::scaling::ScalingTarget;
 use candela::render::{RenderConfig, TracerChoice};
@@ -49,31 +48,13 @@ pub fn bench(
     denoise: bool,
 ) -> anyhow::Result<String> {
     let all_on = world.without_room_switching(root)?;
-    let mut out = String::from("| chamber | frames | frame ms (median) | fps |");
-    for p in Phase::ALL {
-        out += &format!(" {} ms |", p.name());
-    }
-    out += " render ms | denoise ms | internal res | spp | emitters sampled (switching) | emitters (all on) |\n|---|";
-    out += &"---:|".repeat(3 + Phase::ALL.len() + 6);
-    out += "\n";
+    // "emitters sampled" is with the chambers switching their lights.
+    let mut out = table_head("chamber", &["emitters (all on)"]);
     for chamber in &world.chambers {
         let replay = replays.join(format!("{}.replay", chamber.id));
         let f = run(world, &replay, seconds, denoise)?;
         let on = run(&all_on, &replay, seconds.min(8.0), denoise)?;
-        out += &format!(
-            "| {} | {} | {:.1} | {:.1} |",
-            chamber.id,
-            f.frames,
-            f.frame_ms,
-            1e3 / f.frame_ms
-        );
-        for ms in &f.phase_ms {
-            out += &format!(" {ms:.2} |");
-        }
-        out += &format!(
-            " {:.1} | {:.1} | {}×{} | {} | {} | {} |\n",
-            f.render_ms, f.denoise_ms, f.film.0, f.film.1, f.spp, f.lights, on.lights
-        );
+        out += &format!("{} {} |\n", table_row(&chamber.id, &f), on.lights);
         eprintln!("{}: done", chamber.id);
     }
     Ok(out)

@@ -104,9 +104,8 @@ pub fn run(args: &BounceBudgetArgs) -> anyhow::Result<()> {
             warm_frames: 4,
         })?;
         let half = (args.reference_spp / 2).max(1);
-        let halves = [1u32 << 20, 1 << 21].map(|base| {
-            converged(&mut tracer, &scene, &u, args.reference_bounces, half, base)
-        });
+        let halves = [1u32 << 20, 1 << 21]
+            .map(|base| converged(&mut tracer, &scene, &u, args.reference_bounces, half, base));
         let [a, b] = halves;
         let (a, b) = (a?, b?);
         let floor = rel_mse(&a, &b) / 4.0;

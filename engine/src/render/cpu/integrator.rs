@@ -16,6 +16,7 @@ use glam::{Vec2, Vec3};
 
 use super::bsdf::Bsdf;
 use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
+use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
 use super::sampling::{
     basis, concentric_disc, power_heuristic, to_local, to_world, uniform_cone, uniform_triangle,
@@ -49,13 +50,15 @@ impl std::ops::AddAssign for RayCounts {
 }
 
 /// Radiance of the sky in direction `d` (unit); a physical sky reads the scene's sky-view
-/// table (`sky_table`, empty: black).
+/// table (`sky_table`, empty: black) and adds the night's second disc, stars and airglow
+/// (`night.rs`).
 pub fn sky_radiance(u: &GpuFrameUniforms, sky_table: &[[f32; 4]], d: Vec3) -> Vec3 {
     if u.sky_kind == SKY_PHYSICAL {
         if sky_table.is_empty() {
             return Vec3::ZERO;
         }
-        return sky_view_radiance(sky_table, Vec3::from_slice(&u.sky_horizon[..3]), d);
+        return sky_view_radiance(sky_table, Vec3::from_slice(&u.sky_horizon[..3]), d)
+            + night_radiance(u, d);
     }
     let zenith = Vec3::from_slice(&u.sky_zenith[..3]);
     if u.sky_kind != SKY_GRADIENT {
@@ -123,6 +126,7 @@ pub fn radiance(
     let sun_solid_angle = u.sun_solid_angle;
     let sun_direction = Vec3::from(u.sun_direction);
     let sun_radiance = Vec3::from(u.sun_radiance);
+    let sun_terminator = Vec3::from(u.sun_terminator);
     let mut bounce = 0u32;
     // The path so far is the camera ray and perfect mirror or glass turns: it sees line
     // emitters prefiltered over the pixel, `travelled` metres from the camera.
@@ -142,7 +146,15 @@ pub fn radiance(
         }
         let Some(hit) = hit else {
             let mut escaped = sky_radiance(u, &scene.sky.texels, ray.direction);
-            if sun_solid_angle > 0.0 && ray.direction.dot(sun_direction) >= u.sun_cos_radius {
+            if sun_solid_angle > 0.0
+                && disc_inside(ray.direction, sun_direction, u.sun_sin_radius)
+                && disc_lit(
+                    ray.direction,
+                    sun_direction,
+                    u.sun_sin_radius,
+                    sun_terminator,
+                )
+            {
                 let w = bsdf_hit_weight(u.method, last_delta, last_pdf, 1.0 / sun_solid_angle);
                 escaped += sun_radiance * w;
             }
@@ -405,7 +417,8 @@ fn next_event(
                 sun,
             );
             let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
-            if f != Vec3::ZERO && shadow(wi, f32::INFINITY, counts) {
+            let lit = disc_lit(wi, sun, u.sun_sin_radius, Vec3::from(u.sun_terminator));
+            if f != Vec3::ZERO && lit && shadow(wi, f32::INFINITY, counts) {
                 let sun_pdf = 1.0 / u.sun_solid_angle;
                 let w = if mis {
                     power_heuristic(sun_pdf, bsdf_pdf)

@@ -7,6 +7,7 @@ pub mod integrator;
 pub mod light_tree;
 pub mod lines;
 pub mod microfacet;
+pub mod night;
 pub mod rng;
 pub mod sampling;
 pub mod surface;

@@ -48,8 +48,12 @@ pub fn cosine_hemisphere(u: Vec2) -> Vec3 {
 /// `1 / (2π (1 − cos_max))`.
 #[inline]
 pub fn uniform_cone(u: Vec2, cos_max: f32) -> Vec3 {
-    let cos_theta = 1.0 - u.x * (1.0 - cos_max);
-    let sin_theta = (1.0 - cos_theta * cos_theta).max(0.0).sqrt();
+    // 1 − cos is exact in f32 for cos ≥ 0.5; the sine from it keeps full precision for the
+    // sun's and the moon's tiny cones, where 1 − cos² of a rounded cosine has a few hundred
+    // levels (the disc's rim then gets a finite share of the samples).
+    let one_minus_cos = u.x * (1.0 - cos_max);
+    let cos_theta = 1.0 - one_minus_cos;
+    let sin_theta = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
     let phi = 2.0 * PI * u.y;
     Vec3::new(sin_theta * phi.cos(), sin_theta * phi.sin(), cos_theta)
 }

@@ -34,6 +34,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/surface.wgsl"),
     shader!("shared/lines.wgsl"),
     shader!("shared/sky_view.wgsl"),
+    shader!("shared/night.wgsl"),
 ];
 
 /// The path tracing pass (entry point `trace_main`).
