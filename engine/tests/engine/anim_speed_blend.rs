@@ -183,3 +183,60 @@ fn a_blend_with_bad_numbers_is_refused_by_name() -> anyhow::Result<()> {
     }
     Ok(())
 }
+
+/// The courtyard level with its walk and run states replaced by one blended `move` state
+/// whose blend names `blend_clip`.
+fn blended_courtyard(dir: &Path, blend_clip: &str) -> anyhow::Result<PathBuf> {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let source =
+        std::fs::read_to_string(repo.join("assets/test_scenes/platform/third_person.ron"))?;
+    let walk_and_run = "(name: \"walk\", clip: \"walk\", contact: Grounded, min_speed_mps: 0.3, \
+                        max_speed_mps: 3.5,\n                reference_speed_mps: 1.45),\n            \
+                        (name: \"run\", clip: \"run\", contact: Grounded, min_speed_mps: 3.5,\n                \
+                        reference_speed_mps: 3.35),";
+    anyhow::ensure!(source.contains(walk_and_run), "the courtyard's states changed");
+    let blended = format!(
+        "(name: \"move\", clip: \"walk\", contact: Grounded, min_speed_mps: 0.3, \
+         reference_speed_mps: 1.45, max_rate: 3, blend: (clip: \"{blend_clip}\", \
+         reference_speed_mps: 3.35, from_speed_mps: 2, to_speed_mps: 4.5)),"
+    );
+    let path = dir.join(format!("blended_{blend_clip}.ron"));
+    std::fs::write(&path, source.replace(walk_and_run, &blended))?;
+    Ok(path)
+}
+
+#[test]
+fn a_level_blend_entry_loads_and_an_unknown_clip_is_refused() -> anyhow::Result<()> {
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let root = candela::assets::AssetRoot::new(repo.join("assets"))?;
+    let dir = std::env::temp_dir().join(format!("candela_speed_blend_{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    let good = candela::level::load_level(&blended_courtyard(&dir, "run")?, &root);
+    let bad = candela::level::load_level(&blended_courtyard(&dir, "sprint")?, &root);
+    let _ = std::fs::remove_dir_all(&dir);
+    let level = good?;
+    let model = hero()?;
+    let character = level
+        .characters
+        .first()
+        .ok_or_else(|| anyhow::anyhow!("a character"))?;
+    let state = character
+        .machine
+        .states()
+        .iter()
+        .find(|s| s.name == "move")
+        .ok_or_else(|| anyhow::anyhow!("the move state"))?;
+    let b = state.blend.ok_or_else(|| anyhow::anyhow!("a blend"))?;
+    assert_eq!(b.clip, model.find_clip("run")?);
+    assert!((b.cycle_ratio - 0.7).abs() < 1e-4, "{}", b.cycle_ratio);
+    assert_eq!((b.from_speed_mps, b.to_speed_mps), (2.0, 4.5));
+    let error = match bad {
+        Ok(_) => anyhow::bail!("a blend of a clip the hero lacks loaded"),
+        Err(e) => format!("{e:#}"),
+    };
+    assert!(
+        error.contains("\"move\"") && error.contains("\"sprint\"") && error.contains("blended_sprint.ron"),
+        "{error}"
+    );
+    Ok(())
+}
