@@ -3,8 +3,11 @@
 //! cycle, skinned through the engine's animation code) on a small floor, seen from the front
 //! left, sun and sky light. Shows what `docs/LEVELS.md` "The hero" describes.
 //!
-//! `cargo run --release -p candela --example hero_still [-- --spp N --out FILE]`
-//! (defaults: 256 samples per pixel, `docs/hero.png`; about 15 s on two cores).
+//! `cargo run --release -p candela --example hero_still [-- --spp N --out FILE --clip NAME --at F]`
+//! (defaults: 256 samples per pixel, `docs/hero.png`, clip `walk` at 0.25 of its cycle; about
+//! 15 s on two cores). The explorer's action stills (`docs/hero_push.png`, `hero_pick_up.png`,
+//! `hero_celebrate.png`) are `--clip push --at 0.25`, `--clip pick_up --at 0.5` and
+//! `--clip celebrate --at 0.4`, each with `--spp 128`.
 //! Deterministic for a given sample count (fixed seed). Main thread only.
 
 use std::path::{Path, PathBuf};
@@ -41,12 +44,16 @@ fn main() -> anyhow::Result<()> {
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
     let mut spp = 256u32;
     let mut out = repo.join("docs/hero.png");
+    let mut clip = String::from("walk");
+    let mut at = 0.25f64;
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
         match (arg.as_str(), args.next()) {
             ("--spp", Some(n)) => spp = n.parse().context("--spp takes a number")?,
             ("--out", Some(path)) => out = PathBuf::from(path),
-            _ => anyhow::bail!("usage: hero_still [--spp N] [--out FILE]"),
+            ("--clip", Some(name)) => clip = name,
+            ("--at", Some(f)) => at = f.parse().context("--at takes a fraction of the clip")?,
+            _ => anyhow::bail!("usage: hero_still [--spp N] [--out FILE] [--clip NAME] [--at F]"),
         }
     }
     let dir = std::env::temp_dir().join(format!("candela_hero_still_{}", std::process::id()));
@@ -60,7 +67,7 @@ fn main() -> anyhow::Result<()> {
     let mut desc = loaded?;
     let animated = Arc::new(animated?);
 
-    // Pose the hero: skin its mesh a quarter into `walk` and draw that instead of the rest pose.
+    // Pose the hero: skin its mesh `at` into `clip` and draw that instead of the rest pose.
     let hero = desc
         .instances
         .iter()
@@ -70,8 +77,8 @@ fn main() -> anyhow::Result<()> {
     let model = &mut desc.models[hero];
     let (animator, _) =
         SkinnedAnimator::single(animated.clone(), model).context("the hero is not a character")?;
-    let walk = animated.find_clip("walk")?;
-    let pose = animated.pose_at(walk, 0.25 * animated.clips[walk].duration_seconds);
+    let index = animated.find_clip(&clip)?;
+    let pose = animated.pose_at(index, at * animated.clips[index].duration_seconds);
     let world = animated.world_matrices(&pose);
     let deformed = deform_mesh(
         &animated,

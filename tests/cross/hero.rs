@@ -1,7 +1,7 @@
 //! The hero (`assets/common/hero/hero.glb`): the committed file is exactly what
 //! `tools/assetgen` makes, and it loads through the engine's glTF loader and animation as a
-//! character: one skinned mesh on a 17-joint skin, the five clips the third-person level's
-//! states name, about 1.8 m tall with its feet at y = 0, and a walk that moves its feet.
+//! character: one skinned mesh on a 17-joint skin, the eight clips (the third-person level's
+//! states and the explorer's actions), about 1.8 m tall with its feet at y = 0, and a walk that moves its feet.
 
 use std::path::{Path, PathBuf};
 
@@ -65,7 +65,10 @@ fn the_hero_loads_as_a_skinned_character() -> anyhow::Result<()> {
     assert_eq!(animated.skins.len(), 1);
     assert_eq!(animated.skins[0].joints.len(), 17, "joints");
     let clips: Vec<&str> = animated.clips.iter().map(|c| c.name.as_str()).collect();
-    assert_eq!(clips, ["idle", "walk", "run", "jump", "fall"]);
+    assert_eq!(
+        clips,
+        ["idle", "walk", "run", "jump", "fall", "push", "pick_up", "celebrate"]
+    );
     assert_eq!(clips, assetgen::hero::CLIPS);
     assert!(
         SkinnedAnimator::single(std::sync::Arc::new(animated.clone()), &model).is_some(),

@@ -2,7 +2,7 @@
 //! model, its scale and facing, where it spawns, its capsule and controller tuning, and the
 //! animation states that choose its clips.
 //!
-//! Owns: [`CharacterEntry`], [`CapsuleEntry`], [`ControllerEntry`], [`AnimStateEntry`],
+//! Owns: [`CharacterEntry`], [`CapsuleEntry`], [`ControllerEntry`], [`AnimStateEntry`], [`BlendEntry`],
 //! [`Contact`]. Plain data: loading the model, checking clip names and numbers is
 //! `level::character`'s job; the state machine is `sim::animation::StateMachine`.
 //! Must not: read files. Units: metres, seconds, metres per second, degrees where a field says
@@ -141,6 +141,31 @@ pub struct AnimStateEntry {
     /// Crossfade into this state, seconds.
     #[serde(default = "default_fade")]
     pub fade_seconds: f64,
+    /// A second clip blended in by ground speed, phase-synchronised (a walk state that turns
+    /// into a run without a crossfade); absent: the state's clip alone.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub blend: Option<BlendEntry>,
+}
+
+/// A clip blended into a state by speed: weight 0 at `from_speed_mps`, rising linearly to 1
+/// at `to_speed_mps`.
+///
+/// ```ron
+/// (name: "move", clip: "walk", contact: Grounded, min_speed_mps: 0.3,
+///  reference_speed_mps: 1.45,
+///  blend: (clip: "run", reference_speed_mps: 3.35, from_speed_mps: 2, to_speed_mps: 4.5)),
+/// ```
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlendEntry {
+    /// A clip of the model, by name (or index in decimal).
+    pub clip: String,
+    /// Ground speed at which that clip plays at its own rate, m/s.
+    pub reference_speed_mps: f32,
+    /// m/s.
+    pub from_speed_mps: f32,
+    /// m/s.
+    pub to_speed_mps: f32,
 }
 
 fn one() -> f32 {

@@ -51,7 +51,9 @@ pub use scene_desc::{SceneDesc, SceneInstance};
 mod level_body;
 mod level_character;
 pub use level_body::{BodyEntry, ShapeEntry};
-pub use level_character::{AnimStateEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry};
+pub use level_character::{
+    AnimStateEntry, BlendEntry, CapsuleEntry, CharacterEntry, Contact, ControllerEntry,
+};
 mod level_breakable;
 pub use level_breakable::BreakableEntry;
 mod level_gameplay;

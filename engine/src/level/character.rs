@@ -13,10 +13,11 @@ use std::sync::Arc;
 use glam::Vec3;
 
 use crate::assets::{
-    AnimStateEntry, AssetError, AssetResult, AssetRoot, CharacterEntry, Level, Model, load_model,
+    AnimStateEntry, AssetError, BlendEntry, AssetResult, AssetRoot, CharacterEntry, Level, Model, load_model,
 };
 use crate::sim::animation::{
-    AnimState, AnimatedModel, SkinnedAnimator, StateCondition, StateMachine, load_animation,
+    AnimState, AnimatedModel, SkinnedAnimator, SpeedBlend, StateCondition, StateMachine,
+    load_animation,
 };
 use crate::sim::physics::CharacterController;
 
@@ -172,5 +173,34 @@ fn anim_state(
         min_rate: s.min_rate,
         max_rate: s.max_rate,
         fade_in_seconds: s.fade_seconds,
+        blend: s
+            .blend
+            .as_ref()
+            .map(|b| speed_blend(animated, file, s, clip, b))
+            .transpose()?,
+    })
+}
+
+/// The blend of state `s` (whose clip is `own`): its clip found and the cycle ratio measured.
+fn speed_blend(
+    animated: &AnimatedModel,
+    file: &str,
+    s: &AnimStateEntry,
+    own: usize,
+    b: &BlendEntry,
+) -> Result<SpeedBlend, String> {
+    let clip = animated.find_clip(&b.clip).map_err(|_| {
+        format!(
+            "state {:?}, blend: the model {file:?} has no clip {:?}",
+            s.name, b.clip
+        )
+    })?;
+    let duration = |i: usize| animated.clips.get(i).map_or(0.0, |c| c.duration_seconds);
+    Ok(SpeedBlend {
+        clip,
+        reference_speed_mps: b.reference_speed_mps,
+        from_speed_mps: b.from_speed_mps,
+        to_speed_mps: b.to_speed_mps,
+        cycle_ratio: (duration(clip) / duration(own)) as f32,
     })
 }

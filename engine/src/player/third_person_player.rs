@@ -20,7 +20,9 @@ use super::input::PlayerInput;
 use super::third_person::ThirdPersonController;
 use crate::ecs::{CameraRig, Transform};
 use crate::extract::RenderCamera;
-use crate::sim::animation::{CharacterAnimation, heading_direction};
+use crate::sim::animation::{
+    ActionKind, AnimResult, CharacterAnimation, heading_direction, request_action,
+};
 use crate::sim::physics::PhysicsWorld;
 use crate::sim::triggers::Usable;
 
@@ -107,6 +109,15 @@ impl ThirdPersonPlayer {
         world
             .get::<&CharacterAnimation>(self.body)
             .map_or(0.0, |a| a.heading_rad)
+    }
+
+    /// Asks the character to play its model's clip `clip` (`"push"`, `"pick_up"`,
+    /// `"celebrate"`) as `kind` — from the game's fixed step, before or after
+    /// [`ThirdPersonPlayer::step`]: a [`ActionKind::Once`] once, then the character returns
+    /// to its locomotion; a [`ActionKind::Held`] every step it should go on. A clip the model
+    /// lacks is an error naming the model's file ([`request_action`]).
+    pub fn request_action(&self, world: &mut World, clip: &str, kind: ActionKind) -> AnimResult<()> {
+        request_action(world, self.body, clip, kind).map(|_| ())
     }
 
     /// The usable the character faces (its entity and prompt), as of the last step.

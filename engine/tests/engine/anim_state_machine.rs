@@ -44,6 +44,7 @@ fn state(
         min_rate: 0.5,
         max_rate: 2.0,
         fade_in_seconds: fade,
+        blend: None,
     }
 }
 

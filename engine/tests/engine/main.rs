@@ -16,12 +16,14 @@ mod physics_common;
 mod pipeline_common;
 
 mod accel_structure;
+mod anim_actions;
 mod anim_bad_input;
 mod anim_engine;
 mod anim_player;
 mod anim_reference;
 mod anim_robustness;
 mod anim_skin;
+mod anim_speed_blend;
 mod anim_state_machine;
 mod app_bindings;
 mod app_full_disk;

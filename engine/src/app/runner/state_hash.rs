@@ -11,13 +11,15 @@
 //! outcome, rule states, volume occupants, clip playheads, pending events); the light groups
 //! switched off; a physical sky's time of day (date, UTC hours, day rate) or sun angles; every
 //! simulated water's heights, speeds and waders' push (`HeightField::state_words`) in entity
-//! order. Not covered: rendering (images, converging), audio output, wall-clock time,
+//! order; every character's animation (state, action, playheads:
+//! `CharacterAnimation::state_words`) in body order. Not covered: rendering (images, converging), audio output, wall-clock time,
 //! and the game's own fields outside the world (a game hashes those itself).
 //!
 //! Main thread, between frames. Must not: change anything.
 
 use super::engine::Engine;
 use crate::ecs::Transform;
+use crate::sim::animation::{CharacterAnimation, SkinnedAnimator};
 use crate::sim::physics::{Carrier, CharacterState};
 use crate::sim::water::WaterSim;
 
@@ -97,6 +99,17 @@ impl Engine {
             }
         }
         drop(query);
+        let mut animated: Vec<(u64, Vec<u64>)> = Vec::new();
+        for (e, anim) in self.world.query::<(hecs::Entity, &CharacterAnimation)>().iter() {
+            let animator = self.world.get::<&SkinnedAnimator>(anim.visual).ok();
+            let words = anim.state_words(animator.as_ref().map(|a| &a.player));
+            animated.push((e.to_bits().get(), words));
+        }
+        animated.sort_by_key(|(e, _)| *e);
+        for (e, words) in animated {
+            h.word(e);
+            words.into_iter().for_each(|w| h.word(w));
+        }
         for group in 0..64 {
             h.word(u64::from(self.upkeep.light_group_on(group)));
         }

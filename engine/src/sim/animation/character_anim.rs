@@ -5,7 +5,8 @@
 //! Owns: the [`CharacterAnimation`] component (on the body entity) and [`animate_characters`]
 //! (once per fixed step, after physics and before `tick_skinned`): it reads each body's
 //! [`CharacterState`], updates the state machine on the visual entity's
-//! [`SkinnedAnimator`] player (crossfades, rates) and turns the visual entity to the heading.
+//! [`SkinnedAnimator`] player (crossfades, rates) — or plays the action game code asked for
+//! ([`request_action`], `action`) — and turns the visual entity to the heading.
 //! The visual entity is a child ([`crate::ecs::Parent`]) of the body: its local `Transform`
 //! puts the feet at the capsule's bottom and holds the model's scale. Main thread.
 //! Must not: move bodies (the controller does) or read input (game rules set the heading).
@@ -14,6 +15,8 @@
 use glam::{Quat, Vec3};
 use hecs::{Entity, World};
 
+use super::action::{ActionKind, ActionRequest, ActionSlot};
+use super::error::AnimResult;
 use super::skinned_entities::SkinnedAnimator;
 use super::state_machine::{Locomotion, StateChange, StateMachine};
 use crate::ecs::Transform;
@@ -48,6 +51,8 @@ pub struct CharacterAnimation {
     pub smoothed_speed_mps: f32,
     /// Seconds since the body last stood on the ground.
     pub airborne_seconds: f32,
+    /// The action asked for this step and the one playing.
+    pub action: ActionSlot,
 }
 
 impl CharacterAnimation {
@@ -67,7 +72,26 @@ impl CharacterAnimation {
             last_locomotion: Locomotion::default(),
             smoothed_speed_mps: 0.0,
             airborne_seconds: 0.0,
+            action: ActionSlot::default(),
         }
+    }
+
+    /// Asks for an action this step (see [`ActionSlot::request`]).
+    pub fn request_action(&mut self, request: ActionRequest) {
+        self.action.request(request);
+    }
+
+    /// Words for the engine's state hash: the state, the action and the player's playheads.
+    pub fn state_words(&self, player: Option<&super::AnimationPlayer>) -> Vec<u64> {
+        let mut words = vec![self.machine.current_index().map_or(u64::MAX, |i| i as u64)];
+        words.extend(self.action.state_words());
+        let playbacks = player.map(|p| [p.current(), p.fading_out()]);
+        for playback in playbacks.into_iter().flatten() {
+            words.extend(playback.map_or([u64::MAX; 2], |p| {
+                [p.clip as u64 | u64::from(p.finished) << 32, p.time_seconds.to_bits()]
+            }));
+        }
+        words
     }
 
     /// What the state machine reads after a step of `dt` seconds in which the body did
@@ -135,9 +159,15 @@ pub fn animate_characters(world: &mut World, dt_seconds: f64) {
         let visual = anim.visual;
         let rotation = anim.visual_rotation();
         let change = match world.get::<&mut SkinnedAnimator>(visual) {
-            Ok(mut animator) => anim
-                .machine
-                .update(&mut animator.player, &locomotion, dt_seconds),
+            Ok(mut animator) => {
+                let anim = &mut *anim;
+                anim.action.update(
+                    &mut anim.machine,
+                    &mut animator.player,
+                    &locomotion,
+                    dt_seconds,
+                )
+            }
             Err(_) => None,
         };
         anim.last_change = change;
@@ -146,4 +176,26 @@ pub fn animate_characters(world: &mut World, dt_seconds: f64) {
             t.rotation = rotation;
         }
     }
+}
+
+/// Asks the character `body` to play its model's clip `clip` (by name, or index in decimal) as
+/// `kind` this step — for game code in its fixed step: a one-shot (`"pick_up"`,
+/// `"celebrate"`) once, a held action (`"push"`) every step it should go on. Returns whether
+/// `body` is an animated character (false: nothing to do); a clip the model lacks is
+/// [`AnimError::NoSuchClip`](super::AnimError::NoSuchClip), naming the model's file.
+pub fn request_action(
+    world: &mut World,
+    body: Entity,
+    clip: &str,
+    kind: ActionKind,
+) -> AnimResult<bool> {
+    let Ok(mut anim) = world.get::<&mut CharacterAnimation>(body) else {
+        return Ok(false);
+    };
+    let Ok(animator) = world.get::<&SkinnedAnimator>(anim.visual) else {
+        return Ok(false);
+    };
+    let index = animator.model.find_clip(clip)?;
+    anim.request_action(ActionRequest::new(index, kind));
+    Ok(true)
 }

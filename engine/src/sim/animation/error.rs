@@ -119,6 +119,13 @@ pub enum AnimError {
         clip: String,
         count: usize,
     },
+    /// A joint asked for by name that no skin of the model has.
+    #[error("{file}: no joint {joint:?} in the model's skins (its joints: {})", joints.join(", "))]
+    NoSuchJoint {
+        file: PathBuf,
+        joint: String,
+        joints: Vec<String>,
+    },
     /// The loader, or a library it calls, panicked: a bug in Candela (a check is missing).
     #[error(
         "{file}: the animation loader panicked ({message}); this is a bug, please report it with the file"

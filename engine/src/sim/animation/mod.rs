@@ -5,7 +5,8 @@
 //! or `authored` reads RON clips → [`Clip`]s (`clip`) are sampled (`sample`) into a
 //! [`Pose`] of local transforms and weights (`pose`), driven by an [`AnimationPlayer`]
 //! (`player`: play, pause, loop, ping-pong, reverse, events, crossfades; for characters
-//! `state_machine` picks the clip from how the body moves, `character_anim` runs it per body)
+//! `state_machine` picks the clip from how the body moves, `speed_blend` mixes walk and run by
+//! speed, `action` plays what game code asks for, `character_anim` runs it per body)
 //! → `pose` gives world matrices → `deform` morphs (`morph`) and skins (`skin`) vertices, as world-space positions
 //! or as mesh-space `Vec<Vec3>` for the deforming-mesh refit in `accel::Upkeep::deform`.
 //!
@@ -14,6 +15,7 @@
 //! `character_anim` (a character's body and its drawn model) touch the ECS.
 //! Units: seconds (float64 clocks, float32 key times as glTF stores them), metres, radians; right-handed, +Y up.
 
+mod action;
 mod authored;
 mod character_anim;
 mod clip;
@@ -30,10 +32,14 @@ mod pose;
 mod sample;
 mod skin;
 mod skinned_entities;
+mod speed_blend;
 mod state_machine;
 
 pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
-pub use character_anim::{CharacterAnimation, animate_characters, heading_direction};
+pub use action::{ActionKind, ActionRequest, ActionSlot};
+pub use character_anim::{
+    CharacterAnimation, animate_characters, heading_direction, request_action,
+};
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
     Deformed, PrimitiveRef, deform_mesh, deform_primitive, scene_primitives, world_positions,
@@ -48,6 +54,7 @@ pub use pose::{NodeRest, NodeTree, Pose};
 pub use sample::{sample_channel, slerp};
 pub use skin::{Influence, Skin, SkinnedVertices, joint_matrices, skin_vertices};
 pub use skinned_entities::{SkinnedAnimator, deform_skinned, tick_skinned};
+pub use speed_blend::{BlendPartner, SpeedBlend};
 pub use state_machine::{
     AnimState, Contact, Locomotion, StateChange, StateCondition, StateMachine, StateMachineError,
     rate,

@@ -102,4 +102,22 @@ impl AnimatedModel {
             }),
         }
     }
+
+    /// Finds a joint of the model's skins by its node name (`"hand_r"`, to attach a torch):
+    /// the index of its node (into [`Pose`]s and [`AnimatedModel::world_matrices`]). A name
+    /// no skin joint has is [`AnimError::NoSuchJoint`], naming the joint and the file.
+    pub fn find_joint(&self, name: &str) -> AnimResult<usize> {
+        let joints = || self.skins.iter().flat_map(|s| s.joints.iter().copied());
+        let name_of = |node: usize| self.nodes.nodes.get(node).and_then(|n| n.name.as_deref());
+        if let Some(node) = joints().find(|&node| name_of(node) == Some(name)) {
+            return Ok(node);
+        }
+        let mut names: Vec<String> = joints().filter_map(|n| name_of(n).map(String::from)).collect();
+        names.dedup();
+        Err(AnimError::NoSuchJoint {
+            file: self.file.clone(),
+            joint: name.to_string(),
+            joints: names,
+        })
+    }
 }

@@ -15,6 +15,7 @@
 
 use super::clip::{Clip, ClipEvent};
 use super::pose::Pose;
+use super::speed_blend::BlendPartner;
 pub use crate::assets::PlayMode;
 
 /// Cycles (loops or ping-pong legs) one tick walks through before skipping the rest.
@@ -35,6 +36,9 @@ pub struct Playback {
     pub paused: bool,
     /// Set when a [`PlayMode::Once`] playback reaches its end.
     pub finished: bool,
+    /// A second clip mixed in at the same fraction of its duration (a walk/run blend, set
+    /// each step by the state machine); its events are not fired.
+    pub blend: Option<BlendPartner>,
     /// The next tick includes the starting point in its event range.
     fresh: bool,
 }
@@ -50,6 +54,7 @@ impl Playback {
             mode,
             paused: false,
             finished: false,
+            blend: None,
             fresh: true,
         }
     }
@@ -254,8 +259,24 @@ impl AnimationPlayer {
     pub fn pose(&self, clips: &[Clip], rest: &Pose) -> Pose {
         let mut pose = rest.clone();
         let apply = |pose: &mut Pose, playback: &Playback| {
-            if let Some(clip) = clips.get(playback.clip) {
-                pose.apply_clip(clip, playback.time_seconds);
+            let Some(clip) = clips.get(playback.clip) else {
+                return;
+            };
+            pose.apply_clip(clip, playback.time_seconds);
+            let Some(partner) = playback.blend.filter(|b| b.weight > 0.0) else {
+                return;
+            };
+            if let Some(other) = clips.get(partner.clip) {
+                // Phase-synchronised: the same fraction of each cycle.
+                let duration = clip.duration_seconds;
+                let phase = if duration > 0.0 {
+                    (playback.time_seconds / duration).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let mut mixed = rest.clone();
+                mixed.apply_clip(other, phase * other.duration_seconds);
+                pose.blend(&mixed, partner.weight);
             }
         };
         match (&self.fading_out, &self.current) {

@@ -73,6 +73,17 @@ impl SkinnedAnimator {
     }
 }
 
+impl SkinnedAnimator {
+    /// The matrix of node `node` (a joint: [`AnimatedModel::find_joint`]) in the pose the
+    /// player gives now, in the glTF file's space (metres; the entity's `Transform` places
+    /// that space in the world): where to attach a torch to `hand_r`. `None` for a node the
+    /// model does not have.
+    pub fn node_matrix(&self, node: usize) -> Option<Mat4> {
+        let pose = self.player.pose(&self.model.clips, &self.model.rest_pose());
+        self.model.world_matrices(&pose).get(node).copied()
+    }
+}
+
 /// Advances every [`SkinnedAnimator`]'s player by `dt_seconds` (one fixed step).
 pub fn tick_skinned(world: &mut World, dt_seconds: f64) {
     for animator in world.query_mut::<&mut SkinnedAnimator>() {

@@ -2,7 +2,9 @@
 //! each playing one clip, chosen every fixed step from how the character moves
 //! ([`Locomotion`]: horizontal speed, vertical speed, on the ground or not), with the clip's
 //! playback rate following the speed (so feet do not slide) and a crossfade
-//! ([`AnimationPlayer::crossfade`]) on every change of state.
+//! ([`AnimationPlayer::crossfade`]) on every change of state. A state may blend a second clip
+//! in by speed (`speed_blend`: walk → run, phase-synchronised). An action (`action`) takes the
+//! player over for a while and then has the machine crossfade back ([`StateMachine::resume_with_fade`]).
 //!
 //! Owns: [`StateMachine`], [`AnimState`], [`StateCondition`], [`Contact`], [`Locomotion`],
 //! [`StateMachineError`]. Data-driven: a level lists the states (`level::character`); the
@@ -15,6 +17,7 @@
 //! Units: metres per second, seconds.
 
 use super::player::{AnimationPlayer, PlayMode, Playback};
+use super::speed_blend::{BlendPartner, SpeedBlend};
 pub use crate::assets::Contact;
 
 /// How a character moves this step: what states are chosen by.
@@ -74,6 +77,9 @@ pub struct AnimState {
     pub max_rate: f32,
     /// Crossfade from the previous state into this one, seconds (0: cut).
     pub fade_in_seconds: f64,
+    /// A second clip blended in by speed (walk → run), phase-synchronised; the rate then
+    /// follows the blended stride ([`SpeedBlend::rate`]; needs `reference_speed_mps`).
+    pub blend: Option<SpeedBlend>,
 }
 
 /// A state machine description that cannot run.
@@ -102,6 +108,9 @@ pub struct StateMachine {
     hysteresis_mps: f32,
     current: Option<usize>,
     seconds_in_state: f64,
+    /// The next update crossfades into its state over this many seconds, even if it is the
+    /// current one (after an action took the player over).
+    resume: Option<f64>,
 }
 
 impl StateMachine {
@@ -125,6 +134,7 @@ impl StateMachine {
             hysteresis_mps,
             current: None,
             seconds_in_state: 0.0,
+            resume: None,
         })
     }
 
@@ -163,6 +173,13 @@ impl StateMachine {
             .unwrap_or(0)
     }
 
+    /// After something else played on the player (an action): the next
+    /// [`StateMachine::update`] crossfades into its state again over `fade_seconds`, even
+    /// into the current one.
+    pub fn resume_with_fade(&mut self, fade_seconds: f64) {
+        self.resume = Some(fade_seconds);
+    }
+
     /// One step of `dt_seconds`: chooses the state for `m`, crossfades `player` into its clip
     /// when the state changes, and sets the clip's rate from the speed. Call before the
     /// player is ticked. Returns the change, if any.
@@ -173,7 +190,8 @@ impl StateMachine {
         dt_seconds: f64,
     ) -> Option<StateChange> {
         let next = self.choose(m);
-        let change = (self.current != Some(next)).then_some(StateChange {
+        let resume = self.resume.take();
+        let change = (resume.is_some() || self.current != Some(next)).then_some(StateChange {
             from: self.current,
             to: next,
         });
@@ -182,7 +200,7 @@ impl StateMachine {
             let playback = Playback::new(state.clip, state.mode);
             match self.current {
                 None => player.play(playback),
-                Some(_) => player.crossfade(playback, state.fade_in_seconds),
+                Some(_) => player.crossfade(playback, resume.unwrap_or(state.fade_in_seconds)),
             }
             self.current = Some(next);
             self.seconds_in_state = 0.0;
@@ -191,15 +209,23 @@ impl StateMachine {
         }
         if let Some(playback) = player.current_mut() {
             playback.speed = f64::from(rate(state, m.horizontal_speed_mps));
+            playback.blend = state.blend.map(|b| BlendPartner {
+                clip: b.clip,
+                weight: b.weight(m.horizontal_speed_mps),
+            });
         }
         change
     }
 }
 
-/// The playback rate of `state` at `speed_mps` over the ground.
+/// The playback rate of `state` at `speed_mps` over the ground (with a blend, of the
+/// blended stride: [`SpeedBlend::rate`]).
 pub fn rate(state: &AnimState, speed_mps: f32) -> f32 {
-    match state.reference_speed_mps {
-        Some(reference) if speed_mps.is_finite() => {
+    match (state.reference_speed_mps, &state.blend) {
+        (Some(reference), Some(blend)) if speed_mps.is_finite() => blend
+            .rate(reference, speed_mps)
+            .clamp(state.min_rate, state.max_rate),
+        (Some(reference), None) if speed_mps.is_finite() => {
             (speed_mps.max(0.0) / reference).clamp(state.min_rate, state.max_rate)
         }
         _ => 1.0,
@@ -233,6 +259,12 @@ fn check_state(s: &AnimState) -> Result<(), String> {
             "rates must be finite with 0 < min_rate ({}) ≤ max_rate ({})",
             s.min_rate, s.max_rate
         ));
+    }
+    if let Some(blend) = &s.blend {
+        blend.check()?;
+        if s.reference_speed_mps.is_none() {
+            return Err("a blend needs the state's reference_speed_mps".into());
+        }
     }
     if !(s.fade_in_seconds.is_finite() && s.fade_in_seconds >= 0.0) {
         return Err(format!(

@@ -1,7 +1,8 @@
 //! The hero's clips, made of sines: `idle` (breathing, a slow look around), `walk`, `run`,
-//! `jump` (tucked, arms up) and `fall` (arms and legs flailing). Each is one looping cycle:
-//! keys every 1/30 s over the clip's period, the last key equal to the first. Every clip
-//! animates the hips' translation and all 17 joints' rotations.
+//! `jump` (tucked, arms up) and `fall` (arms and legs flailing), and the explorer's actions
+//! (`actions`): `push`, `pick_up` and `celebrate`. Each is one cycle: keys every 1/30 s over
+//! the clip's period, the last key equal to the first (a loop is seamless, a one-shot starts
+//! and ends at rest). Every clip animates the hips' translation and all 17 joints' rotations.
 //!
 //! Conventions (`skeleton`): rest rotations are the identity and limbs hang down, so a
 //! positive rotation about X swings a limb's end backwards (−Z) and a positive one about Z
@@ -14,6 +15,7 @@ use std::f64::consts::{PI, TAU};
 
 use glam::{DQuat, DVec3};
 
+use super::actions::{celebrate, pick_up, push};
 use super::skeleton::{HIPS_Y, JOINT_COUNT, joint};
 use crate::gltf_skin::{ChannelPath, ChannelSpec, ClipSpec};
 
@@ -21,13 +23,13 @@ use crate::gltf_skin::{ChannelPath, ChannelSpec, ClipSpec};
 const KEY_RATE_HZ: f64 = 30.0;
 
 /// One pose: the hips' translation (metres) and every joint's local rotation.
-struct Pose {
-    hips: DVec3,
+pub(super) struct Pose {
+    pub(super) hips: DVec3,
     rotations: [DQuat; JOINT_COUNT],
 }
 
 impl Pose {
-    fn rest() -> Self {
+    pub(super) fn rest() -> Self {
         Self {
             hips: DVec3::new(0.0, f64::from(HIPS_Y), 0.0),
             rotations: [DQuat::IDENTITY; JOINT_COUNT],
@@ -35,7 +37,7 @@ impl Pose {
     }
 
     /// Sets joint `j` to yaw (about Y) · roll (about Z) · pitch (about X), radians.
-    fn set(&mut self, j: u16, pitch: f64, yaw: f64, roll: f64) {
+    pub(super) fn set(&mut self, j: u16, pitch: f64, yaw: f64, roll: f64) {
         self.rotations[usize::from(j)] = DQuat::from_rotation_y(yaw)
             * DQuat::from_rotation_z(roll)
             * DQuat::from_rotation_x(pitch);
@@ -44,7 +46,7 @@ impl Pose {
 
 /// Sets both arms: `swing` about X for the left arm (the right one gets `-swing` when
 /// `mirror_swing`), `out` radians away from the body, elbows bent forward by `elbow`.
-fn arms(pose: &mut Pose, swing: f64, mirror_swing: bool, out: f64, elbow: f64) {
+pub(super) fn arms(pose: &mut Pose, swing: f64, mirror_swing: bool, out: f64, elbow: f64) {
     use joint::*;
     let right_swing = if mirror_swing { -swing } else { swing };
     pose.set(UPPER_ARM_L, swing, 0.0, out);
@@ -57,7 +59,7 @@ fn arms(pose: &mut Pose, swing: f64, mirror_swing: bool, out: f64, elbow: f64) {
 /// forward, arms swing `arm` opposite, elbows bent `elbow`, the body leans `lean` forward
 /// and bobs `bob` metres twice per cycle. `a`: the cycle's angle, radians.
 #[allow(clippy::too_many_arguments)]
-fn gait(
+pub(super) fn gait(
     a: f64,
     leg: f64,
     knee_min: f64,
@@ -188,7 +190,7 @@ fn clip(name: &str, period_s: f64, pose_at: fn(f64) -> Pose) -> ClipSpec {
     }
 }
 
-/// The five clips, in file order.
+/// The eight clips, in file order (`hero::CLIPS`).
 pub fn clips() -> Vec<ClipSpec> {
     vec![
         clip("idle", 3.0, idle),
@@ -196,5 +198,8 @@ pub fn clips() -> Vec<ClipSpec> {
         clip("run", 0.7, run),
         clip("jump", 0.8, jump),
         clip("fall", 1.0, fall),
+        clip("push", 1.2, push),
+        clip("pick_up", 1.4, pick_up),
+        clip("celebrate", 1.6, celebrate),
     ]
 }

@@ -1,6 +1,7 @@
 //! The hero of It's About Time (../shared/games/ITS_ABOUT_TIME.md), made by code: a stylised
-//! low-poly humanoid about 1.8 m tall (`body`) on a 17-joint skeleton (`skeleton`) with five
-//! looping clips (`clips`: `idle`, `walk`, `run`, `jump`, `fall`), written by `assetgen hero`
+//! low-poly humanoid about 1.8 m tall (`body`) on a 17-joint skeleton (`skeleton`) with eight
+//! clips (`clips`: `idle`, `walk`, `run`, `jump`, `fall`; `actions`: `push`, `pick_up`,
+//! `celebrate`), written by `assetgen hero`
 //! as one skinned glTF binary, `assets/common/hero/hero.glb`.
 //!
 //! Conventions: metres, right-handed, +Y up; feet at y = 0, facing +Z (a level turns it with
@@ -8,6 +9,7 @@
 //! dark leather (boots, belt, hair). [`hero_files`] gives the file's bytes, deterministic (a
 //! test compares them with the committed file). Must not: read anything from disk.
 
+mod actions;
 mod body;
 mod clips;
 pub mod skeleton;
@@ -17,8 +19,18 @@ use crate::gltf_writer::MaterialSpec;
 
 /// The file name under the hero folder (`assets/common/hero/`).
 pub const FILE: &str = "hero.glb";
-/// The clip names, in file order.
-pub const CLIPS: [&str; 5] = ["idle", "walk", "run", "jump", "fall"];
+/// The clip names, in file order: locomotion first, then the explorer's actions (`push`
+/// loops; `pick_up` and `celebrate` are one-shots that start and end at rest).
+pub const CLIPS: [&str; 8] = [
+    "idle",
+    "walk",
+    "run",
+    "jump",
+    "fall",
+    "push",
+    "pick_up",
+    "celebrate",
+];
 /// The hero's height, metres (feet to the top of the hair).
 pub const HEIGHT_M: f32 = 1.8;
 
