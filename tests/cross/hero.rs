@@ -67,7 +67,16 @@ fn the_hero_loads_as_a_skinned_character() -> anyhow::Result<()> {
     let clips: Vec<&str> = animated.clips.iter().map(|c| c.name.as_str()).collect();
     assert_eq!(
         clips,
-        ["idle", "walk", "run", "jump", "fall", "push", "pick_up", "celebrate"]
+        [
+            "idle",
+            "walk",
+            "run",
+            "jump",
+            "fall",
+            "push",
+            "pick_up",
+            "celebrate"
+        ]
     );
     assert_eq!(clips, assetgen::hero::CLIPS);
     assert!(

@@ -13,7 +13,8 @@ use std::sync::Arc;
 use glam::Vec3;
 
 use crate::assets::{
-    AnimStateEntry, AssetError, BlendEntry, AssetResult, AssetRoot, CharacterEntry, Level, Model, load_model,
+    AnimStateEntry, AssetError, AssetResult, AssetRoot, BlendEntry, CharacterEntry, Level, Model,
+    load_model,
 };
 use crate::sim::animation::{
     AnimState, AnimatedModel, SkinnedAnimator, SpeedBlend, StateCondition, StateMachine,

@@ -116,7 +116,12 @@ impl ThirdPersonPlayer {
     /// [`ThirdPersonPlayer::step`]: a [`ActionKind::Once`] once, then the character returns
     /// to its locomotion; a [`ActionKind::Held`] every step it should go on. A clip the model
     /// lacks is an error naming the model's file ([`request_action`]).
-    pub fn request_action(&self, world: &mut World, clip: &str, kind: ActionKind) -> AnimResult<()> {
+    pub fn request_action(
+        &self,
+        world: &mut World,
+        clip: &str,
+        kind: ActionKind,
+    ) -> AnimResult<()> {
         request_action(world, self.body, clip, kind).map(|_| ())
     }
 

@@ -107,7 +107,11 @@ fn a_one_shot_plays_once_then_the_character_returns_to_locomotion() -> anyhow::R
         let steps = (duration / DT).round() as usize;
         for i in 0..steps {
             rig.step(speed);
-            assert_eq!(rig.playing_clip(), Some(name), "{name}: step {i} of {steps}");
+            assert_eq!(
+                rig.playing_clip(),
+                Some(name),
+                "{name}: step {i} of {steps}"
+            );
             assert_eq!(rig.slot.playing().map(|a| a.clip), Some(clip));
         }
         // The clip's last step finished it: the next hands the player back.
@@ -153,8 +157,7 @@ fn a_held_push_plays_while_asked_for_and_stops_the_step_after() -> anyhow::Resul
 }
 
 #[test]
-fn the_joint_lookup_finds_hand_r_and_names_a_missing_joint_and_the_file() -> anyhow::Result<()>
-{
+fn the_joint_lookup_finds_hand_r_and_names_a_missing_joint_and_the_file() -> anyhow::Result<()> {
     let model = hero()?;
     let hand = model.find_joint("hand_r")?;
     assert_eq!(model.nodes.nodes[hand].name.as_deref(), Some("hand_r"));
@@ -196,7 +199,8 @@ impl Game for Acting {
         };
         if let (true, Some((clip, kind))) = (self.actions, ask) {
             let asked = player.request_action(step.world, clip, kind);
-            self.seen.push(format!("{}: {clip} {:?}", step.index, asked.is_ok()));
+            self.seen
+                .push(format!("{}: {clip} {:?}", step.index, asked.is_ok()));
         }
     }
 }

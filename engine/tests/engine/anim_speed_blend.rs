@@ -20,7 +20,8 @@ const FROM_MPS: f32 = 2.0;
 const TO_MPS: f32 = 4.5;
 
 fn hero() -> anyhow::Result<AnimatedModel> {
-    let path: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/common/hero/hero.glb");
+    let path: PathBuf =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/common/hero/hero.glb");
     Ok(load_animation_file(&path)?)
 }
 
@@ -90,7 +91,10 @@ fn the_blend_weight_rises_monotonically_with_speed() -> anyhow::Result<()> {
     for i in 0..=120 {
         let speed = 0.05 * i as f32;
         let w = b.weight(speed);
-        assert!((0.0..=1.0).contains(&w) && w >= last, "{speed} m/s: {w} after {last}");
+        assert!(
+            (0.0..=1.0).contains(&w) && w >= last,
+            "{speed} m/s: {w} after {last}"
+        );
         last = w;
     }
     assert_eq!(b.weight(FROM_MPS), 0.0);
@@ -154,7 +158,10 @@ fn the_rate_follows_the_blended_stride() -> anyhow::Result<()> {
     for i in 1..=12 {
         let speed = 0.5 * i as f32;
         let stride = speed / b.rate(WALK_MPS, speed);
-        assert!(stride >= last - 1e-5, "{speed} m/s: {stride} m after {last} m");
+        assert!(
+            stride >= last - 1e-5,
+            "{speed} m/s: {stride} m after {last} m"
+        );
         last = stride;
     }
     Ok(())
@@ -165,9 +172,27 @@ fn a_blend_with_bad_numbers_is_refused_by_name() -> anyhow::Result<()> {
     let model = hero()?;
     let good = blend(&model)?;
     for (bad, what) in [
-        (SpeedBlend { to_speed_mps: 1.0, ..good }, "to_speed_mps"),
-        (SpeedBlend { reference_speed_mps: 0.0, ..good }, "reference_speed_mps"),
-        (SpeedBlend { from_speed_mps: f32::NAN, ..good }, "from_speed_mps"),
+        (
+            SpeedBlend {
+                to_speed_mps: 1.0,
+                ..good
+            },
+            "to_speed_mps",
+        ),
+        (
+            SpeedBlend {
+                reference_speed_mps: 0.0,
+                ..good
+            },
+            "reference_speed_mps",
+        ),
+        (
+            SpeedBlend {
+                from_speed_mps: f32::NAN,
+                ..good
+            },
+            "from_speed_mps",
+        ),
     ] {
         match machine(&model, Some(bad)) {
             Err(e) => {
@@ -194,7 +219,10 @@ fn blended_courtyard(dir: &Path, blend_clip: &str) -> anyhow::Result<PathBuf> {
                         max_speed_mps: 3.5,\n                reference_speed_mps: 1.45),\n            \
                         (name: \"run\", clip: \"run\", contact: Grounded, min_speed_mps: 3.5,\n                \
                         reference_speed_mps: 3.35),";
-    anyhow::ensure!(source.contains(walk_and_run), "the courtyard's states changed");
+    anyhow::ensure!(
+        source.contains(walk_and_run),
+        "the courtyard's states changed"
+    );
     let blended = format!(
         "(name: \"move\", clip: \"walk\", contact: Grounded, min_speed_mps: 0.3, \
          reference_speed_mps: 1.45, max_rate: 3, blend: (clip: \"{blend_clip}\", \
@@ -235,7 +263,9 @@ fn a_level_blend_entry_loads_and_an_unknown_clip_is_refused() -> anyhow::Result<
         Err(e) => format!("{e:#}"),
     };
     assert!(
-        error.contains("\"move\"") && error.contains("\"sprint\"") && error.contains("blended_sprint.ron"),
+        error.contains("\"move\"")
+            && error.contains("\"sprint\"")
+            && error.contains("blended_sprint.ron"),
         "{error}"
     );
     Ok(())

@@ -100,7 +100,11 @@ impl Engine {
         }
         drop(query);
         let mut animated: Vec<(u64, Vec<u64>)> = Vec::new();
-        for (e, anim) in self.world.query::<(hecs::Entity, &CharacterAnimation)>().iter() {
+        for (e, anim) in self
+            .world
+            .query::<(hecs::Entity, &CharacterAnimation)>()
+            .iter()
+        {
             let animator = self.world.get::<&SkinnedAnimator>(anim.visual).ok();
             let words = anim.state_words(animator.as_ref().map(|a| &a.player));
             animated.push((e.to_bits().get(), words));

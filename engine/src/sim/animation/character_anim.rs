@@ -88,7 +88,10 @@ impl CharacterAnimation {
         let playbacks = player.map(|p| [p.current(), p.fading_out()]);
         for playback in playbacks.into_iter().flatten() {
             words.extend(playback.map_or([u64::MAX; 2], |p| {
-                [p.clip as u64 | u64::from(p.finished) << 32, p.time_seconds.to_bits()]
+                [
+                    p.clip as u64 | u64::from(p.finished) << 32,
+                    p.time_seconds.to_bits(),
+                ]
             }));
         }
         words

@@ -112,7 +112,9 @@ impl AnimatedModel {
         if let Some(node) = joints().find(|&node| name_of(node) == Some(name)) {
             return Ok(node);
         }
-        let mut names: Vec<String> = joints().filter_map(|n| name_of(n).map(String::from)).collect();
+        let mut names: Vec<String> = joints()
+            .filter_map(|n| name_of(n).map(String::from))
+            .collect();
         names.dedup();
         Err(AnimError::NoSuchJoint {
             file: self.file.clone(),

@@ -15,6 +15,7 @@ use candela::app::edit::{EditHooks, EditTarget};
 use candela::app::shell::ShellHooks;
 use candela::app::{Engine, Game, Happened, LevelEvent, SetupError, SpawnedLevel, Step};
 use candela::app::{Replay, StepInput, ThirdPersonGame};
+use candela::sim::animation::ActionKind;
 use candela::sky::SkyNow;
 
 use crate::world::{LEVEL_ID, RuinsWorld, TIME_BACK, TIME_FORWARD, actions};
@@ -168,6 +169,14 @@ impl TimeGame {
         self.sky.as_ref()
     }
 
+    /// The explorer plays its model's clip `clip` once (it reaches down for an artifact, it
+    /// cheers at the ending), then walks on. An explorer model without the clip just walks on.
+    fn act(&self, step: &mut Step<'_>, clip: &str) {
+        if let Some(player) = self.inner.player() {
+            let _ = player.request_action(step.world, clip, ActionKind::Once);
+        }
+    }
+
     fn say(&mut self, line: impl Into<String>) {
         let now = self.steps;
         self.messages
@@ -196,6 +205,7 @@ impl Game for TimeGame {
             .collect();
         for event in used {
             if event.starts_with(ARTIFACT_PREFIX) && !self.artifacts.contains(&event) {
+                self.act(step, "pick_up");
                 self.artifacts.push(event.clone());
                 let name = day::artifact_name(&event);
                 self.say(format!("You take the {name}"));
@@ -242,6 +252,7 @@ impl Game for TimeGame {
                 ));
             }
             LevelEvent::Ended(_) if self.ended_at.is_none() => {
+                self.act(step, "celebrate");
                 self.ended_at = Some(step.index + 1);
                 self.log.push((step.index, TimeEvent::Ending));
             }

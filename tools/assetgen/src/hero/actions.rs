@@ -72,7 +72,13 @@ pub(super) fn pick_up(a: f64) -> Pose {
     pose.set(NECK, -0.25 * e, 0.0, 0.0);
     pose.set(HEAD, 0.25 * e, 0.0, 0.0);
     // Arms 0.55 rad forward of straight down in the world, reaching between the knees.
-    arms(&mut pose, -(0.55 * e + spine + chest), false, 0.12 * e, 0.2 * e);
+    arms(
+        &mut pose,
+        -(0.55 * e + spine + chest),
+        false,
+        0.12 * e,
+        0.2 * e,
+    );
     pose
 }
 
