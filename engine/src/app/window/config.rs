@@ -55,7 +55,7 @@ pub struct WindowConfig {
 
 impl WindowConfig {
     /// The tonemap for the frame `engine` is about to present (see [`Self::auto_exposure`]).
-    pub fn tonemap_now(&self, engine: &mut crate::app::Engine) -> TonemapSettings {
+    pub fn tonemap_now(&self, engine: &mut crate::app::runner::Engine) -> TonemapSettings {
         let sky = if self.auto_exposure {
             engine.sky_exposure_ev()
         } else {
