@@ -171,6 +171,13 @@ impl SkyTable {
         }
     }
 
+    /// The horizontal illuminance under `sky` over the table held (sky units;
+    /// [`SkyBaker::horizontal_illuminance`]): while a background rebuild runs, the held
+    /// table's sky with `sky`'s own sun and moon.
+    pub fn horizontal_illuminance(&self, sky: &PhysicalSky) -> Result<f32, crate::sky::SkyError> {
+        self.baker.horizontal_illuminance(sky)
+    }
+
     /// Whether a background rebuild is under way (the texels lag the sky asked for).
     pub fn rebuilding(&self) -> bool {
         self.rebuilding.is_some()

@@ -98,16 +98,18 @@ pub struct Engine {
     pub(in crate::app) committed_light:
         Option<(Option<crate::assets::SunDesc>, crate::assets::SkyDesc)>,
     /// The main thread's own sky tables, for the exposure (`sky_exposure.rs`).
-    pub(in crate::app) sky_meter: crate::sky::SkyBaker,
+    pub(in crate::app) sky_meter: super::sky_exposure::SkyMeter,
 }
 
 impl Engine {
     /// Starts the render thread with `config`, headless.
     pub fn new(config: RenderConfig, environment: Environment) -> Result<Self, EngineError> {
+        let sky = config.sky_rebuild;
         Ok(Self::with_render(
             RenderThread::spawn(config)?,
             environment,
             Audio::silent(),
+            sky,
         ))
     }
 
@@ -119,10 +121,12 @@ impl Engine {
         environment: Environment,
         open: crate::render::OpenTracer,
     ) -> Result<Self, EngineError> {
+        let sky = config.sky_rebuild;
         Ok(Self::with_render(
             RenderThread::spawn_with_tracer(config, open)?,
             environment,
             Audio::silent(),
+            sky,
         ))
     }
 
@@ -133,14 +137,21 @@ impl Engine {
         environment: Environment,
         target: PresentTarget,
     ) -> Result<Self, EngineError> {
+        let sky = config.sky_rebuild;
         Ok(Self::with_render(
             RenderThread::spawn_windowed(config, target)?,
             environment,
             Audio::new(),
+            sky,
         ))
     }
 
-    fn with_render(render: RenderThread, environment: Environment, audio: Audio) -> Self {
+    fn with_render(
+        render: RenderThread,
+        environment: Environment,
+        audio: Audio,
+        sky_rebuild: crate::scene::SkyRebuild,
+    ) -> Self {
         Self {
             world: World::new(),
             upkeep: Upkeep::new(),
@@ -170,7 +181,7 @@ impl Engine {
             settle_steps: false,
             motion: Motion::default(),
             committed_light: None,
-            sky_meter: crate::sky::SkyBaker::default(),
+            sky_meter: super::sky_exposure::SkyMeter::new(sky_rebuild),
         }
     }
 
