@@ -7,6 +7,7 @@ import math
 
 inst, clips, volumes, usables, events, rules = [], [], [], [], [], []
 breakables, counters, lights_off, materials = [], [], [], []
+grids, boxes = [], []
 
 BLOCK = {"block_large": (2.4, 1.2, 1.2), "block_medium": (1.6, 0.8, 0.8), "block_small": (1.0, 0.5, 0.6)}
 
@@ -20,7 +21,7 @@ def vec(*v):
 
 
 def add(model, x, y, z, name=None, rot=(0, 0, 0), scale=None, body="Static(shape: Box)",
-        dynamic=False, material=None, light_group=None):
+        dynamic=False, material=None, light_group=None, extra=None):
     s = f'(model: "{model}"'
     if name:
         s += f', name: "{name}"'
@@ -36,6 +37,8 @@ def add(model, x, y, z, name=None, rot=(0, 0, 0), scale=None, body="Static(shape
         s += ", dynamic: true"
     if light_group is not None:
         s += f", light_group: Some({light_group})"
+    if extra:
+        s += f", {extra}"
     if body:
         s += f", body: {body}"
     inst.append(s + "),")
@@ -84,6 +87,33 @@ def box_piece(x0, x1, y0, y1, z0, z1):
     bx, by, bz = BLOCK["block_large"]
     add("block_large", (x0 + x1) / 2, y0, (z0 + z1) / 2,
         scale=((x1 - x0) / bx, (y1 - y0) / by, (z1 - z0) / bz))
+
+
+def ashlar(x0, x1, y0, y1, z0, z1, course=1.2, length=2.4):
+    """The box [x0, x1] × [y0, y1] × [z0, z1] built of coursed blocks (about `course` high and
+    `length` long along the box's longer horizontal side, every other course set half a block
+    along), each a large block scaled to its piece: a wall that reads as masonry, not a slab."""
+    bx, by, bz = BLOCK["block_large"]
+    along_x = (x1 - x0) >= (z1 - z0)
+    a0, a1 = (x0, x1) if along_x else (z0, z1)
+    n_courses = max(1, round((y1 - y0) / course))
+    ch = (y1 - y0) / n_courses
+    n = max(1, round((a1 - a0) / length))
+    step = (a1 - a0) / n
+    for c in range(n_courses):
+        y = y0 + c * ch
+        cuts = [a0 + k * step for k in range(n + 1)]
+        if c % 2 and n > 1:
+            cuts = [a0] + [a0 + (k + 0.5) * step for k in range(n)] + [a1]
+        for a, b in zip(cuts, cuts[1:]):
+            if b - a < 1e-3:
+                continue
+            if along_x:
+                add("block_large", (a + b) / 2, y, (z0 + z1) / 2,
+                    scale=((b - a) / bx, ch / by, (z1 - z0) / bz))
+            else:
+                add("block_large", (x0 + x1) / 2, y, (a + b) / 2, rot=(0, 90, 0),
+                    scale=((b - a) / bx, ch / by, (x1 - x0) / bz))
 
 
 def clip(name, target, prop, keys, interpolation="Linear"):
@@ -147,11 +177,11 @@ def artifact_rules(artifact, label):
                  f'then: [Count(counter: "artifacts"), Play(clip: "{artifact}_taken"), Sound(sound: "chime")], once: true),')
 
 
-def lever(x, z, name, prompt):
-    """A lever (base + handle) at (x, z) whose handle swings 70° about its pivot when the clip
-    `<name>_pull` plays; the base is the usable `name` sending the event `name`."""
-    add("lever_base", x, 0, z, name=name, body="Static(shape: Box)")
-    add("lever_handle", x, 0.5, z, name=f"{name}_handle", rot=(-35, 0, 0),
+def lever(x, z, name, prompt, y=0.0):
+    """A lever (base + handle) standing at (x, y, z) whose handle swings 70° about its pivot
+    when the clip `<name>_pull` plays; the base is the usable `name` sending the event `name`."""
+    add("lever_base", x, y, z, name=name, body="Static(shape: Box)")
+    add("lever_handle", x, y + 0.5, z, name=f"{name}_handle", rot=(-35, 0, 0),
         dynamic=True, body=None)
     clip(f"{name}_pull", f"{name}_handle", "Rotation", [(0, quat_x(0)), (0.6, quat_x(70))])
     events.append(name)

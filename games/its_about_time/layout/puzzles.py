@@ -1,11 +1,11 @@
-"""The three puzzle areas after the sun gate: the court of weights (west), the rolling stone
-(south-east) and the night shrine (north-west). Each adds its pieces, clips, volumes, usables
+"""The four puzzle areas after the sun gate: the water stair (north-east), the court of weights
+(west), the rolling stone (south-east) and the night shrine (north-west). Each adds its pieces, clips, volumes, usables
 and rules to the lists in kit.py, and ends in a vault holding an artifact. Metres, degrees;
 x east, y up, z south (north is -Z)."""
 import math
 
-from kit import (add, artifact_rules, breakables, clip, counters, events, glyph_upright, lever,
-                 lights_off, rules, usables, vault, volumes, wall)
+from kit import (add, artifact_rules, ashlar, boxes, breakables, clip, counters, events, glyph_upright,
+                 grids, lever, lights_off, materials, rules, usables, vault, volumes, wall)
 
 # Glyph numbers of the kit's inlays.
 SUN, FRET, EYE, SERPENT = 0, 1, 2, 3
@@ -126,3 +126,85 @@ def night_shrine():
     rules.append('(name: "shrine_open", when: Counter(counter: "shrine", at_least: 4), '
                  'then: [Play(clip: "shrine_open"), Sound(sound: "door", at: "shrine_gate")], once: true),')
     artifact_rules("artifact_night", "Moon Mirror")
+
+
+def water_stair():
+    """A walled pool (8 × 8 m inside, walls 3.6 m) whose water stands 2.4 m deep at the start,
+    its doorway closed by a sluice gate. The lever by the door drains it (the gate rises once
+    the water is down); inside, the lever beside the reed float fills it again, and the float
+    rides the water up to the terrace along the north wall (2.7 m: too high to climb), where the
+    Rain Jar stands; the lever on the terrace drains it to come down, and one inside by the
+    door drains it for anyone shut in. The counter `pool` holds 1 while the pool is drained.
+    The water ripples where the explorer wades."""
+    x0, x1, z0, z1 = 17.0, 25.0, -22.0, -14.0          # inner faces west / east / north / south
+    T, H = 0.6, 3.6
+    cx = (x0 + x1) / 2
+    door0, door1, door_h = cx - 0.8, cx + 0.8, 2.4
+    ashlar(x0 - T, x0, 0, H, z0 - T, z1 + T)           # west
+    ashlar(x1, x1 + T, 0, H, z0 - T, z1 + T)           # east
+    ashlar(x0, x1, 0, H, z0 - T, z0)                   # north
+    ashlar(x0, door0, 0, H, z1, z1 + T)                # south, west of the door
+    ashlar(door1, x1, 0, H, z1, z1 + T)                # south, east of the door
+    ashlar(door0, door1, door_h, H, z1, z1 + T)        # over the door
+    # The terrace along the north wall, its face at z = -18.6.
+    top, face = 2.7, -18.6
+    ashlar(x0, x1, 0, top, z0, face)
+    # The water: a simulated grid over the open part of the pool (18k triangles, as in the
+    # paper), its rest surface 2.6 m up at the start.
+    hi, drop = 2.6, 2.4
+    size_x, size_z = x1 - x0, z1 - face
+    grids.append(f'(name: "pool_water", size: ({size_x:g}, {size_z:g}), divisions: (112, 80), material: "water"),')
+    add("pool_water", cx, hi, (z1 + face) / 2, name="pool", dynamic=True, body=None,
+        extra='waves: Some((amplitude: 0, wavelength: 2.5, speed: 0.4, '
+              'simulate: Some((wave_speed: 1.2, damping: 0.5, push: 0.12))))')
+    materials.append('(name: "water", kind: Dielectric, ior: 1.33, attenuation_color: (0.42, 0.66, 0.58), '
+                     'attenuation_distance: 1.6),')
+    materials.append('(name: "reed", kind: Diffuse, base_color: (0.45, 0.35, 0.19)),')
+    # The reed float: its top level with the terrace while the pool is full.
+    ft = 0.28
+    boxes.append(f'(name: "reed_float", size: (2.2, {ft:g}, 2.2), material: "reed"),')
+    fz = face + 0.1 + 1.1
+    add("reed_float", cx, top - ft / 2, fz, name="pool_float", dynamic=True, body="Kinematic(shape: Box)")
+    # The sluice gate in the doorway.
+    add("carved_panel", cx, 0, z1 + T / 2, name="pool_sluice", scale=(0.8, 1.25, 1),
+        dynamic=True, body="Kinematic(shape: Box)")
+    # Draining: 1.5 s of groaning, 4 s down, then the sluice rises; filling (the same clips
+    # reversed): the sluice shuts, 2 s still (time to step onto the float), 4 s up.
+    down = [(0, [0, 0, 0]), (1.5, [0, 0, 0]), (5.5, [0, -drop, 0]), (7.5, [0, -drop, 0])]
+    clip("pool_drain", "pool", "Translation", down)
+    clip("pool_float_drain", "pool_float", "Translation", down)
+    clip("pool_sluice_open", "pool_sluice", "Translation",
+         [(0, [0, 0, 0]), (5.5, [0, 0, 0]), (7.5, [0, 2.45, 0])])
+    # Levers: three open the sluice (by the door outside, by the door inside, so no one is
+    # ever shut in, and on the terrace); the one beside the float shuts it. Rules fire on the
+    # lever's event and the counter `pool` (1 while drained); a lever toggling one counter
+    # would undo itself in the same step, as the rules run until nothing changes.
+    drains = [("sluice", cx + 2.2, z1 + T + 1.0, 0.0), ("door", cx - 2.0, z1 - 1.0, 0.0),
+              ("terrace", cx + 2.6, face - 1.8, top)]
+    for name, lx, lz, ly in drains:
+        lever(lx, lz, f"{name}_lever", "E  open the sluice: the pool drains", y=ly)
+    lever(cx + 2.2, fz, "fill_lever", "E  shut the sluice: the pool fills")
+    names = [n for n, *_ in drains] + ["fill"]
+    counters.append('(name: "pool"),')
+    low, full = 'Counter(counter: "pool", at_least: 1)', 'Counter(counter: "pool", at_most: 0)'
+    pulls = lambda verb: ", ".join(f'{verb}(clip: "{n}_lever_pull")' for n in names)
+    drain = ('Play(clip: "pool_drain"), Play(clip: "pool_float_drain"), Play(clip: "pool_sluice_open"), '
+             f'{pulls("Play")}, SetCounter(counter: "pool", value: 1), Sound(sound: "door", at: "pool_sluice")')
+    fill = ('Reverse(clip: "pool_drain"), Reverse(clip: "pool_float_drain"), Reverse(clip: "pool_sluice_open"), '
+            f'{pulls("Reverse")}, SetCounter(counter: "pool", value: 0), Sound(sound: "door", at: "pool_sluice")')
+    for name, *_ in drains:
+        rules.append(f'(name: "pool_drains_{name}", when: All([Event("{name}_lever"), {full}]), then: [{drain}]),')
+    rules.append(f'(name: "pool_fills", when: All([Event("fill_lever"), {low}]), then: [{fill}]),')
+    # The Rain Jar on its pedestal at the back of the terrace, more than a reach (1.8 m) from
+    # the pool floor and from outside the north wall; the glyphs of sun and serpent beside it.
+    az = -20.6
+    add("block_medium", cx, top, az, name="water_pedestal")
+    add("column_drum", cx, top + 0.8, az, name="artifact_water", scale=(0.32, 0.42, 0.32),
+        material="turquoise", dynamic=True, body="Kinematic(shape: Box)")
+    materials.append('(name: "turquoise", kind: MetalRough, base_color: (0.08, 0.5, 0.52), roughness: 0.2),')
+    clip("artifact_water_taken", "artifact_water", "Translation", [(0, [0, 0, 0]), (1, [0, -2.8, 0])])
+    add("torch", x0 + 0.6, top, z0 + 0.6)
+    add("torch_flame", x0 + 0.6, top + 1.5, z0 + 0.6, body=None)
+    add("torch", x1 - 0.6, top, z0 + 0.6)
+    add("torch_flame", x1 - 0.6, top + 1.5, z0 + 0.6, body=None)
+    artifact_rules("artifact_water", "Rain Jar")

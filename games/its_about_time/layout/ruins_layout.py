@@ -12,8 +12,8 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
-from kit import (BLOCK, add, artifact_rules, box_piece, breakables, clip, clips, column, counters,
-                 events, inst, lights_off, materials, rules, usables, volumes, wall)
+from kit import (BLOCK, add, artifact_rules, box_piece, boxes, breakables, clip, clips, column, counters,
+                 events, grids, inst, lights_off, materials, rules, usables, volumes, wall)
 import puzzles
 
 OUT = pathlib.Path("assets/its_about_time/ruins.ron")
@@ -98,6 +98,7 @@ add("torch", 24.5, 0, 4.5)
 add("torch_flame", 24.5, 1.5, 4.5, body=None)
 
 # --- The puzzles after the sun gate (puzzles.py).
+puzzles.water_stair()
 puzzles.weights()
 puzzles.rolling_stone()
 puzzles.night_shrine()
@@ -140,7 +141,7 @@ volumes[:0] = ['(name: "sun_glyph", instance: "sun_glyph", detects: [Player]),',
 events[:0] = ["sun_altar", "artifact_sun"]
 usables[:0] = ['(instance: "sun_altar", prompt: "Hold Q or R to turn time", event: "sun_altar"),',
                '(instance: "artifact_sun", prompt: "E  take the Sun Disc", event: "artifact_sun"),']
-ARTIFACTS = 4
+ARTIFACTS = 5
 rules[:0] = [
     '// E at the altar only rings it; holding Q or R there turns time (the game does that).',
     '(name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "chime", at: "sun_altar", volume: 0.4)]),',
@@ -155,7 +156,7 @@ counters[:0] = ['(name: "artifacts"),']
 event_list = ", ".join(f'"{e}"' for e in events)
 
 level = f"""// It's About Time: the ruins: the temple, the sun altar, the sun gate, the court of weights,
-// the rolling stone and the night shrine (the water stair follows). Written by
+// the water stair, the rolling stone and the night shrine. Written by
 // games/its_about_time/layout/ruins_layout.py (with kit.py and puzzles.py) from the kit made by
 // `cargo run --release -p assetgen -- ruins-kit`; the explorer is assets/common/hero/hero.glb.
 // The replays in assets/its_about_time/replays/ carry this file's hash: re-record them after a
@@ -171,11 +172,16 @@ Level(
         (name: "jade", kind: MetalRough, base_color: (0.12, 0.42, 0.26), roughness: 0.25),
         (name: "obsidian", kind: MetalRough, base_color: (0.03, 0.03, 0.035), roughness: 0.1),
         (name: "silver", kind: Conductor, base_color: (0.93, 0.93, 0.95), roughness: 0.08),
+{chr(10).join('        ' + m for m in materials)}
     ],
     boxes: [
         // A trigger volume's body: the volume is its sensor shape; the box itself is a speck.
         (name: "sensor", size: (0.001, 0.001, 0.001), material: "hidden"),
         (name: "plaza", size: (90, 0.4, 90), material: "plaza_sand"),
+{chr(10).join('        ' + b for b in boxes)}
+    ],
+    grids: [
+{chr(10).join('        ' + g for g in grids)}
     ],
     instances: [
 {chr(10).join('        ' + i for i in inst)}

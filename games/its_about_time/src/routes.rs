@@ -12,9 +12,10 @@ use glam::Vec2;
 use crate::bot::Task;
 
 /// The recordings, by name: `full_game` and one per puzzle.
-pub const NAMES: [&str; 5] = [
+pub const NAMES: [&str; 6] = [
     "full_game",
     "sun_gate",
+    "water_stair",
     "rolling_stone",
     "weights",
     "night_shrine",
@@ -26,12 +27,14 @@ pub fn route(name: &str) -> Option<Vec<Task>> {
     match name {
         "full_game" => {
             tasks.extend(sun_gate());
+            tasks.extend(water_stair(true));
             tasks.extend(rolling_stone());
             tasks.extend(weights());
             tasks.extend(night_shrine(true));
             tasks.extend(temple());
         }
         "sun_gate" => tasks.extend(sun_gate()),
+        "water_stair" => tasks.extend(water_stair(false)),
         "rolling_stone" => tasks.extend(rolling_stone()),
         "weights" => tasks.extend(weights()),
         "night_shrine" => tasks.extend(night_shrine(false)),
@@ -73,6 +76,44 @@ fn sun_gate() -> Vec<Task> {
         walk(14.5, 0.0, 0.4),
         walk(14.5, 4.0, 0.4),
     ]
+}
+
+/// North to the pool (from the sun gate's court, or from the start), drain it at the sluice,
+/// walk in and stand on the float facing the fill lever, fill the pool and ride up, take the
+/// Rain Jar on the terrace, drain the pool from there, step down off the terrace and leave by
+/// the door (ends at (14.5, 4)).
+fn water_stair(from_sun_gate: bool) -> Vec<Task> {
+    let mut tasks = if from_sun_gate {
+        vec![walk(14.5, -8.0, 0.4)]
+    } else {
+        vec![walk(6.0, 8.0, 0.5), walk(14.5, -8.0, 0.4)]
+    };
+    tasks.extend([
+        walk(21.0, -11.4, 0.3),
+        walk(23.2, -11.4, 0.2),
+        walk(23.2, -11.9, 0.15),
+        use_it("sluice_lever"),
+        walk(21.0, -11.9, 0.3),
+        Task::Wait { steps: 480 },
+        walk(21.0, -15.0, 0.3),
+        walk(21.0, -17.4, 0.25),
+        walk(21.8, -17.4, 0.12),
+        use_it("fill_lever"),
+        Task::Wait { steps: 420 },
+        walk(21.0, -17.6, 0.2),
+        walk(21.0, -19.7, 0.2),
+        use_it("artifact_water"),
+        walk(23.6, -19.2, 0.2),
+        walk(23.6, -19.7, 0.15),
+        use_it("terrace_lever"),
+        Task::Wait { steps: 480 },
+        walk(21.0, -17.0, 0.3),
+        walk(21.0, -15.0, 0.3),
+        walk(21.0, -11.5, 0.3),
+        walk(14.5, -8.0, 0.4),
+        walk(14.5, 4.0, 0.4),
+    ]);
+    tasks
 }
 
 /// Round the stone vault's west side to the lever at the ramp's foot, release the boulder,

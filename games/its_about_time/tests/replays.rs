@@ -58,6 +58,24 @@ fn sun_gate_solved(run: &RunSummary) {
     );
 }
 
+/// The pool was drained at the sluice, filled again from its floor, and the Rain Jar on the
+/// terrace (out of reach from the floor and from outside) was taken only after the water had
+/// carried the float up (2 s still, then 4 s rising: 6 s = 360 fixed steps after the fill);
+/// then drained again from the terrace to come down.
+fn water_stair_solved(run: &RunSummary) {
+    let line = run.line();
+    let drained = rule(run, "pool_drains_sluice", true).map(|r| r.0);
+    let filled = rule(run, "pool_fills", true).map(|r| r.0);
+    let jar = taken(run, "artifact_water");
+    let (Some(drained), Some(filled), Some(jar)) = (drained, filled, jar) else {
+        panic!("drained {drained:?}, filled {filled:?}, jar {jar:?}: {line}");
+    };
+    assert!(drained < filled, "{line}");
+    assert!(jar >= filled + 360, "the jar was taken {} steps after the fill: {line}", jar - filled);
+    let down = rule(run, "pool_drains_terrace", true).map(|r| r.0);
+    assert!(down.is_some_and(|d| d > jar), "never drained from the terrace: {line}");
+}
+
 /// The vault of weights opened, then its Balance Stone was taken.
 fn weights_solved(run: &RunSummary) {
     let open = rule(run, "weights_open", true).map(|r| r.0);
@@ -132,6 +150,7 @@ fn the_full_game_replay_solves_every_puzzle_and_reaches_the_ending() -> anyhow::
         run.artifacts,
         [
             "artifact_sun",
+            "artifact_water",
             "artifact_stone",
             "artifact_weights",
             "artifact_night"
@@ -139,6 +158,7 @@ fn the_full_game_replay_solves_every_puzzle_and_reaches_the_ending() -> anyhow::
         "{line}"
     );
     sun_gate_solved(&run);
+    water_stair_solved(&run);
     rolling_stone_solved(&run);
     weights_solved(&run);
     night_shrine_solved(&run);
@@ -152,6 +172,9 @@ fn each_puzzle_replay_takes_its_artifact() -> anyhow::Result<()> {
     let run = play("sun_gate")?;
     assert_eq!(run.artifacts, ["artifact_sun"], "{}", run.line());
     sun_gate_solved(&run);
+    let run = play("water_stair")?;
+    assert_eq!(run.artifacts, ["artifact_water"], "{}", run.line());
+    water_stair_solved(&run);
     let run = play("rolling_stone")?;
     assert_eq!(run.artifacts, ["artifact_stone"], "{}", run.line());
     rolling_stone_solved(&run);
@@ -186,7 +209,7 @@ fn a_replay_cut_short_does_not_reach_the_ending() -> anyhow::Result<()> {
     let run = play_replay(&world, &path)?;
     let _ = std::fs::remove_file(&path);
     assert!(!run.solved() && !run.ending, "{}", run.line());
-    assert!(run.artifacts.len() < 4, "{}", run.line());
+    assert!(run.artifacts.len() < 5, "{}", run.line());
     // And the binary exits non-zero naming the file.
     cut.write(&path)?;
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_its_about_time"))

@@ -20,11 +20,18 @@ use crate::sim::water::{GridLayout, WaterSim};
 pub struct Waves {
     pub desc: WaveDesc,
     pub base: Vec<Vec3>,
+    /// The mesh was last written still (no swell, simulated water still): nothing to rewrite
+    /// or refit until the water moves again.
+    pub written_still: bool,
 }
 
 impl Waves {
     pub fn new(desc: WaveDesc, base: Vec<Vec3>) -> Self {
-        Self { desc, base }
+        Self {
+            desc,
+            base,
+            written_still: false,
+        }
     }
 
     /// Height and its x/z slopes at rest position `p`, time `t` seconds.
@@ -43,13 +50,20 @@ impl Waves {
 }
 
 /// Moves every waving mesh to time `t` (seconds since the start): the swell, plus the
-/// simulated ripples where the water has a [`WaterSim`].
+/// simulated ripples where the water has a [`WaterSim`]. A simulated water without swell
+/// whose surface is still ([`crate::sim::water::HeightField::is_still`]) is written once and
+/// then left alone (no refit, nothing committed) until it moves.
 pub fn waves_system(world: &mut World, t: f64) {
     let t = t as f32;
     for (waves, deformable, sim) in
-        world.query_mut::<(&Waves, &mut Deformable, Option<&WaterSim>)>()
+        world.query_mut::<(&mut Waves, &mut Deformable, Option<&WaterSim>)>()
     {
         let sim = sim.filter(|s| s.field.layout.len() == waves.base.len());
+        let still = waves.desc.amplitude == 0.0 && sim.is_some_and(|s| s.field.is_still());
+        if still && waves.written_still {
+            continue;
+        }
+        waves.written_still = still;
         let normals = match sim {
             Some(sim) => simulated(waves, &mut deformable.positions, sim, t),
             None => swell(waves, &mut deformable.positions, t),
@@ -102,4 +116,63 @@ fn simulated(waves: &Waves, positions: &mut [Vec3], sim: &WaterSim, t: f32) -> V
         }
     }
     normals
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assets::WaterSimDesc;
+
+    fn grid(n: usize) -> Vec<Vec3> {
+        (0..n * n)
+            .map(|i| Vec3::new((i % n) as f32 * 0.1, 0.0, (i / n) as f32 * 0.1))
+            .collect()
+    }
+
+    /// A still simulated water without swell is written once, then left alone (no refit)
+    /// until a ripple moves it; with a swell it is written every frame.
+    #[test]
+    fn a_still_water_is_not_rewritten_until_it_moves() {
+        let base = grid(8);
+        let sim_desc = WaterSimDesc {
+            wave_speed: 1.0,
+            damping: 0.5,
+            substeps: 1,
+            push: 0.1,
+        };
+        let desc = |amplitude| WaveDesc {
+            amplitude,
+            wavelength: 2.0,
+            speed: 0.5,
+            simulate: Some(sim_desc),
+        };
+        let mut world = World::new();
+        let mut spawn = |amplitude: f32| {
+            let sim = WaterSim::on_grid(&base, sim_desc).expect("a grid");
+            let deformable = Deformable {
+                mesh: 0,
+                positions: base.clone(),
+                normals: None,
+                dirty: false,
+            };
+            world.spawn((Waves::new(desc(amplitude), base.clone()), deformable, sim))
+        };
+        let (calm, swell) = (spawn(0.0), spawn(0.02));
+        let dirty = |world: &mut World, e| {
+            let mut d = world.get::<&mut Deformable>(e).expect("deformable");
+            std::mem::replace(&mut d.dirty, false)
+        };
+        waves_system(&mut world, 0.0);
+        assert!(dirty(&mut world, calm) && dirty(&mut world, swell));
+        waves_system(&mut world, 0.1);
+        assert!(!dirty(&mut world, calm), "a still water was rewritten");
+        assert!(dirty(&mut world, swell), "a swell must move every frame");
+        if let Ok(mut sim) = world.get::<&mut WaterSim>(calm) {
+            sim.field.raise(3, 3, 0.05);
+        }
+        waves_system(&mut world, 0.2);
+        assert!(dirty(&mut world, calm), "a ripple did not reach the mesh");
+        let p = world.get::<&Deformable>(calm).expect("deformable").positions[3 + 3 * 8];
+        assert!((p.y - 0.05).abs() < 1e-6, "{p}");
+    }
 }

@@ -66,6 +66,11 @@ impl GridLayout {
     }
 }
 
+/// Heights below which a surface counts as still, metres (0.1 mm).
+pub const STILL_METRES: f32 = 1e-4;
+/// Speeds below which a surface counts as still, metres per second.
+pub const STILL_METRES_PER_SECOND: f32 = 1e-3;
+
 /// Heights and vertical speeds on a [`GridLayout`], stepped by [`HeightField::step`].
 #[derive(Clone, Debug, PartialEq)]
 pub struct HeightField {
@@ -100,6 +105,13 @@ impl HeightField {
     /// The waders' push of the last step, metres, per vertex.
     pub fn pushed(&self) -> &[f32] {
         &self.pushed
+    }
+
+    /// True while the surface is still to the eye: every height under [`STILL_METRES`] and
+    /// every speed under [`STILL_METRES_PER_SECOND`] (the mesh need not be rewritten).
+    pub fn is_still(&self) -> bool {
+        self.h.iter().all(|h| h.abs() < STILL_METRES)
+            && self.v.iter().all(|v| v.abs() < STILL_METRES_PER_SECOND)
     }
 
     /// Raises vertex `(ix, iz)` by `metres` (an interior vertex; edges stay 0).
