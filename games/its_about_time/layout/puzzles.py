@@ -114,7 +114,7 @@ def night_shrine():
                      f'then: [{all_off}, SetCounter(counter: "shrine", value: 0), Sound(sound: "door", at: "torch_{g}", volume: 0.5)]),')
         rules.append(f'(name: "torch_{g}_lit", when: All([Event("torch_{g}"), {dark}, {at}]), '
                      f'then: [Lights(group: {11 + glyph}, on: true), Count(counter: "shrine"), Sound(sound: "chime", at: "torch_{g}", volume: 0.5)]),')
-    vault(-24.5, -22.5, "shrine", "artifact_night", "sun_disc", "silver")
+    vault(-24.5, -22.5, "shrine", "artifact_night", "sun_disc", "silver", art_rot=(0, 0, 0))
     # A second sun altar by the shrine, to bring the night (the game turns time at any usable
     # sending "sun_altar"); a rule that holds while it is dark, for the HUD and the bot.
     add("sun_altar", -19, 0, -12, name="shrine_altar")
@@ -157,8 +157,8 @@ def water_stair():
     add("pool_water", cx, hi, (z1 + face) / 2, name="pool", dynamic=True, body=None,
         extra='waves: Some((amplitude: 0, wavelength: 2.5, speed: 0.4, '
               'simulate: Some((wave_speed: 1.2, damping: 0.5, push: 0.12))))')
-    materials.append('(name: "water", kind: Dielectric, ior: 1.33, attenuation_color: (0.42, 0.66, 0.58), '
-                     'attenuation_distance: 1.6),')
+    materials.append('(name: "water", kind: Dielectric, ior: 1.33, attenuation_color: (0.5, 0.78, 0.7), '
+                     'attenuation_distance: 3.5),')
     materials.append('(name: "reed", kind: Diffuse, base_color: (0.45, 0.35, 0.19)),')
     # The reed float: its top level with the terrace while the pool is full.
     ft = 0.28

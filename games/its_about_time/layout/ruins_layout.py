@@ -79,7 +79,7 @@ add("glyph_tile", GX, 0.01, GZ, name="sun_glyph",
 add("glyph_glow_0", GX, 0.01, GZ, body=None)
 
 # --- The gate court east of the shrine: walls of coursed blocks, the sun gate in the west
-# wall, the Sun Disc on a pedestal inside.
+# wall, the Sun Disc standing on a pedestal inside, its face to the gate.
 CX0, CX1, CZ0, CZ1 = 16.0, 26.0, -6.0, 6.0
 door = lambda s, y: abs(s - (0 - CZ0)) < 1.6 and y < 3.3
 wall(CX0, CZ0, CX0, CZ1, 3, skip=door)
@@ -90,7 +90,7 @@ add("lintel", CX0, 3.0, 0, rot=(0, 90, 0), scale=(1.2, 1, 1))
 add("carved_panel", CX0 - 0.6, 0, 0, name="sun_gate", rot=(0, 90, 0), scale=(1.5, 1.5, 1),
     dynamic=True, body="Kinematic(shape: Box)")
 add("block_medium", 22, 0, 0, name="pedestal")
-add("sun_disc", 22, 1.3, 0, name="artifact_sun", rot=(90, -90, 0),
+add("sun_disc", 22, 1.3, 0, name="artifact_sun", rot=(0, 90, 0),
     dynamic=True, body="Kinematic(shape: Box)")
 add("torch", 24.5, 0, -4.5)
 add("torch_flame", 24.5, 1.5, -4.5, body=None)

@@ -76,9 +76,16 @@ fn water_stair_solved(run: &RunSummary) {
     assert!(down.is_some_and(|d| d > jar), "never drained from the terrace: {line}");
 }
 
-/// The vault of weights opened, then its Balance Stone was taken.
+/// The vault of weights opened, then its Balance Stone was taken; the explorer leaned into
+/// the blocks with its push pose before the vault opened.
 fn weights_solved(run: &RunSummary) {
     let open = rule(run, "weights_open", true).map(|r| r.0);
+    let pushed = (run.log.iter()).find(|(_, e)| matches!(e, TimeEvent::Push(true)));
+    assert!(
+        matches!((pushed, open), (Some(p), Some(o)) if p.0 < o),
+        "pushed {pushed:?}, open {open:?}: {}",
+        run.line()
+    );
     let stone = taken(run, "artifact_weights");
     assert!(
         matches!((open, stone), (Some(o), Some(s)) if o < s),

@@ -93,6 +93,9 @@ pub struct CharacterState {
     /// Metres the kinematic platform it stands on (a lift, a moving floor) carried it in the
     /// last step, on top of [`Self::last_translation`] (`sim/physics/ride.rs`).
     pub platform_motion: Vec3,
+    /// It walked into a dynamic body from the side in the last step (and pushed it, when its
+    /// controller pushes): a game plays its push pose while this holds.
+    pub pushing: bool,
 }
 
 /// The components of a character with a capsule `height` metres tall (feet to head) and
@@ -235,6 +238,13 @@ pub(super) fn move_characters(
             })
         };
         let moved = vec_from_rapier(movement.translation);
+        state.pushing = collisions.iter().any(|c| {
+            let side = c.hit.normal1.y.abs() < 0.5;
+            let parent = rapier.colliders.get(c.handle).and_then(|c| c.parent());
+            side && parent
+                .and_then(|p| rapier.bodies.get(p))
+                .is_some_and(|b| b.is_dynamic())
+        });
         state.grounded = movement.grounded;
         state.sliding = movement.is_sliding_down_slope;
         state.last_translation = moved;

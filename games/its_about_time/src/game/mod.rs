@@ -16,6 +16,7 @@ use candela::app::shell::ShellHooks;
 use candela::app::{Engine, Game, Happened, LevelEvent, SetupError, SpawnedLevel, Step};
 use candela::app::{Replay, StepInput, ThirdPersonGame};
 use candela::sim::animation::ActionKind;
+use candela::sim::physics::CharacterState;
 use candela::sky::SkyNow;
 
 use crate::world::{LEVEL_ID, RuinsWorld, TIME_BACK, TIME_FORWARD, actions};
@@ -60,6 +61,8 @@ pub enum TimeEvent {
         rising: bool,
         hours: Option<f64>,
     },
+    /// The explorer began (true) or stopped (false) leaning into a block with its push pose.
+    Push(bool),
     /// The ending was reached.
     Ending,
 }
@@ -83,6 +86,8 @@ pub struct TimeGame {
     gate_open: bool,
     /// The artifacts the level holds, in level order.
     in_level: Vec<String>,
+    /// The explorer leaned into a block in the last step.
+    pushing: bool,
 }
 
 impl TimeGame {
@@ -115,6 +120,7 @@ impl TimeGame {
             at_altar: false,
             gate_open: false,
             in_level,
+            pushing: false,
         }
     }
 
@@ -177,6 +183,22 @@ impl TimeGame {
         }
     }
 
+    /// While the explorer leans into a block (its controller pushed a dynamic body from the
+    /// side in the last step), it plays its model's `push` clip; it walks on when it stops.
+    fn push_pose(&mut self, step: &mut Step<'_>) {
+        let Some(player) = self.inner.player() else {
+            return;
+        };
+        let pushing = (step.world.get::<&CharacterState>(player.body)).is_ok_and(|s| s.pushing);
+        if pushing {
+            let _ = player.request_action(step.world, "push", ActionKind::Held);
+        }
+        if pushing != self.pushing {
+            self.pushing = pushing;
+            self.log.push((step.index, TimeEvent::Push(pushing)));
+        }
+    }
+
     fn say(&mut self, line: impl Into<String>) {
         let now = self.steps;
         self.messages
@@ -196,6 +218,7 @@ impl Game for TimeGame {
         self.sky = step.sky;
         let before = self.inner.log().len();
         self.inner.fixed_step(step);
+        self.push_pose(step);
         let used: Vec<String> = self.inner.log()[before..]
             .iter()
             .filter_map(|(_, h)| match h {
