@@ -19,8 +19,10 @@ use super::sampling::{basis, power_heuristic, to_local, to_world, uniform_cone, 
 use super::surface::offset_origin;
 use crate::layout::{
     GpuFrameUniforms, INVALID, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, METHOD_MIS, METHOD_NEE,
+    METHOD_SINGLE_PICK,
 };
 use crate::scene::RenderScene;
+use crate::scene::materials::luminance;
 use crate::trace::{Ray, TraceScene};
 
 /// Uniform numbers [`next_event`] draws, whether or not it uses them all.
@@ -81,13 +83,24 @@ pub(super) fn next_event(
 
     let nee = u.method & METHOD_NEE != 0;
     let mis = u.method & METHOD_MIS != 0;
-    if nee && u.light_count > 0 && u.light_weight_total > 0.0 {
+    // Two lights (Brigade §6.2.3): one triangle and the disc. One pick: xi[0] chooses the disc
+    // or the triangles, then (rescaled to [0, 1)) which triangle.
+    let (disc_chance, triangle_chance) = pick_chances(u);
+    let (take_triangle, take_disc, pick_xi) = if u.method & METHOD_SINGLE_PICK == 0 {
+        (true, true, xi[0])
+    } else if xi[0] < disc_chance {
+        (false, true, xi[0])
+    } else {
+        let rescaled = (xi[0] - disc_chance) / triangle_chance;
+        (true, false, rescaled.min(ONE_BELOW))
+    };
+    if nee && take_triangle && u.light_count > 0 && u.light_weight_total > 0.0 {
         let n_lights = u.light_count;
         let by_power = u.method & METHOD_LIGHTS_BY_POWER != 0;
         let picked = if u.method & METHOD_LIGHT_TREE != 0 {
-            super::light_tree::sample(&scene.lights.tree.nodes, n_lights, x, n, xi[0])
+            super::light_tree::sample(&scene.lights.tree.nodes, n_lights, x, n, pick_xi)
         } else {
-            let pick = ((xi[0] * n_lights as f32) as u32).min(n_lights - 1);
+            let pick = ((pick_xi * n_lights as f32) as u32).min(n_lights - 1);
             let mut light = &scene.lights.lights[pick as usize];
             let mut index = pick;
             if by_power && xi[1] >= light.alias_threshold {
@@ -125,7 +138,7 @@ pub(super) fn next_event(
                 }
                 if cos_light > 0.0 && emitter.0 != Vec3::ZERO {
                     let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
-                    let light_pdf = select * dist2 / (cos_light * area);
+                    let light_pdf = select * triangle_chance * dist2 / (cos_light * area);
                     if f != Vec3::ZERO && shadow_to(p, cross / (2.0 * area), counts) {
                         let w = if mis {
                             power_heuristic(light_pdf, bsdf_pdf)
@@ -139,13 +152,13 @@ pub(super) fn next_event(
         }
     }
 
-    if nee && u.sun_solid_angle >= 0.0 {
+    if nee && take_disc && u.sun_solid_angle >= 0.0 {
         let sun = Vec3::from(u.sun_direction);
         let radiance = Vec3::from(u.sun_radiance);
         if u.sun_solid_angle == 0.0 {
             let (f, _) = bsdf.eval(wo_local, to_local(sun, t, b, n));
             if f != Vec3::ZERO && shadow(sun, f32::INFINITY, counts) {
-                sum += f * radiance;
+                sum += f * radiance / disc_chance;
             }
         } else {
             let (st, sb) = basis(sun);
@@ -158,7 +171,7 @@ pub(super) fn next_event(
             let (f, bsdf_pdf) = bsdf.eval(wo_local, to_local(wi, t, b, n));
             let lit = disc_lit(wi, sun, u.sun_sin_radius, Vec3::from(u.sun_terminator));
             if f != Vec3::ZERO && lit && shadow(wi, f32::INFINITY, counts) {
-                let sun_pdf = 1.0 / u.sun_solid_angle;
+                let sun_pdf = disc_chance / u.sun_solid_angle;
                 let w = if mis {
                     power_heuristic(sun_pdf, bsdf_pdf)
                 } else {
@@ -169,6 +182,42 @@ pub(super) fn next_event(
         }
     }
     sum
+}
+
+/// The largest `f32` below 1.
+const ONE_BELOW: f32 = 1.0 - f32::EPSILON / 2.0;
+
+/// The chances that next-event estimation samples (the primary disc, the picked triangle):
+/// both 1 without [`METHOD_SINGLE_PICK`] (each is sampled at every hit: Brigade §6.2.3's two
+/// lights). With it, one pick among all lights, the disc (sun or moon) chosen by its share of a
+/// cosine-free irradiance estimate: the disc gives luminance(radiance) × solid angle (W/m² at
+/// normal incidence; a delta sun's `sun_radiance` is that irradiance already), the triangles
+/// `light_weight_total` (Σ area × emitted luminance) × 1 m⁻², the irradiance they would give a
+/// surface facing them all from one metre. Any split is unbiased as long as the light pdf (here
+/// and at emitters reached by BSDF sampling) divides by it; this one needs no new uniform.
+/// Twin: `pick_chances` in `shaders/trace.wgsl`.
+pub(super) fn pick_chances(u: &GpuFrameUniforms) -> (f32, f32) {
+    if u.method & METHOD_SINGLE_PICK == 0 {
+        return (1.0, 1.0);
+    }
+    let disc = if u.sun_solid_angle < 0.0 {
+        0.0
+    } else if u.sun_solid_angle == 0.0 {
+        luminance(Vec3::from(u.sun_radiance))
+    } else {
+        luminance(Vec3::from(u.sun_radiance)) * u.sun_solid_angle
+    };
+    let triangles = if u.light_count > 0 && u.light_weight_total > 0.0 {
+        u.light_weight_total
+    } else {
+        0.0
+    };
+    let total = disc + triangles;
+    if !(total > 0.0 && total.is_finite() && disc >= 0.0) {
+        return (0.0, 1.0);
+    }
+    let disc_chance = disc / total;
+    (disc_chance, 1.0 - disc_chance)
 }
 
 /// MIS weight of an emitter (triangle or sun disc) reached by BSDF sampling with density

@@ -14,7 +14,7 @@
 
 use glam::{Vec2, Vec3};
 
-use super::direct::{NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event};
+use super::direct::{NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances};
 use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
@@ -153,7 +153,8 @@ pub fn radiance(
                     sun_terminator,
                 )
             {
-                let w = bsdf_hit_weight(u.method, last_delta, last_pdf, 1.0 / sun_solid_angle);
+                let disc_pdf = pick_chances(u).0 / sun_solid_angle;
+                let w = bsdf_hit_weight(u.method, last_delta, last_pdf, disc_pdf);
                 escaped += sun_radiance * w;
             }
             result += throughput * escaped;
@@ -184,7 +185,7 @@ pub fn radiance(
                 } else {
                     1.0 / (u.light_count as f32 * hit_area(scene, &hit))
                 };
-                let light_pdf = select * hit.t * hit.t / cos_light.max(1e-30);
+                let light_pdf = select * pick_chances(u).1 * hit.t * hit.t / cos_light.max(1e-30);
                 bsdf_hit_weight(u.method, false, last_pdf, light_pdf)
             };
             result += throughput * shading.emission * w;
