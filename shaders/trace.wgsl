@@ -5,6 +5,9 @@
 // engine/src/render/gpu/shaders.rs.
 
 const FAR: f32 = 3.0e38;
+// The largest finite f32, and the largest f32 below 1.
+const MAX_F32: f32 = 3.4028235e38;
+const ONE_BELOW: f32 = 0.99999994;
 const NEE_RANDOMS: u32 = 6u;
 
 var<private> count_camera: u32;
@@ -98,6 +101,31 @@ fn light_emission(instance: u32, triangle: u32, bary: vec2<f32>) -> LightEmissio
     return LightEmission(emission, (m.flags & MATERIAL_FLAG_TWO_SIDED_EMISSION) != 0u);
 }
 
+// The chances that next-event estimation samples (the primary disc, the picked triangle): both 1
+// without METHOD_SINGLE_PICK, else the disc's share of a cosine-free irradiance estimate (twin of
+// pick_chances in render/cpu/direct.rs, which documents the choice).
+fn pick_chances() -> vec2<f32> {
+    if ((frame.method & METHOD_SINGLE_PICK) == 0u) {
+        return vec2<f32>(1.0, 1.0);
+    }
+    var disc = 0.0;
+    if (frame.sun_solid_angle == 0.0) {
+        disc = luminance(frame.sun_radiance);
+    } else if (frame.sun_solid_angle > 0.0) {
+        disc = luminance(frame.sun_radiance) * frame.sun_solid_angle;
+    }
+    var triangles = 0.0;
+    if (frame.light_count > 0u && frame.light_weight_total > 0.0) {
+        triangles = frame.light_weight_total;
+    }
+    let total = disc + triangles;
+    if (!(total > 0.0 && total <= MAX_F32 && disc >= 0.0)) {
+        return vec2<f32>(0.0, 1.0);
+    }
+    let disc_chance = disc / total;
+    return vec2<f32>(disc_chance, 1.0 - disc_chance);
+}
+
 // Direct light at a non-delta surface: one emissive triangle (picked by power, uniformly or by
 // the light tree) and the sun, each weighted against BSDF sampling. Returns the shadow rays to
 // trace; `throughput` is folded into their contributions.
@@ -111,13 +139,27 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
     let nee = (frame.method & METHOD_NEE) != 0u;
     let mis = (frame.method & METHOD_MIS) != 0u;
     let by_power = (frame.method & METHOD_LIGHTS_BY_POWER) != 0u;
+    // Two lights (Brigade §6.2.3): one triangle and the disc. One pick: xi[0] chooses the disc
+    // or the triangles, then (rescaled to [0, 1)) which triangle.
+    let chances = pick_chances();
+    var take_triangle = true;
+    var take_disc = true;
+    var pick_xi = xi[0];
+    if ((frame.method & METHOD_SINGLE_PICK) != 0u) {
+        if (xi[0] < chances.x) {
+            take_triangle = false;
+        } else {
+            take_disc = false;
+            pick_xi = min((xi[0] - chances.x) / chances.y, ONE_BELOW);
+        }
+    }
     var picked = LightPick(false, 0u, 0.0);
-    if (nee && frame.light_count > 0u && frame.light_weight_total > 0.0) {
+    if (nee && take_triangle && frame.light_count > 0u && frame.light_weight_total > 0.0) {
         let n_lights = frame.light_count;
         if ((frame.method & METHOD_LIGHT_TREE) != 0u) {
-            picked = light_tree_sample(n_lights, x, f.n, xi[0]);
+            picked = light_tree_sample(n_lights, x, f.n, pick_xi);
         } else {
-            var index = min(u32(xi[0] * f32(n_lights)), n_lights - 1u);
+            var index = min(u32(pick_xi * f32(n_lights)), n_lights - 1u);
             if (by_power && xi[1] >= lights[index].alias_threshold) {
                 index = lights[index].alias_index;
             }
@@ -146,7 +188,7 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
             if (cos_light > 0.0 && any(emitter.radiance != vec3<f32>(0.0))) {
                 let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
-                let light_pdf = picked.pmf * dist2 / (cos_light * area);
+                let light_pdf = picked.pmf * chances.y * dist2 / (cos_light * area);
                 if (any(e.value != vec3<f32>(0.0))) {
                     var w = 1.0;
                     if (mis) {
@@ -159,16 +201,16 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
             }
         }
     }
-    if (nee && frame.sun_solid_angle >= 0.0) {
+    if (nee && take_disc && frame.sun_solid_angle >= 0.0) {
         let sun = frame.sun_direction;
         var wi = sun;
-        var scale = 1.0;
+        var scale = 1.0 / chances.x;
         if (frame.sun_solid_angle > 0.0) {
             wi = to_world(uniform_cone(vec2<f32>(xi[4], xi[5]), frame.sun_cos_radius), basis(sun));
         }
         let e = bsdf_eval(bsdf, wo_local, to_local(wi, f));
         if (frame.sun_solid_angle > 0.0) {
-            let sun_pdf = 1.0 / frame.sun_solid_angle;
+            let sun_pdf = chances.x / frame.sun_solid_angle;
             var w = 1.0;
             if (mis) {
                 w = power_heuristic(sun_pdf, e.pdf);
@@ -283,7 +325,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             var escaped = sky_radiance(ray.direction);
             if (frame.sun_solid_angle > 0.0 && disc_inside(ray.direction, frame.sun_direction, frame.sun_sin_radius)
                 && disc_lit(ray.direction, frame.sun_direction, frame.sun_sin_radius, frame.sun_terminator)) {
-                let w = bsdf_hit_weight(last_delta, last_pdf, 1.0 / frame.sun_solid_angle);
+                let w = bsdf_hit_weight(last_delta, last_pdf, pick_chances().x / frame.sun_solid_angle);
                 escaped += frame.sun_radiance * w;
             }
             result += throughput * escaped;
@@ -309,7 +351,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
                 } else {
                     chance = 1.0 / (f32(frame.light_count) * hit_area(hit));
                 }
-                let light_pdf = chance * hit.t * hit.t / max(cos_light, 1e-30);
+                let light_pdf = chance * pick_chances().y * hit.t * hit.t / max(cos_light, 1e-30);
                 w = bsdf_hit_weight(false, last_pdf, light_pdf);
             }
             result += throughput * shading.emission * w;

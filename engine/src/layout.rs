@@ -340,6 +340,11 @@ pub const METHOD_LIGHTS_BY_POWER: u32 = 4;
 /// point, PBRT-v4's `LightBounds::Importance`); takes precedence over
 /// [`METHOD_LIGHTS_BY_POWER`].
 pub const METHOD_LIGHT_TREE: u32 = 8;
+/// `GpuFrameUniforms::method`: plain single-pick next-event estimation: the primary disc (sun
+/// or moon) is one more entry of the one light pick, chosen by its share of power
+/// (`render/cpu/direct.rs` `pick_chances`), so a hit samples one light. Without it a hit samples
+/// two: the disc and one triangle (Brigade §6.2.3). For the comparison in `bench two-lights`.
+pub const METHOD_SINGLE_PICK: u32 = 16;
 /// The default estimator.
 pub const METHOD_DEFAULT: u32 = METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER;
 

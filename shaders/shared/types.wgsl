@@ -32,6 +32,7 @@ const METHOD_NEE: u32 = 1u;
 const METHOD_MIS: u32 = 2u;
 const METHOD_LIGHTS_BY_POWER: u32 = 4u;
 const METHOD_LIGHT_TREE: u32 = 8u;
+const METHOD_SINGLE_PICK: u32 = 16u;
 
 const LIGHT_NODE_LEAF: u32 = 1u;
 const LIGHT_NODE_TWO_SIDED: u32 = 2u;

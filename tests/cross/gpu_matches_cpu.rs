@@ -24,7 +24,13 @@ fn compare(label: &str, desc: &SceneDesc, size: u32, spp: u32) -> usize {
 }
 
 /// [`compare`] with estimator `method` (`layout::METHOD_*` bits).
-fn compare_method(label: &str, desc: &SceneDesc, size: u32, spp: u32, method: u32) -> usize {
+pub(crate) fn compare_method(
+    label: &str,
+    desc: &SceneDesc,
+    size: u32,
+    spp: u32,
+    method: u32,
+) -> usize {
     let render = |which| render_batches_with(which, desc, size, size, spp, 4, 5, method);
     let cpu = render(Which::Cpu).expect("cpu render");
     let gpu = render(Which::Gpu).expect("gpu render");

@@ -259,6 +259,7 @@ fn rust_and_wgsl_constants_agree() {
         ("METHOD_MIS", METHOD_MIS),
         ("METHOD_LIGHTS_BY_POWER", METHOD_LIGHTS_BY_POWER),
         ("METHOD_LIGHT_TREE", METHOD_LIGHT_TREE),
+        ("METHOD_SINGLE_PICK", METHOD_SINGLE_PICK),
         ("LIGHT_NODE_LEAF", LIGHT_NODE_LEAF),
         ("LIGHT_NODE_TWO_SIDED", LIGHT_NODE_TWO_SIDED),
         (

@@ -26,6 +26,7 @@ mod reflect_record;
 mod reflect_window;
 mod ruins_kit;
 mod shell_screens;
+mod single_pick;
 mod sounds;
 mod stability;
 mod watertight;

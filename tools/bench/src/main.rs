@@ -30,6 +30,9 @@
 //!   replay through the game's frame loop at 160×90 and 320×180, denoiser off and on, against
 //!   converged renders of the same views, and its frame-to-frame stability
 //!   (`docs/charts/picture_error.png`, `docs/ACCURACY.md`).
+//! * `bench two-lights` — Brigade's two light samples per hit against single-pick NEE at equal
+//!   time, a day and a night view of It's About Time's ruins (`docs/charts/two_lights.png`,
+//!   `docs/ACCURACY.md`).
 
 mod balance;
 mod balance_plot;
@@ -69,6 +72,8 @@ mod plot;
 mod rays;
 mod report;
 mod report_reading;
+mod two_lights;
+mod two_lights_plot;
 
 use clap::{Parser, Subcommand};
 
@@ -107,6 +112,9 @@ enum Command {
     /// Scene memory by kind (triangles, BVH, instances, textures, lights) for Reflect and a
     /// 1.4 M-triangle ruin, beside Brigade's 737 MB.
     Memory(memory::MemoryArgs),
+    /// Two light samples per hit (Brigade §6.2.3) against single-pick NEE at equal time on
+    /// It's About Time's ruins, a day and a night view.
+    TwoLights(two_lights::TwoLightsArgs),
     /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
     Balance(balance::BalanceArgs),
 }
@@ -138,6 +146,7 @@ fn main() -> anyhow::Result<()> {
         Command::Ghosting(a) => ghosting::run(&a),
         Command::Denoise(a) => denoise::run(&a),
         Command::Balance(a) => balance::run(&a),
+        Command::TwoLights(a) => two_lights::run(&a),
         Command::Picture(a) => picture::run(&a),
     }
 }
