@@ -1,5 +1,6 @@
-//! The committed sounds (`assets/common/sounds/`) are exactly what `tools/assetgen` makes, and
-//! the engine decodes each one to what the generator meant: the same rate, length and samples.
+//! The committed sounds (`assets/common/sounds/`, `assets/its_about_time/sounds/`) are exactly
+//! what `tools/assetgen` makes, and the engine decodes each one to what the generator meant: the
+//! same rate, length and samples.
 
 use candela::audio::decode_sound;
 
@@ -42,6 +43,35 @@ fn engine_decodes_generated_sounds_sample_for_sample() -> anyhow::Result<()> {
                 spec.name
             );
         }
+    }
+    Ok(())
+}
+
+#[test]
+fn committed_ruins_sounds_are_what_assetgen_makes() -> anyhow::Result<()> {
+    use assetgen::ruins_sound_list::{RUINS_SOUNDS, ruins_sound_files, samples};
+    let dir = candela_tests::repo().join("assets/its_about_time/sounds");
+    let files = ruins_sound_files();
+    assert_eq!(files.len(), RUINS_SOUNDS.len());
+    for (file, bytes) in files {
+        let path = dir.join(&file);
+        let committed = std::fs::read(&path)?;
+        assert!(
+            committed == bytes,
+            "{} is stale: run `cargo run --release -p assetgen -- ruins-sounds`",
+            path.display()
+        );
+    }
+    // The engine reads each back at the generator's rate and length.
+    for spec in RUINS_SOUNDS {
+        let sound = decode_sound(&dir.join(format!("{}.wav", spec.name)))?;
+        assert_eq!(sound.sample_rate_hz(), assetgen::sounds::SAMPLE_RATE_HZ);
+        assert_eq!(
+            sound.frame_count(),
+            samples(spec.name).len(),
+            "{}",
+            spec.name
+        );
     }
     Ok(())
 }

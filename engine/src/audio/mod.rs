@@ -9,8 +9,9 @@
 //! recorder from then on; [`TestDevice`] stands in for a sound card in those tests.
 //!
 //! Flow: `sounds` decodes files into [`Sound`]s (at load time) → the game calls [`Audio::play`]
-//! / [`Audio::play_music`] and [`sync_emitters`] each step → [`Audio::tick`] advances audio time
-//! (silent: mixes into the record). Units: seconds, metres, linear amplitude factors (`1.0` = as
+//! / [`Audio::play_music`] / [`Audio::set_loop_volume`] (named loops, `loops.rs`) and
+//! [`sync_emitters`] each step → [`Audio::tick`] advances audio time (silent: mixes into the
+//! record). Units: seconds, metres, linear amplitude factors (`1.0` = as
 //! authored) unless a name says decibels. Sounds are made by `tools/assetgen` (`assetgen
 //! sounds`), never downloaded.
 //!
@@ -22,6 +23,7 @@ mod emitters;
 mod error;
 mod history;
 mod limits;
+mod loops;
 mod options;
 mod pause;
 mod playback;

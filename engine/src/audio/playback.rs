@@ -47,8 +47,8 @@ pub(super) fn tween_seconds(seconds: f64) -> Tween {
 
 /// A playing sound's kira handles. Dropping the spatial track handle lets kira remove the track
 /// once its sound has finished.
-struct Voice {
-    sound: StaticSoundHandle,
+pub(super) struct Voice {
+    pub(super) sound: StaticSoundHandle,
     track: Option<SpatialTrackHandle>,
 }
 
@@ -58,7 +58,10 @@ pub struct Audio {
     pub(super) listener: ListenerHandle,
     pub(super) effects: TrackHandle,
     pub(super) music: TrackHandle,
-    voices: HashMap<PlayingId, Voice>,
+    pub(super) voices: HashMap<PlayingId, Voice>,
+    /// Named loops a game keeps at a volume it sets each step (see `loops.rs`): sound name →
+    /// the loop playing and its volume.
+    pub(super) loops: HashMap<std::sync::Arc<str>, (PlayingId, f32)>,
     pub(super) music_voice: Option<StaticSoundHandle>,
     pub(super) next_id: u64,
     /// Game seconds: the sum of all (clamped) `tick` steps.
@@ -158,6 +161,7 @@ impl Audio {
             effects,
             music,
             voices: HashMap::new(),
+            loops: HashMap::new(),
             music_voice: None,
             next_id: 0,
             time_seconds: 0.0,

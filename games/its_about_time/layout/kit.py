@@ -174,7 +174,7 @@ def artifact_rules(artifact, label):
     events.append(artifact)
     usables.append(f'(instance: "{artifact}", prompt: "E  take the {label}", event: "{artifact}"),')
     rules.append(f'(name: "take_{artifact[len("artifact_"):]}", when: Event("{artifact}"), '
-                 f'then: [Count(counter: "artifacts"), Play(clip: "{artifact}_taken"), Sound(sound: "chime")], once: true),')
+                 f'then: [Count(counter: "artifacts"), Play(clip: "{artifact}_taken"), Sound(sound: "artifact_chime")], once: true),')
 
 
 def lever(x, z, name, prompt, y=0.0):

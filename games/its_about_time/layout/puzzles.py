@@ -40,7 +40,7 @@ def weights():
     artifact_rules("artifact_weights", "Balance Stone")
     rules.append('(name: "weights_open", when: All([Occupied("plate_sun"), Occupied("plate_serpent"), '
                  'Not(Occupied("plate_fret")), Not(Occupied("plate_eye"))]), '
-                 'then: [Play(clip: "weights_open"), Sound(sound: "door", at: "weights_gate")], once: true),')
+                 'then: [Play(clip: "weights_open"), Sound(sound: "stone_scrape", at: "weights_gate")], once: true),')
 
 
 def rolling_stone():
@@ -77,7 +77,7 @@ def rolling_stone():
     names = ", ".join(f'"stone_wall_{p[-1]}"' for p in pieces)
     breakables.append(f'(name: "stone_wall", pieces: [{names}], impact_speed: Some(3.0), piece_mass: 30),')
     rules.append('(name: "boulder_released", when: Event("boulder_lever"), then: [Play(clip: "boulder_lever_pull"), '
-                 'Play(clip: "boulder_chock_aside"), Sound(sound: "door", at: "boulder_chock")], once: true),')
+                 'Play(clip: "boulder_chock_aside"), Sound(sound: "stone_scrape", at: "boulder_chock")], once: true),')
     artifact_rules("artifact_stone", "Thunder Stone")
 
 
@@ -124,7 +124,7 @@ def night_shrine():
         x = [-30.0, -28.4, -20.6, -19.0][k]
         glyph_upright(glyph, x, 1.2, -22.44)
     rules.append('(name: "shrine_open", when: Counter(counter: "shrine", at_least: 4), '
-                 'then: [Play(clip: "shrine_open"), Sound(sound: "door", at: "shrine_gate")], once: true),')
+                 'then: [Play(clip: "shrine_open"), Sound(sound: "stone_scrape", at: "shrine_gate")], once: true),')
     artifact_rules("artifact_night", "Moon Mirror")
 
 

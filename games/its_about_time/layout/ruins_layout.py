@@ -31,9 +31,9 @@ add("sensor", 0, 1, -14, name="temple_altar",
 for x in (-3.2, 3.2):
     column(x, -14)
 add("lintel", 0, 4.0, -14, scale=(2.0, 1, 1))
-for x in (-5.5, 5.5):
+for x, side in ((-5.5, "west"), (5.5, "east")):
     add("torch", x, 0, -15)
-    add("torch_flame", x, 1.5, -15, body=None)
+    add("torch_flame", x, 1.5, -15, name=f"temple_torch_{side}", body=None)
 add("glyph_tile", -1.6, 0.0, -18.5)
 add("glyph_glow_0", -1.6, 0.0, -18.5, body=None)
 add("glyph_tile", 1.6, 0.0, -18.5)
@@ -93,9 +93,9 @@ add("block_medium", 22, 0, 0, name="pedestal")
 add("sun_disc", 22, 1.3, 0, name="artifact_sun", rot=(0, 90, 0),
     dynamic=True, body="Kinematic(shape: Box)")
 add("torch", 24.5, 0, -4.5)
-add("torch_flame", 24.5, 1.5, -4.5, body=None)
+add("torch_flame", 24.5, 1.5, -4.5, name="gate_torch_north", body=None)
 add("torch", 24.5, 0, 4.5)
-add("torch_flame", 24.5, 1.5, 4.5, body=None)
+add("torch_flame", 24.5, 1.5, 4.5, name="gate_torch_south", body=None)
 
 # --- The puzzles after the sun gate (puzzles.py).
 puzzles.water_stair()
@@ -145,15 +145,26 @@ ARTIFACTS = 5
 rules[:0] = [
     '// E at the altar only rings it; holding Q or R there turns time (the game does that).',
     '(name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "chime", at: "sun_altar", volume: 0.4)]),',
-    '(name: "sun_gate", when: SunLit("sun_glyph"), then: [Play(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")], '
-    'otherwise: [Reverse(clip: "gate_open"), Sound(sound: "door", at: "sun_gate")]),',
+    '(name: "sun_gate", when: SunLit("sun_glyph"), then: [Play(clip: "gate_open"), Sound(sound: "stone_scrape", at: "sun_gate")], '
+    'otherwise: [Reverse(clip: "gate_open"), Sound(sound: "stone_scrape", at: "sun_gate")]),',
     '(name: "take_sun", when: Event("artifact_sun"), then: [Count(counter: "artifacts"), Play(clip: "artifact_sun_taken"), '
-    'Sound(sound: "chime")], once: true),',
+    'Sound(sound: "artifact_chime")], once: true),',
 ]
 rules.append(f'(name: "ending", when: All([Occupied("temple_altar"), Counter(counter: "artifacts", at_least: {ARTIFACTS})]), '
              'then: [Sound(sound: "chime"), Win], once: true),')
 counters[:0] = ['(name: "artifacts"),']
 event_list = ", ".join(f'"{e}"' for e in events)
+# Sounds made by `cargo run --release -p assetgen -- ruins-sounds` (the game plays the footsteps
+# and the loops: games/its_about_time/src/game/soundscape.rs); "chime" and "door" are Reflect's.
+RUINS_SOUNDS = ["artifact_chime", "pad_day", "pad_night", "stone_scrape", "time_warp", "torch",
+                "water", "wind"] + [f"footstep_{s}_{k}" for s in ("sand", "stone") for k in (1, 2, 3)]
+sound_list = "\n".join(f'            (name: "{n}", path: "its_about_time/sounds/{n}.wav"),'
+                        for n in RUINS_SOUNDS)
+# Loops at always-lit torches and, once the level has it, at the pool.
+emitters = [f'(instance: "{t}", sound: "torch", volume: 0.5),' for t in
+            ("temple_torch_west", "temple_torch_east", "gate_torch_north", "gate_torch_south")]
+if any('name: "pool"' in i for i in inst):
+    emitters.append('(instance: "pool", sound: "water", volume: 0.8),')
 
 level = f"""// It's About Time: the ruins: the temple, the sun altar, the sun gate, the court of weights,
 // the water stair, the rolling stone and the night shrine. Written by
@@ -215,7 +226,9 @@ Level(
         sounds: [
             (name: "chime", path: "common/sounds/chime.wav"),
             (name: "door", path: "common/sounds/door_slide.wav"),
+{sound_list}
         ],
+{block("emitters", emitters)}
 {block("animations", clips)}
 {block("volumes", volumes)}
 {block("counters", counters)}

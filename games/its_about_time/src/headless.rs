@@ -9,6 +9,7 @@ use std::path::Path;
 
 use candela::app::harness::{ReplayPace, play_replay as play_replay_with};
 
+use crate::game::soundscape::Surface;
 use crate::game::{TimeEvent, day};
 use crate::world::RuinsWorld;
 
@@ -33,6 +34,8 @@ pub struct RunSummary {
     pub log: Vec<(u64, TimeEvent)>,
     /// The level's breakables that have broken (the rolling stone's wall).
     pub broken: usize,
+    /// Every footstep the explorer made: the fixed step and the surface it sounded.
+    pub footsteps: Vec<(u64, Surface)>,
 }
 
 impl RunSummary {
@@ -84,6 +87,7 @@ pub fn play_replay(world: &RuinsWorld, replay: &Path) -> anyhow::Result<RunSumma
             .map_while(|i| end.engine.physics().broken(i))
             .filter(|&b| b)
             .count(),
+        footsteps: end.game.soundscape().footsteps().to_vec(),
     })?;
     Ok(summary)
 }

@@ -6,6 +6,7 @@
 use std::path::{Path, PathBuf};
 
 use its_about_time::game::TimeEvent;
+use its_about_time::game::soundscape::Surface;
 use its_about_time::headless::{RunSummary, play_replay};
 use its_about_time::replays::{full_game, named};
 use its_about_time::world::RuinsWorld;
@@ -169,7 +170,20 @@ fn the_full_game_replay_solves_every_puzzle_and_reaches_the_ending() -> anyhow::
     rolling_stone_solved(&run);
     weights_solved(&run);
     night_shrine_solved(&run);
+    footsteps_follow_the_ground(&run);
     Ok(())
+}
+
+/// The explorer's footsteps sound what lies under its feet: the whole game walks mostly on the
+/// plaza's sand and sometimes on stone (plates, glyph tiles, the broken wall's pieces), about a
+/// stride (0.8 m) apart, so a few hundred in three minutes of play.
+fn footsteps_follow_the_ground(run: &RunSummary) {
+    let count = |s: Surface| run.footsteps.iter().filter(|(_, f)| *f == s).count();
+    let (sand, stone) = (count(Surface::Sand), count(Surface::Stone));
+    assert!(
+        sand > 100 && stone > 0 && stone < sand,
+        "footsteps: {sand} on sand, {stone} on stone"
+    );
 }
 
 #[test]

@@ -12,7 +12,8 @@
 //! [`reflect_kit`]: the game Reflect's art kit (`assets/reflect/kit/`, glTF + PNG, written by
 //! [`gltf_writer`]); and [`hero`]: the skinned, animated hero (`assets/common/hero/hero.glb`,
 //! written by [`gltf_skin`]); and [`ruins_kit`]: the art kit of It's About Time
-//! (`assets/its_about_time/kit/`, glTF + PNG with normal maps). Must not: depend on third-party data.
+//! (`assets/its_about_time/kit/`, glTF + PNG with normal maps); and [`ruins_sound_list`]: its
+//! sounds (`assets/its_about_time/sounds/*.wav`), synthesised in `ruins_sounds`. Must not: depend on third-party data.
 
 use candela::assets::{
     BoxEntry, CameraDesc, CityEntry, GridEntry, InstanceEntry, Level, LevelMaterial, MaterialKind,
@@ -28,6 +29,8 @@ pub mod hero;
 pub mod reflect_kit;
 mod reflect_sounds;
 pub mod ruins_kit;
+pub mod ruins_sound_list;
+mod ruins_sounds;
 pub mod sounds;
 
 /// Light groups of the demo.

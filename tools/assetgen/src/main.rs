@@ -2,6 +2,8 @@
 //! `assets/test_scenes/demo/demo.ron`, relative to the current folder). See `assetgen::demo_level`.
 //! `assetgen sounds [--out DIR]`: writes the games' sounds as WAV files (default
 //! `assets/common/sounds`). See `assetgen::sounds`.
+//! `assetgen ruins-sounds [--out DIR]`: writes It's About Time's sounds (default
+//! `assets/its_about_time/sounds`). See `assetgen::ruins_sound_list`.
 //! `assetgen reflect-kit [--out DIR]`: writes the Reflect art kit (default
 //! `assets/reflect/kit`), glTF + PNG. See `assetgen::reflect_kit`.
 //! `assetgen ruins-kit [--out DIR]`: writes the It's About Time art kit (default
@@ -31,6 +33,11 @@ enum Command {
     /// The games' sounds (mono 16-bit WAV, synthesised).
     Sounds {
         #[arg(long, default_value = "assets/common/sounds")]
+        out: PathBuf,
+    },
+    /// It's About Time's sounds (mono 16-bit WAV, synthesised).
+    RuinsSounds {
+        #[arg(long, default_value = "assets/its_about_time/sounds")]
         out: PathBuf,
     },
     /// The Reflect art kit (glTF pieces and their PNG textures).
@@ -63,16 +70,9 @@ fn main() -> anyhow::Result<()> {
             println!("wrote {}", out.display());
             Ok(())
         }
-        Command::Sounds { out } => {
-            std::fs::create_dir_all(&out)
-                .with_context(|| format!("cannot create {}", out.display()))?;
-            for (file, bytes) in assetgen::sounds::sound_files() {
-                let path = out.join(file);
-                std::fs::write(&path, &bytes)
-                    .with_context(|| format!("cannot write {}", path.display()))?;
-                println!("wrote {} ({} bytes)", path.display(), bytes.len());
-            }
-            Ok(())
+        Command::Sounds { out } => write_sounds(&out, assetgen::sounds::sound_files()),
+        Command::RuinsSounds { out } => {
+            write_sounds(&out, assetgen::ruins_sound_list::ruins_sound_files())
         }
         Command::ReflectKit { out } => {
             write_kit(&out, &assetgen::reflect_kit::kit_files()?)?;
@@ -101,6 +101,18 @@ fn main() -> anyhow::Result<()> {
             Ok(())
         }
     }
+}
+
+/// Writes `(file name, WAV bytes)` sounds into `out` and names each.
+fn write_sounds(out: &std::path::Path, files: Vec<(String, Vec<u8>)>) -> anyhow::Result<()> {
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    for (file, bytes) in files {
+        let path = out.join(file);
+        std::fs::write(&path, &bytes)
+            .with_context(|| format!("cannot write {}", path.display()))?;
+        println!("wrote {} ({} bytes)", path.display(), bytes.len());
+    }
+    Ok(())
 }
 
 /// Writes a kit's `(relative path, bytes)` files under `out` and says how much it wrote.

@@ -15,7 +15,7 @@ use crate::sounds::{Noise, SAMPLE_RATE_HZ, bell, duration_of, edges, frames, mid
 
 /// `count` partials `(hz, amplitude, phase)` between `low_hz` and `high_hz` on a grid of
 /// `1 / loop_seconds`, with random phases and amplitudes: band noise that loops seamlessly.
-fn loop_noise(
+pub(crate) fn loop_noise(
     seed: u64,
     count: usize,
     low_hz: f64,
@@ -34,7 +34,7 @@ fn loop_noise(
         .collect()
 }
 
-fn sum_partials(partials: &[(f64, f64, f64)], t: f64) -> f64 {
+pub(crate) fn sum_partials(partials: &[(f64, f64, f64)], t: f64) -> f64 {
     partials
         .iter()
         .map(|(hz, amp, phase)| amp * (TAU * hz * t + phase).sin())

@@ -154,7 +154,7 @@ pub fn wav_bytes(samples: &[f32]) -> Vec<u8> {
     out
 }
 
-fn normalized(raw: &[f64]) -> Vec<f32> {
+pub(crate) fn normalized(raw: &[f64]) -> Vec<f32> {
     let peak = raw.iter().fold(0.0f64, |m, s| m.max(s.abs()));
     let gain = if peak > 0.0 {
         PEAK_AMPLITUDE / peak

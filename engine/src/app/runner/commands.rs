@@ -1,5 +1,5 @@
 //! [`Commands`]: the work a game's hooks queue for the engine (light groups, cuts, events for
-//! the level's rules, checkpoints, level ends, unplaced sounds, the time of day), carried out in order right
+//! the level's rules, checkpoints, level ends, unplaced sounds and loops, the time of day), carried out in order right
 //! after the hook returns (`Engine::frame`, `app/runner/frame.rs`); and the
 //! [`ProgressEvent`]s the checkpoints, ends and finishes become, for the shell to save.
 //!
@@ -36,6 +36,10 @@ pub enum Command {
     /// Play the level's sound `name` (from its `gameplay.sounds`) once, not placed, at linear
     /// volume `volume`: a cue for the HUD's messages. Not part of the simulation's state.
     Sound { name: String, volume: f32 },
+    /// Keep the level's sound `name` looping, not placed, at linear volume `volume` (started
+    /// the first time; 0 keeps it running silently): wind, a music pad, a sound held while a
+    /// button is (`Audio::set_loop_volume`). Not part of the simulation's state.
+    Loop { name: String, volume: f32 },
     /// Set or turn the physical sky's time of day (`app/runner/time_of_day.rs`).
     Time(TimeChange),
 }
@@ -95,6 +99,16 @@ impl Commands {
     /// sound the level does not have is logged and skipped).
     pub fn play_sound(&mut self, name: impl Into<String>, volume: f32) {
         self.queue.push(Command::Sound {
+            name: name.into(),
+            volume,
+        });
+    }
+
+    /// Keeps the level's sound `name` looping, not placed, at `volume` (linear, `0.0..=1.0`):
+    /// the first call starts it, later ones ramp its volume; queue it every step the volume
+    /// should change (a sound the level does not have is logged and skipped).
+    pub fn set_loop_volume(&mut self, name: impl Into<String>, volume: f32) {
+        self.queue.push(Command::Loop {
             name: name.into(),
             volume,
         });

@@ -283,6 +283,7 @@ impl Engine {
                     self.progress_events.push(ProgressEvent::Finished(level));
                 }
                 Command::Sound { name, volume } => self.play_named(&name, volume),
+                Command::Loop { name, volume } => self.loop_named(&name, volume),
                 Command::Time(change) => {
                     if let Err(e) = self.change_time(change) {
                         log::warn!("{change:?}: {e}; the time of day is unchanged");
@@ -363,6 +364,18 @@ impl Engine {
         };
         if let Err(e) = self.audio.play(&planned.sound, options) {
             log::warn!("sound {name:?}: {e}");
+        }
+    }
+
+    /// Keeps the level's sound `name` looping at `volume`, not placed (a game's
+    /// [`Command::Loop`]).
+    fn loop_named(&mut self, name: &str, volume: f32) {
+        let Some(planned) = self.logic.sounds().iter().find(|s| s.name == name) else {
+            log::warn!("a game asked for loop {name:?}, which the level does not have");
+            return;
+        };
+        if let Err(e) = self.audio.set_loop_volume(&planned.sound, volume) {
+            log::warn!("loop {name:?}: {e}");
         }
     }
 }

@@ -6,7 +6,7 @@
 //! its glyph; taking an artifact counts it; standing at the temple altar with every artifact
 //! wins). The game adds what rules cannot: turning time (`Commands::advance_time`) and the
 //! HUD. The day clock's arithmetic is in `day.rs`, the HUD in `hud.rs`, the time-of-day dial in
-//! `dial.rs`.
+//! `dial.rs`, the footsteps and sound loops in `soundscape.rs`.
 //!
 //! Main thread, inside the engine's hooks (`candela::app::Game`). Must not: read devices (the
 //! step's actions come from the devices or a replay alike) or reach into the renderer.
@@ -24,6 +24,9 @@ use crate::world::{LEVEL_ID, RuinsWorld, TIME_BACK, TIME_FORWARD, actions};
 pub mod day;
 mod dial;
 mod hud;
+pub mod soundscape;
+
+use soundscape::Soundscape;
 
 /// The game name the recordings carry.
 pub const GAME_NAME: &str = "its_about_time";
@@ -88,6 +91,8 @@ pub struct TimeGame {
     in_level: Vec<String>,
     /// The explorer leaned into a block in the last step.
     pushing: bool,
+    /// Footsteps and sound loops.
+    sounds: Soundscape,
 }
 
 impl TimeGame {
@@ -121,7 +126,13 @@ impl TimeGame {
             gate_open: false,
             in_level,
             pushing: false,
+            sounds: Soundscape::default(),
         }
+    }
+
+    /// Footsteps and the sound loops' mix.
+    pub fn soundscape(&self) -> &Soundscape {
+        &self.sounds
     }
 
     /// The engine's third-person game underneath.
@@ -240,6 +251,7 @@ impl Game for TimeGame {
             .player()
             .and_then(|p| p.focus())
             .is_some_and(|(_, u)| u.event == ALTAR_EVENT);
+        let mut turning = false;
         if self.at_altar && self.ended_at.is_none() {
             let held = |name: &str| {
                 step.action_set
@@ -251,8 +263,15 @@ impl Game for TimeGame {
                 let seconds = turn * ALTAR_RATE * step.step_seconds;
                 step.commands.advance_time(seconds);
                 self.log.push((step.index, TimeEvent::Turned(seconds)));
+                turning = true;
             }
         }
+        let centre = self
+            .inner
+            .player()
+            .map(|p| p.centre(step.world, Some(step.physics)));
+        let level = (self.inner.level(), self.inner.spawned());
+        self.sounds.step(step, level, centre, turning);
     }
 
     fn level_event(&mut self, step: &mut Step<'_>, event: &LevelEvent) {
@@ -311,6 +330,7 @@ impl EditHooks for TimeGame {
 
     fn level_respawned(&mut self, engine: &mut Engine, spawned: &SpawnedLevel) {
         self.inner.level_respawned(engine, spawned);
+        self.sounds.level_changed();
     }
 }
 
