@@ -122,18 +122,20 @@ pub(super) fn render_one(
     }
     let apply_seconds = started.elapsed().as_secs_f64();
     let work = scaling.current();
-    let size = work.film_size(output.0, output.1);
+    let shown = work.film_size(output.0, output.1);
     if scaling.resized() {
         converge.reset();
     }
-    // Temporal upscaling up to the output size at most (a film at the output's size traces
-    // as before).
-    let upscale = config
-        .temporal_upscale
-        .unwrap_or(1)
-        .min(output.0 / size.0.max(1))
-        .min(output.1 / size.1.max(1))
-        .max(1);
+    // Temporal upscaling: the denoiser's film is the size scaling chose, the tracer traces a
+    // `upscale`-th of it each way.
+    let upscale = match denoiser {
+        Some(_) => config
+            .temporal_upscale
+            .unwrap_or(1)
+            .clamp(1, shown.0.min(shown.1).max(1)),
+        None => 1,
+    };
+    let size = (shown.0 / upscale, shown.1 / upscale);
     let mut attempt = |tracer: &mut Box<dyn Tracer>, converge: &mut Converge| {
         let denoiser = denoiser.as_deref_mut();
         trace(

@@ -60,11 +60,11 @@ pub struct RenderConfig {
     /// the denoiser's history accumulates them. Off for captures and references (biased), on
     /// in games.
     pub denoise: bool,
-    /// Temporal upscaling by this factor (with the denoiser on; `denoise::upscale`): the traced
-    /// film's samples are jittered by one Halton offset per frame (`render::jitter`) and the
-    /// denoiser's history, and so the presented film, is this many times the traced size each
-    /// way (at most the output size). `None` (or 1 and less): the traced size, bit-identical
-    /// to before.
+    /// Temporal upscaling by this factor (with the denoiser on; `denoise::upscale`): the film
+    /// the denoiser keeps and presents is the size scaling chooses (the output size without
+    /// scaling), the tracer traces this factor less each way, its samples offset by one
+    /// Halton offset per frame (`render::jitter`). `None` or 1: no upscaling, bit-identical to
+    /// before.
     pub temporal_upscale: Option<u32>,
     /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
     /// level's; `capture --light-sampling`).

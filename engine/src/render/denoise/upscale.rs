@@ -3,7 +3,8 @@
 //! (`render::jitter`, Halton 2, 3), and the denoiser's history lives at `factor` times that
 //! size (e.g. 320×180). Each traced sample lands in exactly one history pixel — the one its
 //! offset falls in — and is blended there as the temporal stage blends (`temporal_pixel`, the
-//! weight `max(blend, 1 / (samples + 1))`, an exact mean while the camera is still); so over
+//! weight `max(blend · factor², 1 / (samples + 1))`: about an exact mean while the camera is
+//! still, and an old history fades within as many frames as without upscaling); so over
 //! the jitter's frames every history pixel receives samples of its own footprint, and a still
 //! picture converges to the high-resolution one, not to an upscaled low-resolution one.
 //!
@@ -105,13 +106,17 @@ fn check(traced: &Traced<'_>, guides: &Guides) -> Result<u32, DenoiseError> {
 
 /// Blends each traced sample into the history pixel its offset falls in (`factor` history
 /// pixels per traced pixel each way), demodulated by that pixel's `albedo`, with weight
-/// `max(blend, 1 / (samples + 1))` (`blend` ≥ 1 restarts the pixel).
+/// `max(min(1, blend · factor²), 1 / (samples + 1))` (`blend` ≥ 1 restarts the pixel).
 pub fn splat(history: &mut History, traced: &Traced<'_>, factor: u32, albedo: &[Vec3], blend: f32) {
     let f = factor as usize;
     let (hw, tw) = (history.width as usize, traced.width as usize);
     let sub = |j: f32| ((j.clamp(0.0, 1.0) * factor as f32) as usize).min(f - 1);
     let (dx, dy) = (sub(traced.jitter.0), sub(traced.jitter.1));
     let restart = blend.is_nan() || blend >= 1.0;
+    // A history pixel gets a sample every f² frames or so: the frame's floor scaled by f²
+    // fades an old history within as many frames as without upscaling (a surface's light
+    // changed, or a history reprojection kept wrongly: no longer ghosts f² times as long).
+    let floor = (blend * (f * f) as f32).min(1.0);
     history
         .illumination
         .par_chunks_mut(hw * f)
@@ -128,7 +133,7 @@ pub fn splat(history: &mut History, traced: &Traced<'_>, factor: u32, albedo: &[
                 let weight = if restart {
                     1.0
                 } else {
-                    blend.max(1.0 / (h.w.max(0.0) + 1.0))
+                    floor.max(1.0 / (h.w.max(0.0) + 1.0))
                 };
                 [il[j], mo[j]] = temporal_pixel(h, mo[j], c, demod, weight);
             }
