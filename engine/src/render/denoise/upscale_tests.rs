@@ -104,7 +104,11 @@ fn still_camera_converges_to_the_high_resolution_picture() {
                     (j.0 * 2.0) as u32 == x % 2 && (j.1 * 2.0) as u32 == y % 2
                 })
                 .count();
-            assert_eq!(p.w, landed as f32, "samples at ({x}, {y})");
+            // The length is capped at 1 / (blend · f²) = frames / 4 (`splat`'s floor): every
+            // sample that landed, up to that cap, less a sample or two lost to earlier caps.
+            let n = landed as f32;
+            let low = n.min((frames / 4) as f32) - 2.0;
+            assert!(p.w <= n && p.w >= low, "samples at ({x}, {y}): {} of {n}", p.w);
             let e = (p.x - truth(x, y)).abs();
             assert!(e < 0.4, "({x}, {y}): {} against {}", p.x, truth(x, y));
             sum += e;
