@@ -33,8 +33,13 @@ fn sky_radiance(d: vec3<f32>) -> vec3<f32> {
 }
 
 fn camera_ray(px: u32, py: u32, rng: ptr<function, Rng>) -> Ray {
-    let jx = rng_next(rng);
-    let jy = rng_next(rng);
+    var jx = rng_next(rng);
+    var jy = rng_next(rng);
+    // A fixed offset for temporal upscaling (`render::jitter`): bit 31, x and y in 1/32768.
+    if ((frame.pixel_jitter & 0x80000000u) != 0u) {
+        jx = f32(frame.pixel_jitter & 0x7fffu) / 32768.0;
+        jy = f32((frame.pixel_jitter >> 15u) & 0x7fffu) / 32768.0;
+    }
     let sx = 2.0 * (f32(px) + jx) / f32(frame.width) - 1.0;
     let sy = 1.0 - 2.0 * (f32(py) + jy) / f32(frame.height);
     let forward = frame.camera_forward;

@@ -441,7 +441,10 @@ pub struct GpuFrameUniforms {
     pub star_sin_radius: f32,
     /// The air's transmittance straight up; along `d` it is this to the air mass of `d.y`.
     pub zenith_transmittance: [f32; 3],
-    pub _night_padding: u32,
+    /// A fixed offset of every camera sample inside its pixel, for temporal upscaling
+    /// (`render::jitter`: 0 = uniform in the pixel, the box filter; else bit 31 and x, y in
+    /// 1/32768 of a pixel in bits 0–14 and 15–29).
+    pub pixel_jitter: u32,
     /// Rows of the rotation from engine space to the celestial frame (x: equinox, z: north
     /// celestial pole; `sky::celestial_frame`); `w` unused.
     pub celestial_x: [f32; 4],

@@ -197,7 +197,7 @@ struct GpuFrameUniforms {
     airglow: vec3<f32>,
     star_sin_radius: f32,
     zenith_transmittance: vec3<f32>,
-    _night_padding: u32,
+    pixel_jitter: u32,
     celestial_x: vec4<f32>,
     celestial_y: vec4<f32>,
     celestial_z: vec4<f32>,

@@ -150,7 +150,7 @@ fn rust_layouts() -> Vec<RustLayout> {
             airglow,
             star_sin_radius,
             zenith_transmittance,
-            _night_padding,
+            pixel_jitter,
             celestial_x,
             celestial_y,
             celestial_z

@@ -130,7 +130,7 @@ pub fn frame_uniforms(
         airglow: [0.0; 3],
         star_sin_radius: 0.0,
         zenith_transmittance: [1.0; 3],
-        _night_padding: 0,
+        pixel_jitter: 0,
         celestial_x: [1.0, 0.0, 0.0, 0.0],
         celestial_y: [0.0, 1.0, 0.0, 0.0],
         celestial_z: [0.0, 0.0, 1.0, 0.0],

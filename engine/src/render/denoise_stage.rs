@@ -4,6 +4,9 @@
 //! (`denoise::Svgf`, whose history then does the accumulating), and keep the denoised film for
 //! the capture and the presenter.
 //!
+//! With temporal upscaling (`RenderConfig::temporal_upscale`) the guides are traced at the
+//! upscaled size and the denoiser's history lives there (`denoise::upscale`).
+//!
 //! The denoiser reprojects its history per pixel with this frame's camera and instance
 //! transforms (`denoise::reproject`), so a moving camera keeps what is still in view.
 //!
@@ -15,8 +18,9 @@
 use std::time::Instant;
 
 use super::cpu::guides::trace_guides;
-use super::denoise::{ReprojectStats, Svgf, SvgfParams, View, world_from_object};
+use super::denoise::{ReprojectStats, Svgf, SvgfParams, Traced, View, world_from_object};
 use super::film::Film;
+use super::jitter::unpack;
 use super::tracer::{FilmView, RenderError, Tracer};
 use crate::layout::GpuFrameUniforms;
 use crate::scene::RenderScene;
@@ -38,7 +42,9 @@ impl DenoiseStage {
     }
 
     /// Denoises the frame `tracer` just rendered with `uniforms` over `scene`; `blend` is the
-    /// converging factor (1 restarts the history). Returns the seconds it took (guides
+    /// converging factor (1 restarts the history); `upscale` > 1 upscales temporally by that
+    /// factor (`denoise::upscale`: guides and film at `upscale` times the traced size, the
+    /// samples' offset read from `uniforms.pixel_jitter`). Returns the seconds it took (guides
     /// included).
     pub fn run(
         &mut self,
@@ -46,15 +52,30 @@ impl DenoiseStage {
         uniforms: &GpuFrameUniforms,
         tracer: &mut dyn Tracer,
         blend: f32,
+        upscale: u32,
     ) -> Result<f64, RenderError> {
         let started = Instant::now();
         let frame = tracer.film()?;
-        let guides = trace_guides(scene, uniforms);
         let transforms = scene.instances.iter().map(world_from_object).collect();
-        let (film, stats) = self
-            .svgf
-            .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)
-            .map_err(|e| RenderError::Device(format!("denoiser: {e}")))?;
+        let (film, stats) = if upscale > 1 {
+            let mut high = *uniforms;
+            high.width = uniforms.width * upscale;
+            high.height = uniforms.height * upscale;
+            let guides = trace_guides(scene, &high);
+            let traced = Traced {
+                mean: &frame.mean,
+                width: frame.width,
+                height: frame.height,
+                jitter: unpack(uniforms.pixel_jitter).unwrap_or((0.5, 0.5)),
+            };
+            self.svgf
+                .denoise_upscaled(traced, &guides, blend, View::of(&high), transforms)
+        } else {
+            let guides = trace_guides(scene, uniforms);
+            self.svgf
+                .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)
+        }
+        .map_err(|e| RenderError::Device(format!("denoiser: {e}")))?;
         self.film = film;
         self.reprojected = stats;
         Ok(started.elapsed().as_secs_f64())

@@ -10,6 +10,7 @@ use std::time::Instant;
 
 use super::denoise_stage::DenoiseStage;
 use super::film::{Converge, Film};
+use super::jitter;
 use super::scaling::Scaling;
 use super::thread::{RenderConfig, Rendered};
 use super::tracer::{RenderError, RenderStats, Tracer};
@@ -27,7 +28,8 @@ struct Traced {
 }
 
 /// Traces (and denoises) `commit`'s frame at `size` with the workload `work` over `scene`,
-/// already brought up to date.
+/// already brought up to date; with the denoiser on and `upscale` > 1, the samples are
+/// jittered by the frame's offset and the denoiser upscales (`denoise::upscale`).
 #[allow(clippy::too_many_arguments)] // the render thread's state, one borrow each
 fn trace(
     commit: &Commit,
@@ -38,6 +40,7 @@ fn trace(
     tracer: &mut dyn Tracer,
     converge: &mut Converge,
     denoiser: Option<&mut DenoiseStage>,
+    upscale: u32,
 ) -> Result<Traced, RenderError> {
     // The denoiser reprojects its history per pixel: camera motion need not restart it.
     let blend = if denoiser.is_some() {
@@ -54,19 +57,23 @@ fn trace(
     // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.
     settings.film_blend = if denoiser.is_some() { 1.0 } else { blend };
     settings.roulette_scale = work.roulette_scale;
-    let uniforms = frame_uniforms(
+    let mut uniforms = frame_uniforms(
         &commit.camera,
         commit.sun.as_ref(),
         &commit.sky,
         &settings,
         &scene.header(),
     );
+    let upscale = if denoiser.is_some() { upscale } else { 1 };
+    if upscale > 1 {
+        uniforms.pixel_jitter = jitter::pack(jitter::frame_jitter(commit.frame));
+    }
     let started = Instant::now();
     let stats = tracer.render(scene, &uniforms)?;
     let render_seconds = started.elapsed().as_secs_f64();
     let (denoise_seconds, film) = match denoiser {
         Some(d) => {
-            let seconds = d.run(scene, &uniforms, tracer, blend)?;
+            let seconds = d.run(scene, &uniforms, tracer, blend, upscale)?;
             (seconds, commit.capture.then(|| d.film().clone()))
         }
         None => (
@@ -115,10 +122,20 @@ pub(super) fn render_one(
     }
     let apply_seconds = started.elapsed().as_secs_f64();
     let work = scaling.current();
-    let size = work.film_size(output.0, output.1);
+    let shown = work.film_size(output.0, output.1);
     if scaling.resized() {
         converge.reset();
     }
+    // Temporal upscaling: the denoiser's film is the size scaling chose, the tracer traces a
+    // `upscale`-th of it each way.
+    let upscale = match denoiser {
+        Some(_) => config
+            .temporal_upscale
+            .unwrap_or(1)
+            .clamp(1, shown.0.min(shown.1).max(1)),
+        None => 1,
+    };
+    let size = (shown.0 / upscale, shown.1 / upscale);
     let mut attempt = |tracer: &mut Box<dyn Tracer>, converge: &mut Converge| {
         let denoiser = denoiser.as_deref_mut();
         trace(
@@ -130,6 +147,7 @@ pub(super) fn render_one(
             tracer.as_mut(),
             converge,
             denoiser,
+            upscale,
         )
     };
     let traced = match attempt(tracer, converge) {

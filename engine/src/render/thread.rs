@@ -60,6 +60,12 @@ pub struct RenderConfig {
     /// the denoiser's history accumulates them. Off for captures and references (biased), on
     /// in games.
     pub denoise: bool,
+    /// Temporal upscaling by this factor (with the denoiser on; `denoise::upscale`): the film
+    /// the denoiser keeps and presents is the size scaling chooses (the output size without
+    /// scaling), the tracer traces this factor less each way, its samples offset by one
+    /// Halton offset per frame (`render::jitter`). `None` or 1: no upscaling, bit-identical to
+    /// before.
+    pub temporal_upscale: Option<u32>,
     /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
     /// level's; `capture --light-sampling`).
     pub light_sampling: Option<crate::assets::LightSampling>,
@@ -82,6 +88,7 @@ impl RenderConfig {
             converge: ConvergePolicy::default(),
             scaling: None,
             denoise: false,
+            temporal_upscale: None,
             light_sampling: None,
             sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }

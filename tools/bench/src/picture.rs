@@ -5,7 +5,9 @@
 //! uses. Every `--every`-th frame (at most `--per-chamber` of them, spread over the replay) the
 //! displayed film is compared with a `--reference-spp` render of the very same view, rendered
 //! by the engine's CPU tracer from that frame's own scene and uniforms (`picture_tracer.rs`),
-//! at the traced size (the comparison is at the traced size, before the window's upscale).
+//! at the traced size (the comparison is at the displayed film's size, before the window's
+//! upscale: the traced size, or with temporal upscaling (TAAU, `denoise::upscale`) the
+//! upscaled one).
 //! Figures (`picture_metrics.rs`): relative MSE on linear radiance and RMSE of the tonemapped
 //! sRGB picture, beside the reference's own noise; then the temporal stability
 //! (`picture_stability.rs`). Prints Markdown tables and writes `picture.csv` into `--out-dir`
@@ -95,23 +97,32 @@ pub struct Outcome {
 
 impl PictureArgs {
     /// The configurations measured: 160×90 and 320×180 (`--quick`: 32×18 and 64×36), denoiser
-    /// off then on.
+    /// off then on; then the small size traced and upscaled ×2 to the large one by temporal
+    /// upscaling, denoiser on (last: the large plain runs render the references it reuses).
     pub fn configs(&self) -> Vec<Config> {
         let sizes = if self.quick {
             [(32, 18), (64, 36)]
         } else {
             [(160, 90), (320, 180)]
         };
-        sizes
+        let mut configs: Vec<Config> = sizes
             .iter()
             .flat_map(|&(width, height)| {
                 [false, true].map(|denoise| Config {
                     width,
                     height,
                     denoise,
+                    upscale: 1,
                 })
             })
-            .collect()
+            .collect();
+        configs.push(Config {
+            width: sizes[1].0,
+            height: sizes[1].1,
+            denoise: true,
+            upscale: 2,
+        });
+        configs
     }
 
     /// `--quick`'s overrides.

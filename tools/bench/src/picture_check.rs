@@ -41,6 +41,7 @@ fn reference(world: &ReflectWorld, frame: u64, spp: u32) -> Reference {
         width: 32,
         height: 18,
         denoise: false,
+        upscale: 1,
     };
     let keep = BTreeSet::from([frame]);
     play(

@@ -90,7 +90,7 @@ pub fn tables(outcome: &Outcome) -> String {
     out += &super::picture_stability::table(&outcome.stability);
     let _ = writeln!(
         out,
-        "\nFrames of {:.1} ms game time (two fixed steps); compared at the traced size.",
+        "\nFrames of {:.1} ms game time (two fixed steps); compared at the displayed film's size (the traced size, or the TAAU-upscaled one).",
         FRAME_SECONDS * 1e3
     );
     out
@@ -100,12 +100,12 @@ pub fn tables(outcome: &Outcome) -> String {
 pub fn write_csv(dir: &Path, outcome: &Outcome) -> anyhow::Result<PathBuf> {
     std::fs::create_dir_all(dir)?;
     let mut csv = String::from(
-        "chamber,width,height,denoise,frame,rel_mse,srgb_rmse,reference_spp,reference_rel_mse,reference_srgb_rmse\n",
+        "chamber,width,height,denoise,frame,rel_mse,srgb_rmse,reference_spp,reference_rel_mse,reference_srgb_rmse,upscale\n",
     );
     for c in &outcome.compared {
         let _ = writeln!(
             csv,
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             c.chamber,
             c.config.width,
             c.config.height,
@@ -115,7 +115,8 @@ pub fn write_csv(dir: &Path, outcome: &Outcome) -> anyhow::Result<PathBuf> {
             c.srgb_rmse,
             c.reference_spp,
             c.reference_rel_mse,
-            c.reference_srgb_rmse
+            c.reference_srgb_rmse,
+            c.config.upscale
         );
     }
     let path = dir.join("picture.csv");

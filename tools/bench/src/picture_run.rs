@@ -32,23 +32,35 @@ use super::picture_tracer::{References, ReferencingTracer};
 /// Seconds of game time per frame: the game's 30 fps target.
 pub const FRAME_SECONDS: f64 = 1.0 / 30.0;
 
-/// A configuration of the renderer: the traced size (fixed: no workload scaling) and the
-/// denoiser; one sample per pixel per frame and the engine's converging policy, as the game.
+/// A configuration of the renderer: the displayed size (fixed: no workload scaling), the
+/// denoiser and temporal upscaling; one sample per pixel per frame and the engine's converging
+/// policy, as the game.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Config {
+    /// The displayed film's size (the traced size without upscaling).
     pub width: u32,
     pub height: u32,
     pub denoise: bool,
+    /// Temporal upscaling factor (`RenderConfig::temporal_upscale`; 1: none): the tracer
+    /// traces `width / upscale × height / upscale`.
+    pub upscale: u32,
 }
 
 impl Config {
     pub fn label(&self) -> String {
-        format!(
-            "{}×{}, denoiser {}",
-            self.width,
-            self.height,
-            if self.denoise { "on" } else { "off" }
-        )
+        let denoiser = if self.denoise { "on" } else { "off" };
+        if self.upscale > 1 {
+            format!(
+                "{}×{} traced, TAAU ×{} to {}×{}, denoiser {denoiser}",
+                self.width / self.upscale,
+                self.height / self.upscale,
+                self.upscale,
+                self.width,
+                self.height,
+            )
+        } else {
+            format!("{}×{}, denoiser {denoiser}", self.width, self.height)
+        }
     }
 }
 
@@ -115,6 +127,7 @@ pub fn play(
     };
     let render = RenderConfig {
         denoise: config.denoise,
+        temporal_upscale: (config.upscale > 1).then_some(config.upscale),
         ..RenderConfig::cpu(config.width, config.height)
     };
     let wanted = refs.lock().expect("references lock").wanted.clone();

@@ -188,6 +188,11 @@ impl Tracer for ReferencingTracer {
             (refs.wanted.contains(&frame) && !cached).then_some(refs.spp)
         };
         if let Some(spp) = spp {
+            // A reference is box-filtered: never at a temporal-upscaling offset.
+            let u = &GpuFrameUniforms {
+                pixel_jitter: 0,
+                ..*u
+            };
             // Seeds of their own, the same for every frame (common random numbers): references
             // of consecutive frames differ by the change of the picture, hardly by their noise.
             let seed = u.seed.wrapping_mul(0x9E37_79B9) ^ 0x5EED_0000;

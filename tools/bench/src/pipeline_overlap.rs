@@ -46,6 +46,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         denoise: false,
         light_sampling: None,
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
+        temporal_upscale: None,
     };
     let mut engine = Engine::new(config, Environment::of(&desc.scene))?;
     engine.spawn_level(desc);

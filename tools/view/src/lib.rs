@@ -231,6 +231,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
         denoise: args.denoise,
         light_sampling: None,
         sky_rebuild: candela::scene::SkyRebuild::Background,
+        temporal_upscale: None,
     };
     let speed = args
         .speed

@@ -183,6 +183,7 @@ fn run_policy(
         denoise: false,
         light_sampling: None,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
+        temporal_upscale: None,
     };
     let mut engine = Engine::new(config, setup.environment())?;
     let backdrop_material = Material {

@@ -205,6 +205,7 @@ pub fn run_script(
         denoise: false,
         light_sampling: options.light_sampling,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
+        temporal_upscale: None,
     };
     let render_error = |source| ScriptError::Render {
         path: script.source.clone(),

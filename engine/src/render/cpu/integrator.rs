@@ -73,7 +73,8 @@ pub fn sky_radiance(u: &GpuFrameUniforms, sky_table: &[[f32; 4]], d: Vec3) -> Ve
 
 /// The camera ray of sample `rng` for pixel (px, py) (box filter: uniform in the pixel).
 pub fn camera_ray(u: &GpuFrameUniforms, px: u32, py: u32, rng: &mut Rng) -> Ray {
-    let jitter = Vec2::new(rng.next_f32(), rng.next_f32());
+    let random = Vec2::new(rng.next_f32(), rng.next_f32());
+    let jitter = crate::render::jitter::unpack(u.pixel_jitter).map_or(random, Vec2::from);
     let sx = 2.0 * (px as f32 + jitter.x) / u.width as f32 - 1.0;
     let sy = 1.0 - 2.0 * (py as f32 + jitter.y) / u.height as f32;
     let forward = Vec3::from(u.camera_forward);

@@ -14,6 +14,7 @@ mod planes;
 mod reproject;
 mod svgf;
 mod temporal;
+mod upscale;
 mod variance;
 pub mod weights;
 
@@ -25,4 +26,5 @@ pub use reproject::{
 };
 pub use svgf::{DenoiseError, Svgf, SvgfParams};
 pub use temporal::{History, Reprojection, temporal_pixel};
+pub use upscale::{Traced, filled, splat};
 pub use variance::variance_pixel;

@@ -61,6 +61,17 @@ impl SvgfParams {
 /// Inputs that do not fit together.
 #[derive(Debug, thiserror::Error, PartialEq)]
 pub enum DenoiseError {
+    #[error(
+        "temporal upscaling: the traced frame is {traced_width}×{traced_height} \
+         ({frame} pixels) but the guides are {width}×{height}, not a whole multiple of it"
+    )]
+    UpscaleMismatch {
+        frame: usize,
+        traced_width: u32,
+        traced_height: u32,
+        width: u32,
+        height: u32,
+    },
     #[error("the frame has {frame} pixels but the guides are {width}×{height} ({guides} values)")]
     SizeMismatch {
         frame: usize,
@@ -74,9 +85,9 @@ pub enum DenoiseError {
 #[derive(Clone, Debug, Default)]
 pub struct Svgf {
     pub params: SvgfParams,
-    history: History,
+    pub(super) history: History,
     /// The previous frame, kept by [`Svgf::denoise_moving`] for reprojection.
-    prev: Option<PrevFrame>,
+    pub(super) prev: Option<PrevFrame>,
     scratch: Scratch,
 }
 
@@ -186,11 +197,19 @@ impl Svgf {
 
     /// Variance estimate and the à-trous passes over the current history.
     fn filter_history(&mut self, guides: &Guides) -> Film {
+        let history = std::mem::take(&mut self.history);
+        let film = self.filter(&history, guides);
+        self.history = history;
+        film
+    }
+
+    /// Variance estimate and the à-trous passes over `history` (the guides' size).
+    pub(super) fn filter(&mut self, history: &History, guides: &Guides) -> Film {
         let (width, height) = (guides.width, guides.height);
         let s = &mut self.scratch;
         s.guides.fill(guides);
         estimate(
-            &self.history,
+            history,
             &s.guides,
             self.params.sigma_z,
             &mut s.history,
@@ -200,8 +219,7 @@ impl Svgf {
             filter(&s.a, &s.guides, &pass, &mut s.b);
             std::mem::swap(&mut s.a, &mut s.b);
         }
-        let samples = self
-            .history
+        let samples = history
             .illumination
             .iter()
             .map(|h| h.w as u32)
