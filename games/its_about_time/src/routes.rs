@@ -86,7 +86,11 @@ fn water_stair(from_sun_gate: bool) -> Vec<Task> {
     let mut tasks = if from_sun_gate {
         vec![walk(14.5, -8.0, 0.4)]
     } else {
-        vec![walk(6.0, 8.0, 0.5), walk(14.5, 4.0, 0.4), walk(14.5, -8.0, 0.4)]
+        vec![
+            walk(6.0, 8.0, 0.5),
+            walk(14.5, 4.0, 0.4),
+            walk(14.5, -8.0, 0.4),
+        ]
     };
     tasks.extend([
         walk(21.0, -11.4, 0.3),

@@ -72,9 +72,16 @@ fn water_stair_solved(run: &RunSummary) {
         panic!("drained {drained:?}, filled {filled:?}, jar {jar:?}: {line}");
     };
     assert!(drained < filled, "{line}");
-    assert!(jar >= filled + 360, "the jar was taken {} steps after the fill: {line}", jar - filled);
+    assert!(
+        jar >= filled + 360,
+        "the jar was taken {} steps after the fill: {line}",
+        jar - filled
+    );
     let down = rule(run, "pool_drains_terrace", true).map(|r| r.0);
-    assert!(down.is_some_and(|d| d > jar), "never drained from the terrace: {line}");
+    assert!(
+        down.is_some_and(|d| d > jar),
+        "never drained from the terrace: {line}"
+    );
 }
 
 /// The vault of weights opened, then its Balance Stone was taken; the explorer leaned into

@@ -172,7 +172,10 @@ mod tests {
         }
         waves_system(&mut world, 0.2);
         assert!(dirty(&mut world, calm), "a ripple did not reach the mesh");
-        let p = world.get::<&Deformable>(calm).expect("deformable").positions[3 + 3 * 8];
+        let p = world
+            .get::<&Deformable>(calm)
+            .expect("deformable")
+            .positions[3 + 3 * 8];
         assert!((p.y - 0.05).abs() < 1e-6, "{p}");
     }
 }

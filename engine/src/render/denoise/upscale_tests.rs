@@ -108,7 +108,11 @@ fn still_camera_converges_to_the_high_resolution_picture() {
             // sample that landed, up to that cap, less a sample or two lost to earlier caps.
             let n = landed as f32;
             let low = n.min((frames / 4) as f32) - 2.0;
-            assert!(p.w <= n && p.w >= low, "samples at ({x}, {y}): {} of {n}", p.w);
+            assert!(
+                p.w <= n && p.w >= low,
+                "samples at ({x}, {y}): {} of {n}",
+                p.w
+            );
             let e = (p.x - truth(x, y)).abs();
             assert!(e < 0.4, "({x}, {y}): {} against {}", p.x, truth(x, y));
             sum += e;

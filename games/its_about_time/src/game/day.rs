@@ -84,10 +84,10 @@ pub fn rule_message(rule: &str, rising: bool) -> Option<&'static str> {
         ("night_falls", true) => Some("Night falls over the ruins"),
         ("night_falls", false) => Some("The sky pales · day returns"),
         ("shrine_open", true) => Some("The torches burn in order · the shrine opens"),
-        (r, true) if r.starts_with("pool_drains_") => Some("The sluice groans open · the pool drains"),
-        ("pool_fills", true) => {
-            Some("The sluice shuts · the pool fills: stand on the float")
+        (r, true) if r.starts_with("pool_drains_") => {
+            Some("The sluice groans open · the pool drains")
         }
+        ("pool_fills", true) => Some("The sluice shuts · the pool fills: stand on the float"),
         ("ending", true) => Some("The temple accepts the artifacts"),
         (r, true) if r.starts_with("torch_") && r.ends_with("_daylight") => {
             Some("The torch will not take in daylight · come back after dark")
