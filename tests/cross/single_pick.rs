@@ -136,7 +136,7 @@ fn cpu_single_pick_converges_over_the_light_tree() {
     );
 }
 
-/// The GPU tracer's single pick (`pick_chances` in `shaders/trace.wgsl`) matches the CPU's.
+/// The GPU tracer's single pick (`pick_chances` in `shaders/direct.wgsl`) matches the CPU's.
 #[test]
 fn gpu_single_pick_matches_cpu() {
     let _ = crate::gpu_matches_cpu::compare_method(

@@ -1,5 +1,5 @@
 //! Direct lighting of the CPU tracer's path loop (twin: `next_event` and its helpers in
-//! `shaders/trace.wgsl`).
+//! `shaders/direct.wgsl`).
 //!
 //! Owns: next-event estimation at a non-delta surface (one emissive triangle picked by power,
 //! uniformly or by the light tree, and the sun or moon disc), and the MIS weights and pick
@@ -195,7 +195,7 @@ const ONE_BELOW: f32 = 1.0 - f32::EPSILON / 2.0;
 /// `light_weight_total` (Σ area × emitted luminance) × 1 m⁻², the irradiance they would give a
 /// surface facing them all from one metre. Any split is unbiased as long as the light pdf (here
 /// and at emitters reached by BSDF sampling) divides by it; this one needs no new uniform.
-/// Twin: `pick_chances` in `shaders/trace.wgsl`.
+/// Twin: `pick_chances` in `shaders/direct.wgsl`.
 pub(super) fn pick_chances(u: &GpuFrameUniforms) -> (f32, f32) {
     if u.method & METHOD_SINGLE_PICK == 0 {
         return (1.0, 1.0);

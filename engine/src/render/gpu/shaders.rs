@@ -37,8 +37,12 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/night.wgsl"),
 ];
 
-/// The path tracing pass (entry point `trace_main`).
+/// The path tracing pass (entry point `trace_main`). Compose it with [`compose_trace`]: it
+/// needs [`DIRECT`] beside the shared pieces.
 pub const TRACE: ShaderSource = shader!("trace.wgsl");
+
+/// Next-event estimation for the trace pass (twin of `render/cpu/direct.rs`).
+pub const DIRECT: ShaderSource = shader!("direct.wgsl");
 
 /// Batch ray tracing (entry point `ray_batch_main`).
 pub const RAY_BATCH: ShaderSource = shader!("ray_batch.wgsl");
@@ -69,6 +73,11 @@ pub fn compose(pass: ShaderSource) -> String {
     compose_with(SHARED, pass)
 }
 
+/// The trace pass as one WGSL module: the shared pieces, [`DIRECT`], then [`TRACE`].
+pub fn compose_trace() -> String {
+    compose_with(SHARED, DIRECT) + &compose_with(&[], TRACE)
+}
+
 /// `shared` (in order) followed by `pass`, as one WGSL module.
 pub fn compose_with(shared: &[ShaderSource], pass: ShaderSource) -> String {
     let mut text = String::new();
@@ -88,7 +97,7 @@ mod tests {
     /// WGSL error fails `cargo test` before any GPU is involved.
     #[test]
     fn trace_pass_validates() {
-        validates(compose(TRACE));
+        validates(compose_trace());
     }
 
     #[test]

@@ -12,7 +12,7 @@ use glam::Vec3;
 use wgpu::util::DeviceExt;
 
 use super::context::GpuContext;
-use super::shaders::{TRACE, compose};
+use super::shaders::compose_trace;
 use crate::layout::{GpuFrameUniforms, GpuLine, GpuTexture, GpuTri4, GpuTriangle, GpuVertex};
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError, RenderStats, Tracer};
@@ -158,7 +158,7 @@ impl GpuTracer {
             bind_group_layouts: &[Some(&layout)],
             immediate_size: 0,
         });
-        let source = compose(TRACE);
+        let source = compose_trace();
         let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("trace.wgsl"),
             source: wgpu::ShaderSource::Wgsl(source.into()),
