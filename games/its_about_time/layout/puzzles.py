@@ -109,11 +109,11 @@ def night_shrine():
         i = order.index(glyph)
         at = f'Counter(counter: "shrine", at_least: {i}, at_most: {i})'
         rules.append(f'(name: "torch_{g}_daylight", when: All([Event("torch_{g}"), {day}]), '
-                     f'then: [Sound(sound: "chime", at: "torch_{g}", volume: 0.2)]),')
+                     f'then: [Sound(sound: "torch_douse", at: "torch_{g}", volume: 0.25)]),')
         rules.append(f'(name: "torch_{g}_wrong", when: All([Event("torch_{g}"), {dark}, Not({at})]), '
-                     f'then: [{all_off}, SetCounter(counter: "shrine", value: 0), Sound(sound: "door", at: "torch_{g}", volume: 0.5)]),')
+                     f'then: [{all_off}, SetCounter(counter: "shrine", value: 0), Sound(sound: "torch_douse", at: "torch_{g}", volume: 0.7)]),')
         rules.append(f'(name: "torch_{g}_lit", when: All([Event("torch_{g}"), {dark}, {at}]), '
-                     f'then: [Lights(group: {11 + glyph}, on: true), Count(counter: "shrine"), Sound(sound: "chime", at: "torch_{g}", volume: 0.5)]),')
+                     f'then: [Lights(group: {11 + glyph}, on: true), Count(counter: "shrine"), Sound(sound: "torch_ignite", at: "torch_{g}", volume: 0.7)]),')
     vault(-24.5, -22.5, "shrine", "artifact_night", "sun_disc", "silver", art_rot=(0, 0, 0))
     # A second sun altar by the shrine, to bring the night (the game turns time at any usable
     # sending "sun_altar"); a rule that holds while it is dark, for the HUD and the bot.
@@ -189,9 +189,9 @@ def water_stair():
     low, full = 'Counter(counter: "pool", at_least: 1)', 'Counter(counter: "pool", at_most: 0)'
     pulls = lambda verb: ", ".join(f'{verb}(clip: "{n}_lever_pull")' for n in names)
     drain = ('Play(clip: "pool_drain"), Play(clip: "pool_float_drain"), Play(clip: "pool_sluice_open"), '
-             f'{pulls("Play")}, SetCounter(counter: "pool", value: 1), Sound(sound: "door", at: "pool_sluice")')
+             f'{pulls("Play")}, SetCounter(counter: "pool", value: 1), Sound(sound: "sluice", at: "pool_sluice")')
     fill = ('Reverse(clip: "pool_drain"), Reverse(clip: "pool_float_drain"), Reverse(clip: "pool_sluice_open"), '
-            f'{pulls("Reverse")}, SetCounter(counter: "pool", value: 0), Sound(sound: "door", at: "pool_sluice")')
+            f'{pulls("Reverse")}, SetCounter(counter: "pool", value: 0), Sound(sound: "sluice", at: "pool_sluice")')
     for name, *_ in drains:
         rules.append(f'(name: "pool_drains_{name}", when: All([Event("{name}_lever"), {full}]), then: [{drain}]),')
     rules.append(f'(name: "pool_fills", when: All([Event("fill_lever"), {low}]), then: [{fill}]),')

@@ -144,20 +144,21 @@ usables[:0] = ['(instance: "sun_altar", prompt: "Hold Q or R to turn time", even
 ARTIFACTS = 5
 rules[:0] = [
     '// E at the altar only rings it; holding Q or R there turns time (the game does that).',
-    '(name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "chime", at: "sun_altar", volume: 0.4)]),',
+    '(name: "altar_rung", when: Event("sun_altar"), then: [Sound(sound: "altar_gong", at: "sun_altar", volume: 0.5)]),',
     '(name: "sun_gate", when: SunLit("sun_glyph"), then: [Play(clip: "gate_open"), Sound(sound: "stone_scrape", at: "sun_gate")], '
     'otherwise: [Reverse(clip: "gate_open"), Sound(sound: "stone_scrape", at: "sun_gate")]),',
     '(name: "take_sun", when: Event("artifact_sun"), then: [Count(counter: "artifacts"), Play(clip: "artifact_sun_taken"), '
     'Sound(sound: "artifact_chime")], once: true),',
 ]
 rules.append(f'(name: "ending", when: All([Occupied("temple_altar"), Counter(counter: "artifacts", at_least: {ARTIFACTS})]), '
-             'then: [Sound(sound: "chime"), Win], once: true),')
+             'then: [Sound(sound: "temple_awake"), Win], once: true),')
 counters[:0] = ['(name: "artifacts"),']
 event_list = ", ".join(f'"{e}"' for e in events)
 # Sounds made by `cargo run --release -p assetgen -- ruins-sounds` (the game plays the footsteps
-# and the loops: games/its_about_time/src/game/soundscape.rs); "chime" and "door" are Reflect's.
-RUINS_SOUNDS = ["artifact_chime", "pad_day", "pad_night", "stone_scrape", "time_warp", "torch",
-                "water", "wind"] + [f"footstep_{s}_{k}" for s in ("sand", "stone") for k in (1, 2, 3)]
+# and the loops: games/its_about_time/src/game/soundscape.rs); every sound is the game's own.
+RUINS_SOUNDS = ["altar_gong", "artifact_chime", "pad_day", "pad_night", "sluice", "stone_scrape",
+                "temple_awake", "time_warp", "torch", "torch_douse", "torch_ignite", "water", "wind"]
+RUINS_SOUNDS += [f"footstep_{s}_{k}" for s in ("sand", "stone") for k in (1, 2, 3)]
 sound_list = "\n".join(f'            (name: "{n}", path: "its_about_time/sounds/{n}.wav"),'
                         for n in RUINS_SOUNDS)
 # Loops at always-lit torches and, once the level has it, at the pool.
@@ -224,8 +225,6 @@ Level(
     )],
     gameplay: (
         sounds: [
-            (name: "chime", path: "common/sounds/chime.wav"),
-            (name: "door", path: "common/sounds/door_slide.wav"),
 {sound_list}
         ],
 {block("emitters", emitters)}

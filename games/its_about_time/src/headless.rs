@@ -36,6 +36,9 @@ pub struct RunSummary {
     pub broken: usize,
     /// Every footstep the explorer made: the fixed step and the surface it sounded.
     pub footsteps: Vec<(u64, Surface)>,
+    /// The name of every sound started, oldest first (the engine keeps the latest
+    /// `candela::audio::MAX_PLAYED_RECORDS`; a whole game starts far fewer).
+    pub sounds: Vec<String>,
 }
 
 impl RunSummary {
@@ -88,6 +91,13 @@ pub fn play_replay(world: &RuinsWorld, replay: &Path) -> anyhow::Result<RunSumma
             .filter(|&b| b)
             .count(),
         footsteps: end.game.soundscape().footsteps().to_vec(),
+        sounds: end
+            .engine
+            .audio()
+            .played()
+            .iter()
+            .map(|p| p.name.to_string())
+            .collect(),
     })?;
     Ok(summary)
 }

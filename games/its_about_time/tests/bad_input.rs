@@ -37,7 +37,6 @@ fn load_error(name: &str, text: &str) -> anyhow::Result<String> {
     std::fs::create_dir_all(root.join("its_about_time"))?;
     for folder in [
         "common/hero",
-        "common/sounds",
         "its_about_time/kit",
         "its_about_time/sounds",
     ] {

@@ -178,7 +178,37 @@ fn the_full_game_replay_solves_every_puzzle_and_reaches_the_ending() -> anyhow::
     weights_solved(&run);
     night_shrine_solved(&run);
     footsteps_follow_the_ground(&run);
+    events_sound_their_own(&run);
     Ok(())
+}
+
+/// Each puzzle's moments sound the game's own one-shots (`assetgen ruins-sounds`), not
+/// Reflect's chime and door: five artifact chimes; a torch catching at each torch lit in order
+/// (the route lights one, puts it out with a wrong torch on purpose, then lights all four:
+/// five) and the douse at the wrong one; the sluice at every drain and fill of the water
+/// stair; and the temple waking once at the end.
+fn events_sound_their_own(run: &RunSummary) {
+    let count = |name: &str| run.sounds.iter().filter(|s| *s == name).count();
+    let counts: Vec<(&str, usize)> = [
+        "artifact_chime",
+        "torch_ignite",
+        "torch_douse",
+        "sluice",
+        "altar_gong",
+        "temple_awake",
+        "chime",
+        "door",
+    ]
+    .iter()
+    .map(|n| (*n, count(n)))
+    .collect();
+    eprintln!("sounds started: {counts:?}");
+    assert_eq!(count("artifact_chime"), 5, "{counts:?}");
+    assert_eq!(count("torch_ignite"), 5, "{counts:?}");
+    assert_eq!(count("torch_douse"), 1, "{counts:?}");
+    assert!(count("sluice") >= 2, "{counts:?}");
+    assert_eq!(count("temple_awake"), 1, "{counts:?}");
+    assert_eq!(count("chime") + count("door"), 0, "{counts:?}");
 }
 
 /// The explorer's footsteps sound what lies under its feet: the whole game walks mostly on the

@@ -30,6 +30,7 @@ pub mod reflect_kit;
 mod reflect_sounds;
 pub mod ruins_kit;
 pub mod ruins_sound_list;
+mod ruins_sound_events;
 mod ruins_sounds;
 pub mod sounds;
 

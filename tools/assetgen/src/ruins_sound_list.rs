@@ -6,12 +6,19 @@
 //! Owns: the list (names, durations, loop flags, use) and the name → samples table. The
 //! synthesis is `ruins_sounds`. Must not: read files or depend on the engine.
 
+use crate::ruins_sound_events as events;
 use crate::ruins_sounds as synth;
 use crate::sounds::{SoundSpec, normalized, wav_bytes};
 
 /// Every sound `assetgen ruins-sounds` writes, in file-name order. Footsteps come in three
 /// variants each (`_1` … `_3`), which the game cycles through.
-pub const RUINS_SOUNDS: [SoundSpec; 14] = [
+pub const RUINS_SOUNDS: [SoundSpec; 19] = [
+    spec(
+        "altar_gong",
+        2.5,
+        false,
+        "the sun altar struck (a stone-and-bronze gong on D3)",
+    ),
     spec(
         "artifact_chime",
         1.6,
@@ -37,10 +44,22 @@ pub const RUINS_SOUNDS: [SoundSpec; 14] = [
         "music loop for the night (D minor, same root and fifth as pad_day)",
     ),
     spec(
+        "sluice",
+        2.0,
+        false,
+        "the sluice gate moved: a wooden thunk and a rush of water",
+    ),
+    spec(
         "stone_scrape",
         1.6,
         false,
         "a gate grinding open or shut, a block dragged, a thud",
+    ),
+    spec(
+        "temple_awake",
+        3.0,
+        false,
+        "the ending: the gong under a rising D major arpeggio of bells",
     ),
     spec(
         "time_warp",
@@ -49,6 +68,18 @@ pub const RUINS_SOUNDS: [SoundSpec; 14] = [
         "loop while an altar turns time (whooshes, a wavering chord)",
     ),
     spec("torch", 3.0, true, "loop at a lit torch (roar and crackle)"),
+    spec(
+        "torch_douse",
+        1.0,
+        false,
+        "a wrong torch: the lit flames snuffed with a hiss and a falling tone",
+    ),
+    spec(
+        "torch_ignite",
+        1.2,
+        false,
+        "a torch catching fire: a whoomp and crackles",
+    ),
     spec("water", 4.0, true, "loop at water (lapping)"),
     spec("wind", 6.0, true, "loop everywhere (desert wind in gusts)"),
 ];
@@ -82,6 +113,7 @@ pub fn ruins_sound_files() -> Vec<(String, Vec<u8>)> {
 /// empty for an unknown name.
 pub fn samples(name: &str) -> Vec<f32> {
     let raw = match name {
+        "altar_gong" => events::altar_gong(),
         "artifact_chime" => synth::artifact_chime(),
         "footstep_sand_1" => synth::footstep_sand(0),
         "footstep_sand_2" => synth::footstep_sand(1),
@@ -91,9 +123,13 @@ pub fn samples(name: &str) -> Vec<f32> {
         "footstep_stone_3" => synth::footstep_stone(2),
         "pad_day" => synth::pad_day(),
         "pad_night" => synth::pad_night(),
+        "sluice" => events::sluice(),
         "stone_scrape" => synth::stone_scrape(),
+        "temple_awake" => events::temple_awake(),
         "time_warp" => synth::time_warp(),
         "torch" => synth::torch(),
+        "torch_douse" => events::torch_douse(),
+        "torch_ignite" => events::torch_ignite(),
         "water" => synth::water(),
         "wind" => synth::wind(),
         _ => Vec::new(),

@@ -18,14 +18,14 @@ use crate::ruins_sound_list::duration_of;
 use crate::sounds::{Noise, SAMPLE_RATE_HZ, bell, edges, frames, midi_hz, time};
 
 /// A one-pole low-pass over `Noise`, cut-off `cutoff_hz`.
-struct LowNoise {
+pub(crate) struct LowNoise {
     noise: Noise,
     state: f64,
     alpha: f64,
 }
 
 impl LowNoise {
-    fn new(seed: u64, cutoff_hz: f64) -> Self {
+    pub(crate) fn new(seed: u64, cutoff_hz: f64) -> Self {
         Self {
             noise: Noise(seed),
             state: 0.0,
@@ -33,7 +33,7 @@ impl LowNoise {
         }
     }
 
-    fn next(&mut self) -> f64 {
+    pub(crate) fn next(&mut self) -> f64 {
         self.state += self.alpha * (self.noise.next() - self.state);
         self.state
     }
@@ -41,7 +41,7 @@ impl LowNoise {
 
 /// An exponentially decaying hit starting at `start` seconds with a 3 ms attack, time constant
 /// `tau` seconds; zero before it starts.
-fn hit(t: f64, start: f64, tau: f64) -> f64 {
+pub(crate) fn hit(t: f64, start: f64, tau: f64) -> f64 {
     let local = t - start;
     if local < 0.0 {
         0.0

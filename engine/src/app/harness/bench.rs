@@ -3,8 +3,9 @@
 //! frame as long as the last one took, for at most some seconds of wall time, and measures
 //! the second half of the frames (once the scaling settled): frame time, the main thread's
 //! phases, render and denoise time, the film size and samples per pixel the scaling settles
-//! on, the emitters the light sampling holds ([`BenchFigures`]). The game's table of them is
-//! the game's.
+//! on, the emitters the light sampling holds, the commit's bytes (Brigade's budget is 2 MB a
+//! frame) and the memory (the scene both tracers read, and the process's resident set, against
+//! Brigade's 737 MB) ([`BenchFigures`]). The game's table of them is the game's.
 //!
 //! Main thread (the render thread renders). Must not: change the game.
 
@@ -35,6 +36,16 @@ pub struct BenchFigures {
     pub spp: u32,
     /// Emissive triangles the light sampling held (the median).
     pub lights: u32,
+    /// The largest commit of the run, bytes (the first frame's, which carries the whole scene,
+    /// left out: the budget is per frame of play).
+    pub commit_max: usize,
+    /// The median commit over the second half, bytes.
+    pub commit_median: usize,
+    /// Bytes of the flattened scene the tracers read at the end (`RenderScene::memory`).
+    pub scene_bytes: usize,
+    /// The process's resident memory at the end, bytes (both copies of the scene, the game,
+    /// the denoiser's planes).
+    pub rss_bytes: u64,
 }
 
 /// The head of a Markdown table of [`BenchFigures`]: `first` names the rows, `extra` are
@@ -44,12 +55,12 @@ pub fn table_head(first: &str, extra: &[&str]) -> String {
     for p in Phase::ALL {
         out += &format!(" {} ms |", p.name());
     }
-    out += " render ms | denoise ms | internal res | spp | emitters sampled |";
+    out += " render ms | denoise ms | internal res | spp | emitters sampled | commit KiB (median / max) | scene MB | resident MB |";
     for e in extra {
         out += &format!(" {e} |");
     }
     out += "\n|---|";
-    out += &"---:|".repeat(3 + Phase::ALL.len() + 5 + extra.len());
+    out += &"---:|".repeat(3 + Phase::ALL.len() + 8 + extra.len());
     out + "\n"
 }
 
@@ -64,9 +75,19 @@ pub fn table_row(name: &str, f: &BenchFigures) -> String {
     for ms in &f.phase_ms {
         out += &format!(" {ms:.2} |");
     }
+    let mb = |b: f64| b / 1e6;
     out + &format!(
-        " {:.1} | {:.1} | {}×{} | {} | {} |",
-        f.render_ms, f.denoise_ms, f.film.0, f.film.1, f.spp, f.lights
+        " {:.1} | {:.1} | {}×{} | {} | {} | {:.0} / {:.0} | {:.1} | {:.0} |",
+        f.render_ms,
+        f.denoise_ms,
+        f.film.0,
+        f.film.1,
+        f.spp,
+        f.lights,
+        f.commit_median as f64 / 1024.0,
+        f.commit_max as f64 / 1024.0,
+        mb(f.scene_bytes as f64),
+        mb(f.rss_bytes as f64)
     )
 }
 
@@ -97,6 +118,7 @@ pub fn bench_replay<C: HarnessGame>(
     let mut last = Instant::now();
     let mut dt = 1.0 / 30.0;
     let (mut frame_ms, mut phases, mut rendered) = (Vec::new(), Vec::new(), Vec::new());
+    let mut commits = Vec::new();
     while !engine.replay_finished() && begun.elapsed().as_secs_f64() < seconds {
         let report = engine.frame(dt, &mut game)?;
         rendered.extend(engine.rendered().into_iter().flatten());
@@ -105,8 +127,15 @@ pub fn bench_replay<C: HarnessGame>(
         last = now;
         frame_ms.push(dt * 1e3);
         phases.push(report.phases);
+        commits.push(report.commit_bytes);
     }
+    let scene_bytes = engine.scene().memory().total();
+    let rss_bytes = super::soak::rss_bytes();
     let _ = engine.shutdown();
+    let late_commits: Vec<f64> = commits[commits.len() / 2..]
+        .iter()
+        .map(|&b| b as f64)
+        .collect();
     let late = &rendered[rendered.len() / 2..];
     let mut figures = BenchFigures {
         frames: frame_ms.len(),
@@ -115,6 +144,10 @@ pub fn bench_replay<C: HarnessGame>(
         denoise_ms: median(late.iter().map(|r| r.denoise_seconds * 1e3).collect()),
         spp: late.iter().map(|r| r.spp).max().unwrap_or(0),
         lights: median(late.iter().map(|r| f64::from(r.lights)).collect()) as u32,
+        commit_max: commits.iter().skip(1).copied().max().unwrap_or(0),
+        commit_median: median(late_commits) as usize,
+        scene_bytes,
+        rss_bytes,
         ..Default::default()
     };
     let mut films: Vec<(u32, u32)> = late.iter().map(|r| r.film_size).collect();
