@@ -408,10 +408,13 @@ impl Upkeep {
         self.scene
     }
 
-    /// Records a write and applies it to the game-side copy.
+    /// Records a write and applies it to the game-side copy. A pending write that this one
+    /// covers is dropped (`SceneWrite::supersedes`): a frame of several settled steps refits
+    /// the same BLAS and rebuilds the TLAS once per step, and the commit carries the last.
     pub(super) fn push(&mut self, write: SceneWrite) {
         let header = self.scene.header();
         self.scene.apply(std::slice::from_ref(&write), &header);
+        self.pending.retain(|earlier| !write.supersedes(earlier));
         self.pending.push(write);
     }
 }

@@ -92,6 +92,37 @@ impl SceneWrite {
         }
     }
 
+    /// The buffer this write targets (an index per variant) and its element range
+    /// `first..end`; `None` for a truncation.
+    fn target_range(&self) -> Option<(u8, u32, u32)> {
+        let r = |kind: u8, first: u32, len: usize| Some((kind, first, first + len as u32));
+        match self {
+            SceneWrite::Nodes { first, data } => r(0, *first, data.len()),
+            SceneWrite::Blocks { first, data } => r(1, *first, data.len()),
+            SceneWrite::Instances { first, data } => r(2, *first, data.len()),
+            SceneWrite::Triangles { first, data } => r(3, *first, data.len()),
+            SceneWrite::Vertices { first, data } => r(4, *first, data.len()),
+            SceneWrite::Materials { first, data } => r(5, *first, data.len()),
+            SceneWrite::Textures { first, data } => r(6, *first, data.len()),
+            SceneWrite::Texels { first, data } => r(7, *first, data.len()),
+            SceneWrite::Lights { first, data } => r(8, *first, data.len()),
+            SceneWrite::LightNodes { first, data } => r(9, *first, data.len()),
+            SceneWrite::LightLookup { first, data } => r(10, *first, data.len()),
+            SceneWrite::TruncateInstances { .. } => None,
+        }
+    }
+
+    /// Whether this write, applied after `earlier`, leaves nothing of it: the same buffer and
+    /// a range that covers `earlier`'s. Whatever was applied between them, every element
+    /// `earlier` wrote is written again, and the buffer grows at least as far, so `earlier`
+    /// can be dropped from a list of pending writes without changing what the list makes.
+    pub fn supersedes(&self, earlier: &SceneWrite) -> bool {
+        match (self.target_range(), earlier.target_range()) {
+            (Some((kind, first, end)), Some((k, f, e))) => kind == k && first <= f && e <= end,
+            _ => false,
+        }
+    }
+
     /// Whether this write carries geometry: BVH nodes (BLAS or TLAS), triangle blocks,
     /// triangles or vertices.
     pub fn is_geometry(&self) -> bool {
@@ -179,5 +210,32 @@ impl RenderScene {
             weight_total: header.light_weight_total,
             tree: std::mem::take(&mut self.lights.tree),
         };
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn nodes(first: u32, len: usize) -> SceneWrite {
+        SceneWrite::Nodes {
+            first,
+            data: vec![bytemuck::Zeroable::zeroed(); len],
+        }
+    }
+
+    #[test]
+    fn a_write_supersedes_only_what_it_covers_in_the_same_buffer() {
+        assert!(nodes(10, 5).supersedes(&nodes(10, 5)));
+        assert!(nodes(8, 10).supersedes(&nodes(10, 5)));
+        assert!(!nodes(11, 5).supersedes(&nodes(10, 5)), "a part left");
+        assert!(!nodes(10, 5).supersedes(&nodes(10, 6)), "an end left");
+        let other = SceneWrite::Lights {
+            first: 10,
+            data: vec![bytemuck::Zeroable::zeroed(); 5],
+        };
+        assert!(!nodes(10, 5).supersedes(&other), "another buffer");
+        let cut = SceneWrite::TruncateInstances { len: 3 };
+        assert!(!nodes(0, 100).supersedes(&cut) && !cut.supersedes(&nodes(0, 1)));
     }
 }

@@ -124,3 +124,32 @@ fn flying_through_the_city_commits_only_what_moves() -> anyhow::Result<()> {
     drop(engine.shutdown());
     Ok(())
 }
+
+/// A slow frame runs several fixed steps; with `settle_every_step` each step after the first
+/// settles the scene (the pool refitted, the TLAS rebuilt), but the commit carries only the
+/// last write of each range: a frame of six steps commits what a frame of one does, not six
+/// times as much (`SceneWrite::supersedes`).
+#[test]
+fn a_frame_of_several_settled_steps_commits_one_steps_writes() -> anyhow::Result<()> {
+    let (mut engine, _camera) = demo()?;
+    engine.settle_every_step(true);
+    for _ in 0..3 {
+        frame(&mut engine, 1.0 / 60.0)?;
+    }
+    let one = frame(&mut engine, 1.0 / 60.0)?;
+    line("one step", &one);
+    let six = frame(&mut engine, 6.0 / 60.0)?;
+    line("six steps", &six);
+    assert_eq!((one.steps, six.steps), (1, 6));
+    assert!(
+        six.upkeep.blas_refits >= 5 * one.upkeep.blas_refits.max(1),
+        "the six steps settled: {} refits against {}",
+        six.upkeep.blas_refits,
+        one.upkeep.blas_refits
+    );
+    assert_eq!(
+        six.commit_bytes, one.commit_bytes,
+        "the six-step frame commits each range once"
+    );
+    Ok(())
+}

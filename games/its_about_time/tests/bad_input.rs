@@ -35,11 +35,7 @@ fn load_error(name: &str, text: &str) -> anyhow::Result<String> {
     let assets = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets");
     let _ = std::fs::remove_dir_all(&root);
     std::fs::create_dir_all(root.join("its_about_time"))?;
-    for folder in [
-        "common/hero",
-        "its_about_time/kit",
-        "its_about_time/sounds",
-    ] {
+    for folder in ["common/hero", "its_about_time/kit", "its_about_time/sounds"] {
         copy_dir(&assets.join(folder), &root.join(folder))?;
     }
     let level: PathBuf = root.join("its_about_time/ruins.ron");

@@ -29,8 +29,8 @@ pub mod hero;
 pub mod reflect_kit;
 mod reflect_sounds;
 pub mod ruins_kit;
-pub mod ruins_sound_list;
 mod ruins_sound_events;
+pub mod ruins_sound_list;
 mod ruins_sounds;
 pub mod sounds;
 

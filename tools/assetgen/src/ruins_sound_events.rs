@@ -134,8 +134,8 @@ pub(crate) fn sluice() -> Vec<f64> {
     (0..frames(end))
         .map(|i| {
             let t = time(i);
-            let thunk = hit(t, 0.0, 0.05)
-                * ((TAU * 95.0 * t).sin() + 0.5 * (TAU * 210.0 * t).sin());
+            let thunk =
+                hit(t, 0.0, 0.05) * ((TAU * 95.0 * t).sin() + 0.5 * (TAU * 210.0 * t).sin());
             let band = water.next();
             let swell = (t / 0.4).min(1.0).powi(2) * (-((t - 0.4).max(0.0) / 0.7)).exp();
             let gurgle = 1.0 + 0.3 * (TAU * 7.0 * t).sin() * (TAU * 3.0 * t + 0.4).sin();
