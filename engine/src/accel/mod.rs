@@ -56,14 +56,14 @@
 //! bounce −10 % (medians 15.35 / 7.33 / 5.50 before, 15.20 / 6.96 / 4.94 after).
 
 mod binned;
-pub mod blas;
+pub(crate) mod blas;
 mod flatten;
 
 mod bvh2;
 mod collapse;
 pub mod origin;
-pub mod refit;
-pub mod tlas;
+pub(crate) mod refit;
+pub(crate) mod tlas;
 mod upkeep;
 mod upkeep_deform;
 mod upkeep_instances;

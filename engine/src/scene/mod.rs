@@ -16,11 +16,11 @@ mod flattened;
 pub mod light_tree;
 pub mod lights;
 mod lines;
-pub mod materials;
+pub(crate) mod materials;
 mod memory;
-pub mod optics;
+pub(crate) mod optics;
 mod sky_table;
-pub mod surface;
+pub(crate) mod surface;
 mod writes;
 
 pub use bounds::Aabb;

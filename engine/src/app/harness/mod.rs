@@ -19,8 +19,8 @@
 mod bench;
 mod capture;
 mod config;
-mod fixed_steps;
 mod first_person;
+mod fixed_steps;
 mod ghosting;
 mod replay_run;
 mod shots;
