@@ -8,8 +8,8 @@
 //!
 //! Phases (one file each): `bounds` (the box type), `bvh2` (binary build: obvhs PLOC presets
 //! or the balanced fallback) and `binned` (our binned SAH build, the default), `collapse`
-//! (SAH-optimal 8-wide collapse and the per-octant child orders), [`blas`] (triangle blocks),
-//! [`tlas`] (instances).
+//! (SAH-optimal 8-wide collapse and the per-octant child orders), `blas` (triangle blocks),
+//! `tlas` (instances).
 //!
 //! # Why this layout and this build (measured)
 //!
