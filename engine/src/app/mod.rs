@@ -58,7 +58,7 @@ mod window;
 pub mod harness;
 
 // Atomic writes live in `assets` (the editor, below `app`, saves levels with them too).
-pub use crate::assets::atomic_file::{AtomicFileError, keep_aside, write_atomic};
+pub use crate::assets::atomic_file::{AtomicFileError, write_atomic};
 
 pub use harness::soak;
 pub use harness::{GhostError, GhostSetup, measure_ghosting};
@@ -71,7 +71,7 @@ pub use input::{
 pub use input::{Binding, InputMap, InputMapError, InputState, KeyCode, MouseButton, actions};
 pub use persist::{
     BindingProblem, Bindings, BindingsError, LoadWarning, Loaded, Progress, Settings, StoreError,
-    UserDirs, UserDirsError, describe_ron_error, load_or_default, parse_checked, save_ron,
+    UserDirs, UserDirsError, load_or_default, parse_checked, save_ron,
 };
 pub use play::steer;
 pub use play::{
@@ -84,18 +84,13 @@ pub use replay::{
     RecordingHeader, Replay, ReplayError, ReplayTarget, Run, StepInput, fnv1a64, level_hash,
 };
 pub use runner::{
-    Command, Commands, Engine, EngineError, Environment, FixedClock, FrameInput, FrameLimiter,
-    FrameReport, FrameStats, FrameWork, Game, LevelEvent, Phase, PhaseTimes, SetupError,
-    SpawnedCharacter, SpawnedLevel, Step, TimeChange, TimeError, Waves, WorkTotals,
-    lighting_change, waves_system,
+    Command, Commands, Engine, EngineError, Environment, FixedClock, FrameInput, FrameReport,
+    FrameStats, FrameWork, Game, LevelEvent, Phase, PhaseTimes, SetupError, SpawnedCharacter,
+    SpawnedLevel, Step, TimeChange, TimeError, Waves, WorkTotals, lighting_change, waves_system,
 };
 pub use script::{
     BoundScript, CameraKey, FrameTiming, Interpolation, LightSwitch, Motion, MotionEntry,
     ObjectKey, RunOptions, Screenshot, Script, ScriptError, ScriptLevel, ScriptRender,
-    ScriptReport, ScriptTracer, ShotResult, TimeKey, apply_motion, camera_at, camera_transform,
-    cut_at, matches, run_script,
+    ScriptReport, ScriptTracer, ShotResult, TimeKey, camera_at, matches, run_script,
 };
-pub use window::{
-    StatsOverlay, WindowConfig, WindowEnd, WindowError, WindowReport, display_problem, run_game,
-    run_window,
-};
+pub use window::{WindowConfig, WindowEnd, WindowError, WindowReport, run_game, run_window};

@@ -33,7 +33,7 @@ impl RenderSettings {
 
     /// The first value a level may not declare, naming `path` and the field: a frame rate that
     /// is not above 0 (or not finite), a `min_scale` outside (0, 1], `max_bounces` 0 or above
-    /// [`MAX_BOUNCES`].
+    /// `MAX_BOUNCES` (64).
     pub fn check(&self, path: &Path) -> AssetResult<()> {
         let bad = |message: String| {
             Err(AssetError::Level {

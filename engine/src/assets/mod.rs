@@ -6,7 +6,7 @@
 //! the checks and repairs every mesh goes through (`mesh_check`, `tangents`). Limits on sizes
 //! are in `limits`; `context` carries one load's file, root and notes.
 
-pub mod atomic_file;
+pub(crate) mod atomic_file;
 mod bump;
 mod city;
 pub(crate) mod context;

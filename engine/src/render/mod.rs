@@ -4,7 +4,7 @@
 
 pub mod auto;
 pub mod balance;
-pub mod camera;
+pub(crate) mod camera;
 pub mod cpu;
 pub mod denoise;
 pub mod denoise_stage;
@@ -12,11 +12,11 @@ mod device_loss;
 pub mod film;
 mod frame_render;
 pub mod gpu;
-pub mod jitter;
+pub(crate) mod jitter;
 pub mod present;
 pub mod scaling;
-pub mod thread;
-pub mod tracer;
+pub(crate) mod thread;
+pub(crate) mod tracer;
 
 pub use camera::{FrameSettings, frame_uniforms, method_of};
 pub use thread::{OpenTracer, RenderConfig, RenderThread, Rendered, TracerChoice};

@@ -5,7 +5,7 @@
 //! Owns: [`RenderScene`] (the `layout` buffers of one scene), [`SceneWrite`] / [`SceneHeader`]
 //! (the deltas a commit carries, and applying them), the light table ([`lights`]: emissive
 //! triangles, alias table, light groups, sun and sky; [`discs`]: the physical sky's sun, moon and night in the uniforms; [`light_tree`]: the light BVH), material and texture packing
-//! ([`materials`]), the thin line emitters the camera sees prefiltered (`lines`), what a surface does to a laser ([`optics`]), the physical sky's table ([`SkyTable`]), what it holds in bytes ([`SceneMemory`]) and the box type [`Aabb`].
+//! (`materials`), the thin line emitters the camera sees prefiltered (`lines`), what a surface does to a laser (`optics`), the physical sky's table ([`SkyTable`]), what it holds in bytes ([`SceneMemory`]) and the box type [`Aabb`].
 //! Any thread (plain data and pure functions).
 //! Must not: build trees (`accel`), trace rays (`trace`), or know about the ECS, the commit or
 //! either thread.
@@ -16,11 +16,11 @@ mod flattened;
 pub mod light_tree;
 pub mod lights;
 mod lines;
-pub mod materials;
+pub(crate) mod materials;
 mod memory;
-pub mod optics;
+pub(crate) mod optics;
 mod sky_table;
-pub mod surface;
+pub(crate) mod surface;
 mod writes;
 
 pub use bounds::Aabb;

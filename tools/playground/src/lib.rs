@@ -1,25 +1,27 @@
 //! The `playground` tool as a library: play a platform test level in first person
 //! (`candela::app::FirstPersonGame`) in a window inside the shell (title menu, HUD, pause,
-//! settings: `candela::app::run_game`), soak it with random input (the engine's harness,
-//! `candela::app::harness::soak_levels`, with `FirstPersonLevel` as the configuration), or headless — replaying a recording step by
-//! step and summing it up in one line, or timing the replay (`--bench`: fixed steps per second
-//! with the least rendering, eight steps per rendered 16×9 frame on the CPU tracer).
+//! settings: `candela::app::run_game`), soak it with random input, or headless — replaying a
+//! recording step by step and summing it up in one line, or timing the replay (`--bench`:
+//! fixed steps per second with the least rendering, eight steps per rendered 16×9 frame on the
+//! CPU tracer). Every mode is the engine harness's (`candela::app::harness`: `soak_levels`,
+//! `run_fixed_steps`, `play_windowed`) with `FirstPersonLevel` as the configuration.
 //!
 //! Owns: the arguments, loading (a bad level or replay fails before anything runs) and the
-//! summary. Must not: contain game logic (the engine's `FirstPersonGame` has it). `--record`
+//! summary line. Must not: contain game logic (the engine's `FirstPersonGame` has it) or loops
+//! of its own (the harness has them). `--record`
 //! records a windowed run (the window runner writes the file when the window closes); the
 //! committed replays are recorded by a bot, `engine/examples/record_platform_replays.rs`.
 
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 use anyhow::{Context, bail};
+use candela::app::StepInput;
 use candela::app::harness::{
-    FirstPersonLevel, WindowedPlay, play_shots, play_windowed, soak_levels,
+    FirstPersonLevel, FixedSteps, WindowedPlay, play_shots, play_windowed, run_fixed_steps,
+    soak_levels,
 };
-use candela::app::{Engine, FirstPersonGame, Game, Replay, StepInput};
 use candela::assets::AssetRoot;
-use candela::render::RenderConfig;
+use candela::sim::triggers::Outcome;
 use clap::Parser;
 
 /// Play a level in first person: WASD to walk, mouse to look (click to capture it), E to use
@@ -98,16 +100,12 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             mib(r.rss_end)
         ));
     }
-    let mut game = level.game();
-    let replay = match &args.replay {
-        Some(path) => Some(game.open_replay(path)?),
-        None => None,
-    };
     if args.headless || args.bench {
-        return headless(args, game, replay);
+        return headless(args, &level);
     }
-    if let Some(replay) = replay {
-        game.start_with(StepInput::Replay(replay));
+    let mut game = level.game();
+    if let Some(path) = &args.replay {
+        game.start_with(StepInput::Replay(game.open_replay(path)?));
     }
     if let Some(path) = &args.record {
         game.start_with(StepInput::record(game.recorder()?, path));
@@ -135,53 +133,52 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     Ok(format!("{} frames", report.frames))
 }
 
-fn headless(
-    args: &Args,
-    mut game: FirstPersonGame,
-    replay: Option<Replay>,
-) -> anyhow::Result<String> {
-    let mut engine = Engine::new(RenderConfig::cpu(16, 9), game.environment())?;
-    game.setup(&mut engine)
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    let replayed = replay.as_ref().map(|r| (r.path().to_path_buf(), r.steps()));
-    // A replay ends when a step finds no frame left: one step past its length.
-    let steps = args
-        .steps
-        .or(replayed.as_ref().map(|r| r.1 + 1))
-        .unwrap_or(600);
-    if let Some(replay) = replay {
-        engine.set_step_input(StepInput::Replay(replay));
-    }
-    let per_frame: u64 = if args.bench { 8 } else { 1 };
-    let start = Instant::now();
-    let mut done = 0;
-    while done < steps {
-        let n = per_frame.min(steps - done);
-        engine.frame(n as f64 / 60.0, &mut game)?;
-        let _ = engine.rendered();
-        done += n;
-    }
-    let seconds = start.elapsed().as_secs_f64();
-    let hash = engine.state_hash();
-    let outcome = engine.logic().outcome().cloned();
-    let finished = engine.replay_finished();
-    let _ = engine.shutdown();
+/// Headless: the engine harness's fixed-step run (`candela::app::harness::run_fixed_steps`,
+/// eight steps a frame for `--bench`) summed up in the one line the tool prints.
+fn headless(args: &Args, level: &FirstPersonLevel) -> anyhow::Result<String> {
+    let per_frame = if args.bench { 8 } else { 1 };
+    let run = FixedSteps {
+        steps: args.steps,
+        without_recording: 600,
+        per_frame,
+    };
+    let end = run_fixed_steps(level, args.replay.as_deref(), run, |end| Summary {
+        steps: end.steps,
+        seconds: end.seconds,
+        hash: end.engine.state_hash(),
+        outcome: end.engine.logic().outcome().cloned(),
+        recorded: end.recorded,
+        finished: end.replay_finished,
+    })?;
+    let done = end.steps;
     let mut line = format!(
-        "{}: {done} steps, outcome {outcome:?}, state hash {hash:016x}",
-        args.level.display()
+        "{}: {done} steps, outcome {:?}, state hash {:016x}",
+        args.level.display(),
+        end.outcome,
+        end.hash
     );
-    if let Some((path, recorded)) = &replayed {
+    if let (Some(path), Some(recorded)) = (&args.replay, end.recorded) {
         line += &format!(", replay {} ({recorded} steps)", path.display());
-        if !finished {
+        if !end.finished {
             bail!("{line}: the replay did not finish in {done} steps");
         }
     }
     if args.bench {
-        let rate = done as f64 / seconds;
+        let rate = done as f64 / end.seconds;
         line += &format!(
             ", {rate:.0} steps/s = {:.1}× real time at 60 Hz ({per_frame} steps per 16×9 CPU frame)",
             rate / 60.0
         );
     }
     Ok(line)
+}
+
+/// What the tool reads of a finished headless run.
+struct Summary {
+    steps: u64,
+    seconds: f64,
+    hash: u64,
+    outcome: Option<Outcome>,
+    recorded: Option<u64>,
+    finished: bool,
 }

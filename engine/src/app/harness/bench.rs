@@ -13,8 +13,8 @@ use std::path::Path;
 use std::time::Instant;
 
 use super::config::{HarnessError, HarnessGame};
-use crate::app::replay::StepInput;
-use crate::app::runner::{Engine, Game, Phase};
+use super::replay_run::{Started, start_headless};
+use crate::app::runner::Phase;
 use crate::render::RenderConfig;
 
 /// What one replay's run measured (medians over the second half of its frames).
@@ -108,12 +108,11 @@ pub fn bench_replay<C: HarnessGame>(
     render: RenderConfig,
     seconds: f64,
 ) -> Result<BenchFigures, HarnessError> {
-    let (replay, start) = config.open_replay(path)?;
-    let mut game = config.new_game(start);
-    let mut engine = Engine::new(render, config.environment(&game))?;
-    game.setup(&mut engine)
-        .map_err(|e| HarnessError::Setup(e.to_string()))?;
-    engine.set_step_input(StepInput::Replay(replay));
+    let Started {
+        mut engine,
+        mut game,
+        ..
+    } = start_headless(config, Some(path), render)?;
     let begun = Instant::now();
     let mut last = Instant::now();
     let mut dt = 1.0 / 30.0;

@@ -1,7 +1,8 @@
 //! The game harness: every headless mode a game binary offers, configured by the game
 //! ([`HarnessGame`]: its levels, a fresh game for one, its recordings) so that Reflect, the
 //! playground and the next game run the same loops — a recording replayed headless for the
-//! game's one-line summary and exit code ([`play_replay`]), timed in real time
+//! game's one-line summary and exit code ([`play_replay`]), a set number of fixed steps
+//! several a frame, with or without a recording ([`run_fixed_steps`]), timed in real time
 //! ([`bench_replay`]), the soak over the game's levels ([`soak_levels`], over `soak`: any game
 //! played by the seeded monkey, watched for what must never happen), converged captures
 //! ([`capture_converged`]), the windowed screenshot runs' cues ([`play_shots`],
@@ -9,7 +10,8 @@
 //! first person (the playground's); and the ghosting measurement ([`measure_ghosting`]: a converging
 //! policy's error on a fast-moving object and its trail).
 //!
-//! One file per job: `config` (the trait and the errors), `replay_run`, `bench`, `soak`,
+//! One file per job: `config` (the trait and the errors), `replay_run` (and the start every headless
+//! mode shares), `fixed_steps`, `bench`, `soak`,
 //! `soak_levels`, `capture`, `shots` (the screenshot runs' cues), `windowed`, `first_person`, `ghosting`. Main thread (the engine's render thread renders).
 //! Must not: change the game, its level or any policy (they drive and measure), or name a
 //! particular game (its summaries and tables are the game's).
@@ -18,6 +20,7 @@ mod bench;
 mod capture;
 mod config;
 mod first_person;
+mod fixed_steps;
 mod ghosting;
 mod replay_run;
 mod shots;
@@ -29,6 +32,7 @@ pub use bench::{BenchFigures, bench_replay, median, table_head, table_row};
 pub use capture::{SETTLE_FRAMES, capture_converged};
 pub use config::{HarnessError, HarnessGame};
 pub use first_person::FirstPersonLevel;
+pub use fixed_steps::{FixedSteps, StepsEnd, run_fixed_steps};
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
 pub use shots::{play_shots, start_cue, tour_shots};

@@ -51,19 +51,13 @@ pub fn play_replay<C: HarnessGame, S>(
     pace: ReplayPace,
     summarise: impl FnOnce(ReplayEnd<'_, C::Game>) -> S,
 ) -> Result<S, HarnessError> {
-    let (replay, start) = config.open_replay(path)?;
-    let recorded = replay.steps() + 1;
-    let mut game = config.new_game(start);
-    // The sky's table follows a moving sun on a worker thread: the run's outcome never reads
-    // the picture, and a sun turned fast would otherwise stall every frame.
-    let render = RenderConfig {
-        sky_rebuild: crate::scene::SkyRebuild::Background,
-        ..RenderConfig::cpu(16, 9)
-    };
-    let mut engine = Engine::new(render, config.environment(&game))?;
-    game.setup(&mut engine)
-        .map_err(|e| HarnessError::Setup(e.to_string()))?;
-    engine.set_step_input(StepInput::Replay(replay));
+    let Started {
+        mut engine,
+        mut game,
+        start,
+        recorded,
+    } = start_headless(config, Some(path), headless_render())?;
+    let recorded = recorded.unwrap_or(0) + 1;
     // Every frame runs at least one step (`frame_seconds` ≥ 1/60 s is the caller's to keep).
     let most_frames = recorded.max(pace.at_least_steps) + 1;
     for _ in 0..most_frames {
@@ -85,4 +79,55 @@ pub fn play_replay<C: HarnessGame, S>(
     });
     let _ = engine.shutdown();
     Ok(summary)
+}
+
+/// The render configuration of the headless modes that only simulate: a 16×9 film on the CPU
+/// tracer, the sky's table following a moving sun on a worker thread (a run's outcome never
+/// reads the picture, and a sun turned fast would otherwise stall every frame).
+pub(super) fn headless_render() -> RenderConfig {
+    RenderConfig {
+        sky_rebuild: crate::scene::SkyRebuild::Background,
+        ..RenderConfig::cpu(16, 9)
+    }
+}
+
+/// An engine with a game set up in it, ready for its first frame.
+pub(super) struct Started<G> {
+    pub engine: Engine,
+    pub game: G,
+    /// Index of the level the game starts in (the recording's, else 0).
+    pub start: usize,
+    /// The recording's length in fixed steps, when a recording drives the steps.
+    pub recorded: Option<u64>,
+}
+
+/// Opens the recording at `path` (when there is one) against `config`'s game, starts the
+/// engine with `render` and a fresh game in the level the recording starts in, and hands the
+/// recording the steps. Every headless mode begins here.
+pub(super) fn start_headless<C: HarnessGame>(
+    config: &C,
+    path: Option<&Path>,
+    render: RenderConfig,
+) -> Result<Started<C::Game>, HarnessError> {
+    let (replay, start) = match path {
+        Some(path) => {
+            let (replay, start) = config.open_replay(path)?;
+            (Some(replay), start)
+        }
+        None => (None, 0),
+    };
+    let recorded = replay.as_ref().map(|r| r.steps());
+    let mut game = config.new_game(start);
+    let mut engine = Engine::new(render, config.environment(&game))?;
+    game.setup(&mut engine)
+        .map_err(|e| HarnessError::Setup(e.to_string()))?;
+    if let Some(replay) = replay {
+        engine.set_step_input(StepInput::Replay(replay));
+    }
+    Ok(Started {
+        engine,
+        game,
+        start,
+        recorded,
+    })
 }

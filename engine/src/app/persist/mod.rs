@@ -18,7 +18,5 @@ mod user_dirs;
 pub use bindings::{BindingProblem, Bindings, BindingsError};
 pub use saves::Progress;
 pub use settings::Settings;
-pub use stored::{
-    LoadWarning, Loaded, StoreError, describe_ron_error, load_or_default, parse_checked, save_ron,
-};
+pub use stored::{LoadWarning, Loaded, StoreError, load_or_default, parse_checked, save_ron};
 pub use user_dirs::{UserDirs, UserDirsError};

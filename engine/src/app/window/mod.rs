@@ -15,6 +15,5 @@ mod run;
 mod running;
 mod stats_overlay;
 
-pub use config::{WindowConfig, WindowEnd, WindowError, WindowReport, display_problem};
+pub use config::{WindowConfig, WindowEnd, WindowError, WindowReport};
 pub use run::{run_game, run_window};
-pub use stats_overlay::StatsOverlay;

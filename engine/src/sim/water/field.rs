@@ -107,8 +107,8 @@ impl HeightField {
         &self.pushed
     }
 
-    /// True while the surface is still to the eye: every height under [`STILL_METRES`] and
-    /// every speed under [`STILL_METRES_PER_SECOND`] (the mesh need not be rewritten).
+    /// True while the surface is still to the eye: every height under `STILL_METRES` and
+    /// every speed under `STILL_METRES_PER_SECOND` (the mesh need not be rewritten).
     pub fn is_still(&self) -> bool {
         self.h.iter().all(|h| h.abs() < STILL_METRES)
             && self.v.iter().all(|v| v.abs() < STILL_METRES_PER_SECOND)
