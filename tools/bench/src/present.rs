@@ -5,6 +5,7 @@
 //! `queue.write_texture` does first), each at 1 and 2 threads, medians of many runs. Beside each,
 //! the code as it was before (`present_reference.rs`, `present_overlay_reference.rs`), timed
 //! in the same run, alternating with the new, and the largest byte difference between the two.
+//! One-thread figures are the thread's CPU time (load-independent), two-thread ones wall time.
 //!
 //! Owns: the measurement. Must not: open a window or touch a device.
 
@@ -100,8 +101,30 @@ fn stats_overlay(size: (u32, u32)) -> Overlay {
     }
 }
 
-/// Milliseconds of one call of `f`.
-fn time(f: impl FnOnce()) -> f64 {
+/// This thread's CPU time in milliseconds (`CLOCK_THREAD_CPUTIME_ID`): unlike the wall clock,
+/// it does not count the time other processes held the core, so one-thread figures taken on a
+/// loaded machine stay comparable.
+fn thread_cpu_ms() -> f64 {
+    let mut t = libc::timespec {
+        tv_sec: 0,
+        tv_nsec: 0,
+    };
+    // SAFETY: `t` is a valid timespec for the call to fill.
+    let ok = unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut t) } == 0;
+    if ok {
+        t.tv_sec as f64 * 1e3 + t.tv_nsec as f64 * 1e-6
+    } else {
+        f64::NAN
+    }
+}
+
+/// Milliseconds of one call of `f`: wall clock, or this thread's CPU time when `cpu`.
+fn time_with(cpu: bool, f: impl FnOnce()) -> f64 {
+    if cpu {
+        let started = thread_cpu_ms();
+        f();
+        return thread_cpu_ms() - started;
+    }
     let started = Instant::now();
     f();
     started.elapsed().as_secs_f64() * 1e3
@@ -170,22 +193,26 @@ pub fn run(args: &PresentArgs) -> anyhow::Result<()> {
                 let mut frame_old = reference.clone();
                 let mut frame_new = reference.clone();
                 let mut target = vec![0u8; reference.len()];
+                // One thread: the pool's thread does all the work, so its CPU time is the cost.
+                let time = |f: &mut dyn FnMut()| time_with(threads == 1, f);
                 for _ in 0..args.runs {
-                    before.push(time(|| {
+                    before.push(time(&mut || {
                         std::hint::black_box(compose_reference(&film, size, &tonemap, true));
                     }));
-                    now.push(time(|| {
+                    now.push(time(&mut || {
                         std::hint::black_box(compose.compose(&film, size, &tonemap, true));
                     }));
                     frame_old.copy_from_slice(&reference);
-                    overlay_before.push(time(|| {
+                    overlay_before.push(time(&mut || {
                         old_overlay.draw(&mut frame_old, size, true, &overlay);
                     }));
                     frame_new.copy_from_slice(&reference);
-                    overlay_now.push(time(|| {
+                    overlay_now.push(time(&mut || {
                         new_overlay.draw(&mut frame_new, size, true, &overlay);
                     }));
-                    copy.push(time(|| target.copy_from_slice(std::hint::black_box(&frame_new))));
+                    copy.push(time(&mut || {
+                        target.copy_from_slice(std::hint::black_box(&frame_new))
+                    }));
                 }
                 let composed = compose.compose(&film, size, &tonemap, true).to_vec();
                 let difference = largest_difference(&reference, &composed)
