@@ -52,7 +52,8 @@ fn nearest(film: &Film, w: u32, h: u32, tonemap: &TonemapSettings) -> Vec<u8> {
         for x in 0..w {
             let fx = ((x as f32 + 0.5) * film.width as f32 / w as f32) as u32;
             let fy = ((y as f32 + 0.5) * film.height as f32 / h as f32) as u32;
-            let c = film.mean[(fy.min(film.height - 1) * film.width + fx.min(film.width - 1)) as usize];
+            let c =
+                film.mean[(fy.min(film.height - 1) * film.width + fx.min(film.width - 1)) as usize];
             let [r, g, b] = linear_to_srgb8(c, tonemap);
             out.extend_from_slice(&[r, g, b, 255]);
         }

@@ -45,7 +45,10 @@ fn test_film(w: u32, h: u32) -> Film {
         state ^= state >> 17;
         state ^= state << 5;
         let noise = (state >> 8) as f32 / (1 << 24) as f32;
-        let (x, y) = ((i as u32 % w) as f32 / w as f32, (i as u32 / w) as f32 / h as f32);
+        let (x, y) = (
+            (i as u32 % w) as f32 / w as f32,
+            (i as u32 / w) as f32 / h as f32,
+        );
         *p = Vec3::new(x * 1.5, y, 0.3 + 0.2 * (x * 9.0).sin()) * (0.25 + 1.5 * noise);
     }
     film.mean[w as usize + 1] = Vec3::new(f32::NAN, 0.5, 0.5);
@@ -148,7 +151,11 @@ fn largest_difference(a: &[u8], b: &[u8]) -> u8 {
     if a.len() != b.len() {
         return u8::MAX;
     }
-    a.iter().zip(b).map(|(x, y)| x.abs_diff(*y)).max().unwrap_or(0)
+    a.iter()
+        .zip(b)
+        .map(|(x, y)| x.abs_diff(*y))
+        .max()
+        .unwrap_or(0)
 }
 
 pub fn run(args: &PresentArgs) -> anyhow::Result<()> {
@@ -259,7 +266,11 @@ mod tests {
                 };
                 let mut old = compose_reference(&film, size, &tonemap, bgra);
                 let new = compose.compose(&film, size, &tonemap, bgra);
-                assert_eq!(largest_difference(&old, new), 0, "{fw}×{fh} filmic {filmic}");
+                assert_eq!(
+                    largest_difference(&old, new),
+                    0,
+                    "{fw}×{fh} filmic {filmic}"
+                );
                 old_overlay.draw(&mut old, size, bgra, &overlay);
                 new_overlay.draw(new, size, bgra, &overlay);
                 assert_eq!(largest_difference(&old, new), 0, "overlay over {fw}×{fh}");

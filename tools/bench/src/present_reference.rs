@@ -149,4 +149,3 @@ pub fn compose_reference(
         );
     out
 }
-

@@ -155,7 +155,17 @@ impl HostCompose {
                             let y = t.index[k] as usize;
                             wide.get(y * 4 * w..(y + 1) * 4 * w).unwrap_or(&[])
                         };
-                        vertical(simd, at(0), at(1), at(2), at(3), t.weight, exposure, filmic, index);
+                        vertical(
+                            simd,
+                            at(0),
+                            at(1),
+                            at(2),
+                            at(3),
+                            t.weight,
+                            exposure,
+                            filmic,
+                            index,
+                        );
                         encode(index, table, bgra, line);
                     }
                 },

@@ -12,7 +12,6 @@
 
 use glam::{Vec3, Vec4};
 
-
 /// Entries of the sRGB table (see `cpu_compose::srgb_table`).
 pub(super) const SRGB_TABLE: usize = 4096;
 
@@ -39,7 +38,9 @@ pub(super) fn horizontal(row: &[Vec3], scratch: &mut Vec<Vec4>, columns: &[Taps]
     scratch.extend(row.iter().map(|&c| finite(c)));
     let p = &scratch[..];
     for (px, t) in out.chunks_exact_mut(4).zip(columns) {
-        let [a, b, c, d] = t.index.map(|i| p.get(i as usize).copied().unwrap_or(Vec4::ZERO));
+        let [a, b, c, d] = t
+            .index
+            .map(|i| p.get(i as usize).copied().unwrap_or(Vec4::ZERO));
         let s = a * t.weight[0] + b * t.weight[1] + c * t.weight[2] + d * t.weight[3];
         px.copy_from_slice(&s.to_array());
     }
@@ -71,7 +72,12 @@ fn vertical_kernel(
     filmic: bool,
     index: &mut [i32],
 ) {
-    let n = index.len().min(l0.len()).min(l1.len()).min(l2.len()).min(l3.len());
+    let n = index
+        .len()
+        .min(l0.len())
+        .min(l1.len())
+        .min(l2.len())
+        .min(l3.len());
     let (l0, l1, l2, l3, index) = (&l0[..n], &l1[..n], &l2[..n], &l3[..n], &mut index[..n]);
     let top = (SRGB_TABLE - 1) as f32;
     if filmic {
@@ -132,13 +138,31 @@ pub(super) fn vertical(
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx512f,avx512vl,avx2")]
     #[allow(clippy::too_many_arguments)]
-    fn avx512(a: &[f32], b: &[f32], c: &[f32], d: &[f32], w: [f32; 4], e: f32, f: bool, i: &mut [i32]) {
+    fn avx512(
+        a: &[f32],
+        b: &[f32],
+        c: &[f32],
+        d: &[f32],
+        w: [f32; 4],
+        e: f32,
+        f: bool,
+        i: &mut [i32],
+    ) {
         vertical_kernel(a, b, c, d, w, e, f, i)
     }
     #[cfg(target_arch = "x86_64")]
     #[target_feature(enable = "avx2")]
     #[allow(clippy::too_many_arguments)]
-    fn avx2(a: &[f32], b: &[f32], c: &[f32], d: &[f32], w: [f32; 4], e: f32, f: bool, i: &mut [i32]) {
+    fn avx2(
+        a: &[f32],
+        b: &[f32],
+        c: &[f32],
+        d: &[f32],
+        w: [f32; 4],
+        e: f32,
+        f: bool,
+        i: &mut [i32],
+    ) {
         vertical_kernel(a, b, c, d, w, e, f, i)
     }
     match simd {

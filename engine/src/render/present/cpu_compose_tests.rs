@@ -50,7 +50,9 @@ fn reference(film: &Film, size: (u32, u32), x: u32, y: u32, tonemap: &TonemapSet
         c.clamp(Vec3::splat(-1e30), Vec3::splat(1e30))
     };
     let row = |y: u32| {
-        texel(tx[0], y) * wx[0] + texel(tx[1], y) * wx[1] + texel(tx[2], y) * wx[2]
+        texel(tx[0], y) * wx[0]
+            + texel(tx[1], y) * wx[1]
+            + texel(tx[2], y) * wx[2]
             + texel(tx[3], y) * wx[3]
     };
     let c = row(ty[0]) * wy[0] + row(ty[1]) * wy[1] + row(ty[2]) * wy[2] + row(ty[3]) * wy[3];
@@ -97,7 +99,10 @@ fn non_integer_scales_tiny_films_and_bad_values_match_a_per_pixel_reference() {
             let film = film(film_size.0, film_size.1);
             let fresh = compose_host_film(&film, size, &tonemap, false);
             let (d, opaque) = worst(&film, size, &fresh, &tonemap);
-            assert!(d <= 1 && opaque, "{film_size:?} → {size:?} filmic {filmic}: off by {d}");
+            assert!(
+                d <= 1 && opaque,
+                "{film_size:?} → {size:?} filmic {filmic}: off by {d}"
+            );
             // The same compose reused across every size change gives the same bytes.
             assert_eq!(kept.compose(&film, size, &tonemap, false), &fresh[..]);
         }

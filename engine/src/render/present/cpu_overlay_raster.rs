@@ -178,7 +178,11 @@ impl Triangle<'_> {
             let row = ((y - band.rows.0) * band.width * 4) as usize;
             for x in sx0..sx1 {
                 let c = [x as f32 + 0.5, cy];
-                let e = [edge(p[1], p[2], c), edge(p[2], p[0], c), edge(p[0], p[1], c)];
+                let e = [
+                    edge(p[1], p[2], c),
+                    edge(p[2], p[0], c),
+                    edge(p[0], p[1], c),
+                ];
                 if (0..3).any(|k| e[k] < 0.0 || (e[k] == 0.0 && !self.ties[k])) {
                     continue;
                 }
