@@ -2,7 +2,8 @@
 //! `docs/reflect/chamber_1.png`, box-filtered down to the internal resolution Reflect traces at
 //! in a 1280×720 window) upscaled to 1280×720 by the bilinear filter the present pass used until
 //! 2026-12-06 and by its Catmull-Rom bicubic now (`render::present::compose_host_film`). Writes
-//! `docs/upscale.png`: the same crop of both, bilinear left, bicubic right, each pixel shown 2×.
+//! `docs/upscale.png`: the same crop of both, bilinear left, bicubic right, each pixel shown 2×;
+//! and `docs/present_upscale.png`: nearest (each film pixel a 4×4 block) left, bicubic right.
 //!
 //! Also prints the compose's median time. Run:
 //! `cargo run --release -p candela --example upscale_compare`. Units: linear radiance in
@@ -39,6 +40,39 @@ fn bilinear(film: &Film, w: u32, h: u32, tonemap: &TonemapSettings) -> Vec<u8> {
             let bottom = texel(bx, by + 1).lerp(texel(bx + 1, by + 1), tx);
             let [r, g, b] = linear_to_srgb8(top.lerp(bottom, ty), tonemap);
             out.extend_from_slice(&[r, g, b, 255]);
+        }
+    }
+    out
+}
+
+/// Nearest: each window pixel shows the film pixel its centre falls in.
+fn nearest(film: &Film, w: u32, h: u32, tonemap: &TonemapSettings) -> Vec<u8> {
+    let mut out = Vec::with_capacity((w * h * 4) as usize);
+    for y in 0..h {
+        for x in 0..w {
+            let fx = ((x as f32 + 0.5) * film.width as f32 / w as f32) as u32;
+            let fy = ((y as f32 + 0.5) * film.height as f32 / h as f32) as u32;
+            let c =
+                film.mean[(fy.min(film.height - 1) * film.width + fx.min(film.width - 1)) as usize];
+            let [r, g, b] = linear_to_srgb8(c, tonemap);
+            out.extend_from_slice(&[r, g, b, 255]);
+        }
+    }
+    out
+}
+
+/// The same crop (`cx`, `cy`, `cw`×`ch` window pixels) of `left` and `right` (RGBA rows of a
+/// window `w` wide), each pixel shown 2×, side by side with an 8-pixel gap.
+fn side_by_side(left: &[u8], right: &[u8], w: u32, crop: (u32, u32, u32, u32)) -> image::RgbImage {
+    let (cx, cy, cw, ch) = crop;
+    let mut out = image::RgbImage::new(cw * 4 + 8, ch * 2);
+    for (k, pixels) in [left, right].iter().enumerate() {
+        for y in 0..ch * 2 {
+            for x in 0..cw * 2 {
+                let i = (((cy + y / 2) * w + cx + x / 2) * 4) as usize;
+                let px = image::Rgb([pixels[i], pixels[i + 1], pixels[i + 2]]);
+                out.put_pixel(k as u32 * (cw * 2 + 8) + x, y, px);
+            }
         }
     }
     out
@@ -86,19 +120,15 @@ fn main() -> anyhow::Result<()> {
         ms[10]
     );
     // The door and the plate: 320×180 window pixels, shown 2×.
-    let (cx, cy, cw, ch) = (480u32, 240u32, 320u32, 180u32);
-    let mut out = image::RgbImage::new(cw * 4 + 8, ch * 2);
-    for (k, pixels) in [&old, &new].iter().enumerate() {
-        for y in 0..ch * 2 {
-            for x in 0..cw * 2 {
-                let i = (((cy + y / 2) * w + cx + x / 2) * 4) as usize;
-                let px = image::Rgb([pixels[i], pixels[i + 1], pixels[i + 2]]);
-                out.put_pixel(k as u32 * (cw * 2 + 8) + x, y, px);
-            }
-        }
-    }
+    let crop = (480u32, 240u32, 320u32, 180u32);
+    let out = side_by_side(&old, &new, w, crop);
     let path = repo.join("docs/upscale.png");
     out.save(&path)
+        .with_context(|| format!("writing {}", path.display()))?;
+    println!("wrote {}", path.display());
+    let path = repo.join("docs/present_upscale.png");
+    side_by_side(&nearest(&film, w, h, &tonemap), &new, w, crop)
+        .save(&path)
         .with_context(|| format!("writing {}", path.display()))?;
     println!("wrote {}", path.display());
     Ok(())

@@ -30,6 +30,9 @@
 //!   replay through the game's frame loop at 160×90 and 320×180, denoiser off and on, against
 //!   converged renders of the same views, and its frame-to-frame stability
 //!   (`docs/charts/picture_error.png`, `docs/ACCURACY.md`).
+//! * `bench present [--runs N] [--threads 1,2]` — the CPU compose of the CPU tracer's film
+//!   (160×90, 320×180, 480×270) into a 1280×720 window, the F3 overlay drawn on the CPU and the
+//!   frame's copy, at 1 and 2 threads, against the code before (`docs/PERFORMANCE.md`).
 //! * `bench two-lights` — Brigade's two light samples per hit against single-pick NEE at equal
 //!   time, a day and a night view of It's About Time's ruins (`docs/charts/two_lights.png`,
 //!   `docs/ACCURACY.md`).
@@ -69,6 +72,9 @@ mod pipeline_overlap;
 mod pipeline_queries;
 mod pipeline_refit;
 mod plot;
+mod present;
+mod present_overlay_reference;
+mod present_reference;
 mod rays;
 mod report;
 mod report_reading;
@@ -115,6 +121,8 @@ enum Command {
     /// Two light samples per hit (Brigade §6.2.3) against single-pick NEE at equal time on
     /// It's About Time's ruins, a day and a night view.
     TwoLights(two_lights::TwoLightsArgs),
+    /// The CPU compose and overlay of the CPU tracer's film into a 1280×720 window, before and now.
+    Present(present::PresentArgs),
     /// Workload balancing schemes replayed on recorded per-unit costs (Table 1, Figure 9).
     Balance(balance::BalanceArgs),
 }
@@ -148,5 +156,6 @@ fn main() -> anyhow::Result<()> {
         Command::Balance(a) => balance::run(&a),
         Command::TwoLights(a) => two_lights::run(&a),
         Command::Picture(a) => picture::run(&a),
+        Command::Present(a) => present::run(&a),
     }
 }

@@ -7,22 +7,26 @@
 //! fragment at a time; composing here (all cores, a lookup table for the sRGB curve) and
 //! copying the bytes is cheaper (docs/PERFORMANCE.md, "Frame phases in a window").
 //!
-//! Owns: [`compose_host_film`] and its sRGB table. Render thread (rayon over rows).
-//! Must not: touch the device (the presenter uploads the bytes).
+//! How: across first (each film row widened to the window's width, RGBx pixels, one SSE vector
+//! each), then down (four widened rows a window row, contiguous floats at the CPU's widest
+//! vectors, `cpu_compose_rows.rs`); the taps and weights of both axes are kept while the sizes
+//! stay, and so are the buffers ([`HostCompose`]).
+//!
+//! Owns: [`HostCompose`], [`compose_host_film`] and the sRGB table. Render thread (rayon over
+//! rows). Must not: touch the device (the presenter uploads the bytes).
 
 use std::sync::OnceLock;
 
-use glam::Vec3;
+use glam::Vec4;
 use rayon::prelude::*;
 
+use super::cpu_compose_rows::{SRGB_TABLE, Simd, Taps, encode, horizontal, vertical};
 use crate::render::film::{Film, TonemapSettings};
 
-/// Entries of the sRGB table over linear [0, 1]. 4096 steps of 1/4095: the curve's steepest
-/// part (slope 12.92 below 0.0031308) moves at most 12.92 · 255 / 4095 ≈ 0.8 of an 8-bit step
-/// between entries, so with rounding to the nearest entry an output is within one step of
-/// the exact encoding (`linear_to_srgb8`).
-const SRGB_TABLE: usize = 4096;
-
+/// The sRGB table over linear [0, 1]: [`SRGB_TABLE`] (4096) steps of 1/4095. The curve's
+/// steepest part (slope 12.92 below 0.0031308) moves at most 12.92 · 255 / 4095 ≈ 0.8 of an
+/// 8-bit step between entries, so with rounding to the nearest entry an output is within one
+/// step of the exact encoding (`linear_to_srgb8`).
 fn srgb_table() -> &'static [u8; SRGB_TABLE] {
     static TABLE: OnceLock<[u8; SRGB_TABLE]> = OnceLock::new();
     TABLE.get_or_init(|| {
@@ -40,12 +44,6 @@ fn srgb_table() -> &'static [u8; SRGB_TABLE] {
     })
 }
 
-/// NaN → 0 and ±infinity → ±1e30, as the shader's `finite` (so 0 × inf never spreads).
-fn finite(c: Vec3) -> Vec3 {
-    Vec3::from_array(c.to_array().map(|x| if x.is_nan() { 0.0 } else { x }))
-        .clamp(Vec3::splat(-1e30), Vec3::splat(1e30))
-}
-
 /// Catmull-Rom weights of the four film pixels at `base − 1 … base + 2` for a sample `t` ∈ [0, 1)
 /// past `base` (they sum to 1; `t = 0` gives `[0, 1, 0, 0]`, so equal sizes copy exactly). The
 /// same cubic as `catmull_rom` in `shaders/present.wgsl`.
@@ -59,9 +57,9 @@ pub fn catmull_rom(t: f32) -> [f32; 4] {
     ]
 }
 
-/// The four source taps (clamped to the film) and their weights along one axis: output pixel
-/// `i` of `to` reads film pixels around its centre mapped as the shader maps it.
-fn axis(from: u32, to: u32) -> Vec<([usize; 4], [f32; 4])> {
+/// The taps of each output pixel along one axis: output pixel `i` of `to` reads film pixels
+/// around its centre mapped as the shader maps it, clamped to the film.
+fn axis(from: u32, to: u32) -> Vec<Taps> {
     let scale = from as f32 / to.max(1) as f32;
     let last = from.max(1) as i64 - 1;
     (0..to)
@@ -69,96 +67,131 @@ fn axis(from: u32, to: u32) -> Vec<([usize; 4], [f32; 4])> {
             let f = (i as f32 + 0.5) * scale - 0.5;
             let base = f.floor();
             let b = base as i64;
-            let taps = [b - 1, b, b + 1, b + 2].map(|v| v.clamp(0, last) as usize);
-            (taps, catmull_rom(f - base))
+            Taps {
+                index: [b - 1, b, b + 1, b + 2].map(|v| v.clamp(0, last) as u32),
+                weight: catmull_rom(f - base),
+            }
         })
         .collect()
 }
 
-/// `film` upscaled (Catmull-Rom bicubic, separable, clamped edges) to `size` (physical pixels) and tonemapped with
-/// `tonemap`, as rows of 4-byte pixels, top row first; `bgra` orders them B, G, R, A (else
-/// R, G, B, A), alpha 255. An empty film gives black.
+/// Window rows a rayon task of the vertical pass takes (fewer, larger tasks than one a row).
+const ROWS_PER_TASK: usize = 8;
+
+/// The CPU compose with what it keeps between frames: the taps of both axes for the last
+/// film and window sizes, the widened rows and the output bytes. One per presenter.
+#[derive(Debug)]
+pub struct HostCompose {
+    /// (film width, film height, window width, window height) the taps are for.
+    sizes: (u32, u32, u32, u32),
+    columns: Vec<Taps>,
+    rows: Vec<Taps>,
+    /// Film row y widened to the window's width: RGBx floats at `y · 4w`.
+    wide: Vec<f32>,
+    out: Vec<u8>,
+    simd: Simd,
+}
+
+impl Default for HostCompose {
+    fn default() -> Self {
+        Self {
+            sizes: (0, 0, 0, 0),
+            columns: Vec::new(),
+            rows: Vec::new(),
+            wide: Vec::new(),
+            out: Vec::new(),
+            simd: Simd::detect(),
+        }
+    }
+}
+
+impl HostCompose {
+    /// `film` upscaled (Catmull-Rom bicubic, separable, clamped edges) to `size` (physical
+    /// pixels, each side at least 1) and tonemapped with `tonemap`, as rows of 4-byte pixels,
+    /// top row first; `bgra` orders them B, G, R, A (else R, G, B, A), alpha 255. An empty
+    /// film (or one whose `mean` is shorter than its size) gives black. The bytes live until
+    /// the next call.
+    pub fn compose(
+        &mut self,
+        film: &Film,
+        size: (u32, u32),
+        tonemap: &TonemapSettings,
+        bgra: bool,
+    ) -> &mut [u8] {
+        let (w, h) = (size.0.max(1) as usize, size.1.max(1) as usize);
+        self.out.resize(w * h * 4, 0);
+        let (fw, fh) = (film.width as usize, film.height as usize);
+        if fw == 0 || fh == 0 || film.mean.len() < fw * fh {
+            for px in self.out.chunks_exact_mut(4) {
+                px.copy_from_slice(&[0, 0, 0, 255]);
+            }
+            return &mut self.out;
+        }
+        let sizes = (film.width, film.height, w as u32, h as u32);
+        if self.sizes != sizes {
+            self.columns = axis(film.width, w as u32);
+            self.rows = axis(film.height, h as u32);
+            self.sizes = sizes;
+        }
+        self.wide.resize(4 * w * fh, 0.0);
+        let columns = &self.columns;
+        self.wide
+            .par_chunks_mut(4 * w)
+            .zip(film.mean[..fw * fh].par_chunks(fw))
+            .for_each_init(
+                || Vec::<Vec4>::with_capacity(fw),
+                |scratch, (line, row)| horizontal(row, scratch, columns, line),
+            );
+        let exposure = tonemap.exposure_ev.exp2();
+        let (filmic, simd, table, wide) = (tonemap.filmic, self.simd, srgb_table(), &self.wide);
+        self.out
+            .par_chunks_mut(w * 4 * ROWS_PER_TASK)
+            .zip(self.rows.par_chunks(ROWS_PER_TASK))
+            .for_each_init(
+                || vec![0i32; 4 * w],
+                |index, (lines, taps)| {
+                    for (line, t) in lines.chunks_exact_mut(w * 4).zip(taps) {
+                        let at = |k: usize| {
+                            let y = t.index[k] as usize;
+                            wide.get(y * 4 * w..(y + 1) * 4 * w).unwrap_or(&[])
+                        };
+                        vertical(
+                            simd,
+                            at(0),
+                            at(1),
+                            at(2),
+                            at(3),
+                            t.weight,
+                            exposure,
+                            filmic,
+                            index,
+                        );
+                        encode(index, table, bgra, line);
+                    }
+                },
+            );
+        &mut self.out
+    }
+}
+
+/// [`HostCompose::compose`] into a new buffer (tests, tools; the presenter keeps a
+/// [`HostCompose`] so that nothing is allocated per frame).
 pub fn compose_host_film(
     film: &Film,
     size: (u32, u32),
     tonemap: &TonemapSettings,
     bgra: bool,
 ) -> Vec<u8> {
-    let (w, h) = (size.0.max(1) as usize, size.1.max(1) as usize);
-    let mut out = vec![0u8; w * h * 4];
-    if film.width == 0 || film.height == 0 || film.mean.len() < (film.width * film.height) as usize
-    {
-        for px in out.chunks_exact_mut(4) {
-            px[3] = 255;
-        }
-        return out;
-    }
-    let columns = axis(film.width, w as u32);
-    let rows = axis(film.height, h as u32);
-    let exposure = tonemap.exposure_ev.exp2();
-    let filmic = tonemap.filmic;
-    let table = srgb_table();
-    let fw = film.width as usize;
-    let fh = film.height as usize;
-    // Each film pixel made finite once, in three planes (one per channel) so that the loops
-    // below run over contiguous floats (the compiler vectorises them).
-    let mut planes = vec![0.0f32; 3 * fw * fh];
-    {
-        let (r, gb) = planes.split_at_mut(fw * fh);
-        let (g, b) = gb.split_at_mut(fw * fh);
-        for (i, &c) in film.mean[..fw * fh].iter().enumerate() {
-            let c = finite(c);
-            (r[i], g[i], b[i]) = (c.x, c.y, c.z);
-        }
-    }
-    // Across first: each film row of each plane widened to the window's width (4 taps a
-    // pixel), then down. `wide` holds plane k's row y at `(k * fh + y) * w`.
-    let mut wide = vec![0.0f32; 3 * w * fh];
-    wide.par_chunks_mut(w)
-        .zip(planes.par_chunks(fw))
-        .for_each(|(line, row)| {
-            for (px, (taps, wx)) in line.iter_mut().zip(&columns) {
-                *px = row[taps[0]] * wx[0]
-                    + row[taps[1]] * wx[1]
-                    + row[taps[2]] * wx[2]
-                    + row[taps[3]] * wx[3];
-            }
-        });
-    out.par_chunks_mut(w * 4)
-        .zip(rows.par_iter())
-        .for_each_init(
-            || vec![0.0f32; 3 * w],
-            |sum, (line, (taps, wy))| {
-                for k in 0..3 {
-                    let at = |t: usize| &wide[(k * fh + t) * w..][..w];
-                    let (l0, l1, l2, l3) = (at(taps[0]), at(taps[1]), at(taps[2]), at(taps[3]));
-                    let s = &mut sum[k * w..][..w];
-                    for x in 0..w {
-                        let mut c = (l0[x] * wy[0] + l1[x] * wy[1] + l2[x] * wy[2] + l3[x] * wy[3])
-                            * exposure;
-                        if filmic {
-                            c = (c * (2.51 * c + 0.03)) / (c * (2.43 * c + 0.59) + 0.14);
-                        }
-                        // NaN (the filmic curve of a huge value) to 0, then [0, 1] → table index.
-                        let c = if c.is_nan() { 0.0 } else { c.clamp(0.0, 1.0) };
-                        s[x] = c * (SRGB_TABLE - 1) as f32 + 0.5;
-                    }
-                }
-                let (r, gb) = sum.split_at(w);
-                let (g, b) = gb.split_at(w);
-                for (x, px) in line.chunks_exact_mut(4).enumerate() {
-                    let [r, g, b] = [r[x], g[x], b[x]].map(|i| table[i as usize]);
-                    px.copy_from_slice(&if bgra { [b, g, r, 255] } else { [r, g, b, 255] });
-                }
-            },
-        );
-    out
+    let mut compose = HostCompose::default();
+    compose.compose(film, size, tonemap, bgra);
+    compose.out
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::render::film::linear_to_srgb8;
+    use glam::Vec3;
 
     #[test]
     fn at_equal_size_it_tonemaps_like_the_cpu_within_one_step() {
@@ -220,3 +253,7 @@ mod tests {
         assert_eq!(catmull_rom(0.0), [0.0, 1.0, 0.0, 0.0]);
     }
 }
+
+#[cfg(test)]
+#[path = "cpu_compose_tests.rs"]
+mod scale_tests;

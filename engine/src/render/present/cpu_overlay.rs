@@ -5,8 +5,8 @@
 //!
 //! Why: on lavapipe the overlay's render pass cost about 59 ms of a 62 ms `queue.present` on
 //! the 2-core machine under load; rasterised here (row spans, one source value for untextured
-//! one-colour triangles) the stats overlay took 6–17 ms on the same loaded machine
-//! (docs/PERFORMANCE.md, "Presenting the CPU tracer's film").
+//! one-colour triangles, bands of rows on all cores) it costs a few milliseconds
+//! (docs/PERFORMANCE.md, "Presenting the CPU tracer's film", `bench present`).
 //!
 //! Owns: [`CpuOverlay`]: CPU copies of egui's textures (font atlas, images) kept in step with
 //! every overlay's texture changes, and the rasteriser. Render thread. Must not: run egui
@@ -14,15 +14,19 @@
 
 use std::collections::HashMap;
 
-use egui::epaint::{Primitive, Vertex};
+use egui::epaint::Primitive;
 use egui::{TextureId, TexturesDelta};
+use rayon::prelude::*;
+
+use super::cpu_overlay_raster::{Band, prepare};
 
 use crate::commit::Overlay;
 
-/// An egui texture on the CPU: gamma-encoded premultiplied RGBA, rows top to bottom.
-struct CpuTexture {
+/// An egui texture on the CPU: gamma-encoded premultiplied RGBA in [0, 1] (the 8-bit values
+/// over 255, divided once here rather than four times a sample), rows top to bottom.
+pub(super) struct CpuTexture {
     size: [usize; 2],
-    pixels: Vec<[u8; 4]>,
+    pixels: Vec<[f32; 4]>,
     nearest: bool,
 }
 
@@ -30,11 +34,11 @@ impl CpuTexture {
     fn texel(&self, x: i64, y: i64) -> [f32; 4] {
         let x = x.clamp(0, self.size[0] as i64 - 1) as usize;
         let y = y.clamp(0, self.size[1] as i64 - 1) as usize;
-        self.pixels[y * self.size[0] + x].map(|c| c as f32 / 255.0)
+        self.pixels[y * self.size[0] + x]
     }
 
     /// Clamped to the edge, bilinear unless the texture asks for nearest (egui's defaults).
-    fn sample(&self, u: f32, v: f32) -> [f32; 4] {
+    pub(super) fn sample(&self, u: f32, v: f32) -> [f32; 4] {
         let (x, y) = (u * self.size[0] as f32, v * self.size[1] as f32);
         if self.nearest {
             return self.texel(x.floor() as i64, y.floor() as i64);
@@ -63,20 +67,6 @@ pub struct CpuOverlay {
     textures: HashMap<TextureId, CpuTexture>,
 }
 
-/// Edge function of `p` against edge `a → b` (positive inside a counter-clockwise triangle
-/// in y-down pixels after the winding is normalised).
-fn edge(a: [f32; 2], b: [f32; 2], p: [f32; 2]) -> f32 {
-    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
-}
-
-/// Whether a pixel centre exactly on edge `a → b` belongs to this triangle: of two triangles
-/// sharing the edge (traversing it in opposite directions) exactly one takes it, so a
-/// translucent quad's diagonal is not blended twice.
-fn owns_ties(a: [f32; 2], b: [f32; 2]) -> bool {
-    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-    dy < 0.0 || (dy == 0.0 && dx > 0.0)
-}
-
 impl CpuOverlay {
     /// Applies the texture changes of `delta` (new textures and partial updates; frees come
     /// later, [`CpuOverlay::free`]).
@@ -88,7 +78,11 @@ impl CpuOverlay {
         {
             let egui::ImageData::Color(image) = &change.image;
             let nearest = change.options.magnification == egui::TextureFilter::Nearest;
-            let pixels: Vec<[u8; 4]> = image.pixels.iter().map(|c| c.to_array()).collect();
+            let pixels: Vec<[f32; 4]> = image
+                .pixels
+                .iter()
+                .map(|c| c.to_array().map(|c| c as f32 / 255.0))
+                .collect();
             match change.pos {
                 None => {
                     self.textures.insert(
@@ -125,10 +119,16 @@ impl CpuOverlay {
     }
 
     /// Draws `overlay` over `pixels` (rows of 4-byte pixels of `size`, B, G, R, A when `bgra`
-    /// else R, G, B, A, gamma-encoded).
+    /// else R, G, B, A, gamma-encoded). Each triangle is set up once (`cpu_overlay_raster.rs`),
+    /// then bands of rows are drawn on rayon's threads, every band all its triangles in
+    /// egui's order.
     pub fn draw(&self, pixels: &mut [u8], size: (u32, u32), bgra: bool, overlay: &Overlay) {
+        let (w, h) = (size.0 as usize, size.1 as usize);
+        if w == 0 || h == 0 || pixels.len() < w * h * 4 {
+            return;
+        }
+        let mut triangles = Vec::new();
         let ppp = overlay.pixels_per_point.max(0.1);
-        let (w, h) = (size.0 as i64, size.1 as i64);
         for clipped in &overlay.primitives {
             let Primitive::Mesh(mesh) = &clipped.primitive else {
                 continue;
@@ -136,113 +136,36 @@ impl CpuOverlay {
             let Some(texture) = self.textures.get(&mesh.texture_id) else {
                 continue;
             };
-            // The scissor rectangle egui-wgpu sets: rounded to pixels, inside the target.
-            let clip = clipped.clip_rect;
-            let x_lo = ((clip.min.x * ppp).round() as i64).clamp(0, w);
-            let y_lo = ((clip.min.y * ppp).round() as i64).clamp(0, h);
-            let x_hi = ((clip.max.x * ppp).round() as i64).clamp(0, w);
-            let y_hi = ((clip.max.y * ppp).round() as i64).clamp(0, h);
-            if x_lo >= x_hi || y_lo >= y_hi {
-                continue;
-            }
-            for tri in mesh.indices.chunks_exact(3) {
-                let Some(v) = tri
-                    .iter()
-                    .map(|&i| mesh.vertices.get(i as usize).copied())
-                    .collect::<Option<Vec<Vertex>>>()
-                else {
-                    continue;
-                };
-                let mut v = [v[0], v[1], v[2]];
-                let pos = |v: &Vertex| [v.pos.x * ppp, v.pos.y * ppp];
-                let mut p = [pos(&v[0]), pos(&v[1]), pos(&v[2])];
-                let mut area = edge(p[0], p[1], p[2]);
-                if area < 0.0 {
-                    v.swap(1, 2);
-                    p.swap(1, 2);
-                    area = -area;
-                }
-                if !(area > 0.0 && area.is_finite()) {
-                    continue;
-                }
-                let min_x = p.iter().map(|q| q[0]).fold(f32::INFINITY, f32::min);
-                let max_x = p.iter().map(|q| q[0]).fold(f32::NEG_INFINITY, f32::max);
-                let min_y = p.iter().map(|q| q[1]).fold(f32::INFINITY, f32::min);
-                let max_y = p.iter().map(|q| q[1]).fold(f32::NEG_INFINITY, f32::max);
-                let x0 = ((min_x - 0.5).floor() as i64).max(x_lo);
-                let x1 = ((max_x - 0.5).ceil() as i64 + 1).min(x_hi);
-                let y0 = ((min_y - 0.5).floor() as i64).max(y_lo);
-                let y1 = ((max_y - 0.5).ceil() as i64 + 1).min(y_hi);
-                let ties = [
-                    owns_ties(p[1], p[2]),
-                    owns_ties(p[2], p[0]),
-                    owns_ties(p[0], p[1]),
-                ];
-                let colors = v.map(|v| v.color.to_array().map(|c| c as f32 / 255.0));
-                // Untextured shapes (egui's white texel) with one colour: one source value.
-                let same_uv = v[1].uv == v[0].uv && v[2].uv == v[0].uv;
-                let same_color = v[1].color == v[0].color && v[2].color == v[0].color;
-                let constant = (same_uv && same_color).then(|| {
-                    let tex = texture.sample(v[0].uv.x, v[0].uv.y);
-                    std::array::from_fn::<f32, 4, _>(|k| colors[0][k] * tex[k])
-                });
-                if constant.is_some_and(|c| c == [0.0; 4]) {
-                    continue;
-                }
-                let order = if bgra { [2, 1, 0] } else { [0, 1, 2] };
-                let edges = [(p[1], p[2]), (p[2], p[0]), (p[0], p[1])];
-                for y in y0..y1 {
-                    let cy = y as f32 + 0.5;
-                    // The row's span: each edge function is linear in x; a pixel more on
-                    // each side, the exact test below decides.
-                    let (mut lo, mut hi) = (x0 as f32, x1 as f32);
-                    for (a, b) in edges {
-                        let slope = -(b[1] - a[1]);
-                        let at_zero = (b[0] - a[0]) * (cy - a[1]) + (b[1] - a[1]) * a[0];
-                        if slope > 0.0 {
-                            lo = lo.max(-at_zero / slope - 0.5 - 1.0);
-                        } else if slope < 0.0 {
-                            hi = hi.min(-at_zero / slope - 0.5 + 2.0);
-                        } else if at_zero < 0.0 {
-                            hi = lo;
-                        }
-                    }
-                    let (sx0, sx1) = ((lo.floor() as i64).max(x0), (hi.ceil() as i64).min(x1));
-                    for x in sx0..sx1 {
-                        let c = [x as f32 + 0.5, cy];
-                        let e = [
-                            edge(p[1], p[2], c),
-                            edge(p[2], p[0], c),
-                            edge(p[0], p[1], c),
-                        ];
-                        if (0..3).any(|k| e[k] < 0.0 || (e[k] == 0.0 && !ties[k])) {
-                            continue;
-                        }
-                        let src = match constant {
-                            Some(src) => src,
-                            None => {
-                                let l = e.map(|e| e / area);
-                                let u = l[0] * v[0].uv.x + l[1] * v[1].uv.x + l[2] * v[2].uv.x;
-                                let t = l[0] * v[0].uv.y + l[1] * v[1].uv.y + l[2] * v[2].uv.y;
-                                let tex = texture.sample(u, t);
-                                std::array::from_fn(|k| {
-                                    (l[0] * colors[0][k]
-                                        + l[1] * colors[1][k]
-                                        + l[2] * colors[2][k])
-                                        * tex[k]
-                                })
-                            }
-                        };
-                        let at = ((y * w + x) * 4) as usize;
-                        let px = &mut pixels[at..at + 4];
-                        for (k, &o) in order.iter().enumerate() {
-                            let dst = px[o] as f32 / 255.0;
-                            let out = src[k] + dst * (1.0 - src[3]);
-                            px[o] = (out.clamp(0.0, 1.0) * 255.0 + 0.5) as u8;
-                        }
-                    }
-                }
-            }
+            prepare(mesh, texture, clipped.clip_rect, ppp, size, &mut triangles);
         }
+        let (Some(top), Some(bottom)) = (
+            triangles.iter().map(|t| t.rows.0).min(),
+            triangles.iter().map(|t| t.rows.1).max(),
+        ) else {
+            return;
+        };
+        let order = if bgra { [2, 1, 0] } else { [0, 1, 2] };
+        let band = BAND_ROWS * w * 4;
+        pixels[..w * h * 4]
+            .par_chunks_mut(band)
+            .enumerate()
+            .skip(top as usize / BAND_ROWS)
+            .take((bottom as usize).div_ceil(BAND_ROWS) - top as usize / BAND_ROWS)
+            .for_each(|(i, rows)| {
+                let y0 = (i * BAND_ROWS) as i64;
+                let y1 = y0 + (rows.len() / (w * 4)) as i64;
+                let mut target = Band {
+                    pixels: rows,
+                    width: w as i64,
+                    rows: (y0, y1),
+                    order,
+                };
+                for t in &triangles {
+                    t.draw(&mut target);
+                }
+            });
     }
 }
+
+/// Window rows a rayon task draws.
+const BAND_ROWS: usize = 16;

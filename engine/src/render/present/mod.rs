@@ -4,14 +4,16 @@
 
 mod compose;
 mod cpu_compose;
+mod cpu_compose_rows;
 mod cpu_overlay;
+mod cpu_overlay_raster;
 mod overlay;
 mod presenter;
 mod readback;
 mod surface;
 
 pub use compose::{FrameComposer, FrameTarget};
-pub use cpu_compose::{catmull_rom, compose_host_film};
+pub use cpu_compose::{HostCompose, catmull_rom, compose_host_film};
 pub use cpu_overlay::CpuOverlay;
 pub use overlay::{OverlayPainter, TexturesToFree};
 pub use presenter::{Presented, Presenter};

@@ -15,7 +15,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use super::compose::FrameComposer;
-use super::cpu_compose::compose_host_film;
+use super::cpu_compose::HostCompose;
 use super::cpu_overlay::CpuOverlay;
 use super::readback::{PendingReadback, Screenshot, encode_readback};
 use super::surface::{Acquired, PresentTarget, WindowSurface};
@@ -48,6 +48,8 @@ pub struct Presenter {
     composer: FrameComposer,
     /// egui's textures on the CPU, for the host-film path's overlay.
     cpu_overlay: CpuOverlay,
+    /// The host-film path's compose, its taps and buffers kept between frames.
+    host_compose: HostCompose,
 }
 
 impl Presenter {
@@ -62,6 +64,7 @@ impl Presenter {
                 surface,
                 composer,
                 cpu_overlay,
+                host_compose: HostCompose::default(),
             },
             context,
         ))
@@ -148,7 +151,9 @@ impl Presenter {
                 format,
                 wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
             );
-            let mut pixels = compose_host_film(host, size, &request.tonemap, bgra);
+            let pixels = self
+                .host_compose
+                .compose(host, size, &request.tonemap, bgra);
             log::debug!(
                 "present ms: cpu compose {:.2}",
                 started.elapsed().as_secs_f64() * 1e3
@@ -157,7 +162,7 @@ impl Presenter {
             // an sRGB one blends in linear space, which the device's painter does below.
             let cpu_overlay = !format.is_srgb();
             if let (true, Some(overlay)) = (cpu_overlay, overlay) {
-                self.cpu_overlay.draw(&mut pixels, size, bgra, overlay);
+                self.cpu_overlay.draw(pixels, size, bgra, overlay);
                 log::debug!(
                     "present ms: cpu overlay {:.2}",
                     started.elapsed().as_secs_f64() * 1e3
@@ -165,7 +170,7 @@ impl Presenter {
             }
             context.queue.write_texture(
                 texture.texture.as_image_copy(),
-                &pixels,
+                pixels,
                 wgpu::TexelCopyBufferLayout {
                     offset: 0,
                     bytes_per_row: Some(4 * size.0),

@@ -1,0 +1,231 @@
+//! The CPU overlay's triangles (`cpu_overlay.rs`): set up once per frame ([`prepare`]: pixel
+//! positions, winding, scissor, bounding rows and columns, one source value where it cannot
+//! vary) and drawn into a band of window rows ([`Triangle::draw`]), as egui-wgpu draws into a
+//! gamma-space target: vertex colour × texture (premultiplied, gamma-encoded, interpolated in
+//! gamma space), `dst = src + dst · (1 − src.a)`, pixel centres on shared edges taken once.
+//!
+//! Owns: the per-triangle setup and the span loop. Any thread (bands run on rayon's workers).
+//! Must not: keep state between frames or touch the device.
+
+use egui::epaint::{Mesh, Vertex};
+
+use super::cpu_overlay::CpuTexture;
+
+/// Edge function of `p` against edge `a → b` (positive inside a counter-clockwise triangle
+/// in y-down pixels after the winding is normalised).
+fn edge(a: [f32; 2], b: [f32; 2], p: [f32; 2]) -> f32 {
+    (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+}
+
+/// Whether a pixel centre exactly on edge `a → b` belongs to this triangle: of two triangles
+/// sharing the edge (traversing it in opposite directions) exactly one takes it, so a
+/// translucent quad's diagonal is not blended twice.
+fn owns_ties(a: [f32; 2], b: [f32; 2]) -> bool {
+    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+    dy < 0.0 || (dy == 0.0 && dx > 0.0)
+}
+
+/// Where a triangle's source value comes from.
+#[derive(Clone, Copy)]
+enum Source {
+    /// One value everywhere (one colour, one texel): egui's plain shapes.
+    Constant([f32; 4]),
+    /// One texel, colours interpolated: egui's anti-aliasing feathers and shadows.
+    Texel([f32; 4]),
+    /// Texture sampled per pixel: glyphs and images.
+    Sampled,
+}
+
+/// One triangle ready to draw, in window pixels (y down).
+pub(super) struct Triangle<'a> {
+    texture: &'a CpuTexture,
+    p: [[f32; 2]; 3],
+    area: f32,
+    uv: [[f32; 2]; 3],
+    colors: [[f32; 4]; 3],
+    ties: [bool; 3],
+    source: Source,
+    /// Columns `[x0, x1)` and rows `[y0, y1)` it may touch, inside the scissor rectangle.
+    columns: (i64, i64),
+    pub(super) rows: (i64, i64),
+}
+
+/// A band of window rows to draw into: `pixels` holds rows `rows.0 .. rows.1` of a window
+/// `width` pixels wide; `order` maps R, G, B to byte positions.
+pub(super) struct Band<'a> {
+    pub pixels: &'a mut [u8],
+    pub width: i64,
+    pub rows: (i64, i64),
+    pub order: [usize; 3],
+}
+
+/// Appends the triangles of `mesh` (egui points; `ppp` pixels per point) that can touch the
+/// window of `size` pixels inside `clip` (egui points, rounded to pixels as egui-wgpu's
+/// scissor) to `out`. Degenerate, non-finite and fully transparent constant ones are dropped.
+pub(super) fn prepare<'a>(
+    mesh: &Mesh,
+    texture: &'a CpuTexture,
+    clip: egui::Rect,
+    ppp: f32,
+    size: (u32, u32),
+    out: &mut Vec<Triangle<'a>>,
+) {
+    let (w, h) = (size.0 as i64, size.1 as i64);
+    let x_lo = ((clip.min.x * ppp).round() as i64).clamp(0, w);
+    let y_lo = ((clip.min.y * ppp).round() as i64).clamp(0, h);
+    let x_hi = ((clip.max.x * ppp).round() as i64).clamp(0, w);
+    let y_hi = ((clip.max.y * ppp).round() as i64).clamp(0, h);
+    if x_lo >= x_hi || y_lo >= y_hi {
+        return;
+    }
+    for tri in mesh.indices.chunks_exact(3) {
+        let vertex = |k: usize| mesh.vertices.get(tri[k] as usize).copied();
+        let (Some(a), Some(b), Some(c)) = (vertex(0), vertex(1), vertex(2)) else {
+            continue;
+        };
+        let mut v: [Vertex; 3] = [a, b, c];
+        let pos = |v: &Vertex| [v.pos.x * ppp, v.pos.y * ppp];
+        let mut p = [pos(&v[0]), pos(&v[1]), pos(&v[2])];
+        let mut area = edge(p[0], p[1], p[2]);
+        if area < 0.0 {
+            v.swap(1, 2);
+            p.swap(1, 2);
+            area = -area;
+        }
+        if !(area > 0.0 && area.is_finite()) {
+            continue;
+        }
+        let min_x = p.iter().map(|q| q[0]).fold(f32::INFINITY, f32::min);
+        let max_x = p.iter().map(|q| q[0]).fold(f32::NEG_INFINITY, f32::max);
+        let min_y = p.iter().map(|q| q[1]).fold(f32::INFINITY, f32::min);
+        let max_y = p.iter().map(|q| q[1]).fold(f32::NEG_INFINITY, f32::max);
+        let x0 = ((min_x - 0.5).floor() as i64).max(x_lo);
+        let x1 = ((max_x - 0.5).ceil() as i64 + 1).min(x_hi);
+        let y0 = ((min_y - 0.5).floor() as i64).max(y_lo);
+        let y1 = ((max_y - 0.5).ceil() as i64 + 1).min(y_hi);
+        if x0 >= x1 || y0 >= y1 {
+            continue;
+        }
+        let colors = v.map(|v| v.color.to_array().map(|c| c as f32 / 255.0));
+        let same_uv = v[1].uv == v[0].uv && v[2].uv == v[0].uv;
+        let same_color = v[1].color == v[0].color && v[2].color == v[0].color;
+        let source = if same_uv {
+            let tex = texture.sample(v[0].uv.x, v[0].uv.y);
+            if same_color {
+                let src = std::array::from_fn(|k| colors[0][k] * tex[k]);
+                if src == [0.0; 4] {
+                    continue;
+                }
+                Source::Constant(src)
+            } else {
+                Source::Texel(tex)
+            }
+        } else {
+            Source::Sampled
+        };
+        out.push(Triangle {
+            texture,
+            p,
+            area,
+            uv: v.map(|v| [v.uv.x, v.uv.y]),
+            colors,
+            ties: [
+                owns_ties(p[1], p[2]),
+                owns_ties(p[2], p[0]),
+                owns_ties(p[0], p[1]),
+            ],
+            source,
+            columns: (x0, x1),
+            rows: (y0, y1),
+        });
+    }
+}
+
+impl Triangle<'_> {
+    /// Blends the triangle into the rows of `band` it covers.
+    pub(super) fn draw(&self, band: &mut Band<'_>) {
+        let (y0, y1) = (self.rows.0.max(band.rows.0), self.rows.1.min(band.rows.1));
+        let (x0, x1) = self.columns;
+        let p = self.p;
+        let edges = [(p[1], p[2]), (p[2], p[0]), (p[0], p[1])];
+        // A constant source blends each 8-bit value the same way: a table per channel when
+        // the triangle is large enough to repay building it (same arithmetic, same bytes).
+        let table = match self.source {
+            Source::Constant(src) if (y1 - y0) * (x1 - x0) > 1024 => {
+                Some(std::array::from_fn::<[u8; 256], 3, _>(|k| {
+                    std::array::from_fn(|d| blend(src[k], src[3], d as u8))
+                }))
+            }
+            _ => None,
+        };
+        for y in y0..y1 {
+            let cy = y as f32 + 0.5;
+            // The row's span: each edge function is linear in x; a pixel more on each side,
+            // the exact test below decides.
+            let (mut lo, mut hi) = (x0 as f32, x1 as f32);
+            for (a, b) in edges {
+                let slope = -(b[1] - a[1]);
+                let at_zero = (b[0] - a[0]) * (cy - a[1]) + (b[1] - a[1]) * a[0];
+                if slope > 0.0 {
+                    lo = lo.max(-at_zero / slope - 0.5 - 1.0);
+                } else if slope < 0.0 {
+                    hi = hi.min(-at_zero / slope - 0.5 + 2.0);
+                } else if at_zero < 0.0 {
+                    hi = lo;
+                }
+            }
+            let (sx0, sx1) = ((lo.floor() as i64).max(x0), (hi.ceil() as i64).min(x1));
+            let row = ((y - band.rows.0) * band.width * 4) as usize;
+            for x in sx0..sx1 {
+                let c = [x as f32 + 0.5, cy];
+                let e = [
+                    edge(p[1], p[2], c),
+                    edge(p[2], p[0], c),
+                    edge(p[0], p[1], c),
+                ];
+                if (0..3).any(|k| e[k] < 0.0 || (e[k] == 0.0 && !self.ties[k])) {
+                    continue;
+                }
+                let at = row + (x * 4) as usize;
+                let Some(px) = band.pixels.get_mut(at..at + 4) else {
+                    continue;
+                };
+                if let Some(table) = &table {
+                    for (k, &o) in band.order.iter().enumerate() {
+                        px[o] = table[k][px[o] as usize];
+                    }
+                    continue;
+                }
+                let src = self.source_at(e);
+                for (k, &o) in band.order.iter().enumerate() {
+                    px[o] = blend(src[k], src[3], px[o]);
+                }
+            }
+        }
+    }
+
+    /// The premultiplied source at a pixel whose edge functions are `e`.
+    fn source_at(&self, e: [f32; 3]) -> [f32; 4] {
+        let colors = &self.colors;
+        let l = e.map(|e| e / self.area);
+        let tex = match self.source {
+            Source::Constant(src) => return src,
+            Source::Texel(tex) => tex,
+            Source::Sampled => {
+                let uv = &self.uv;
+                let u = l[0] * uv[0][0] + l[1] * uv[1][0] + l[2] * uv[2][0];
+                let t = l[0] * uv[0][1] + l[1] * uv[1][1] + l[2] * uv[2][1];
+                self.texture.sample(u, t)
+            }
+        };
+        std::array::from_fn(|k| {
+            (l[0] * colors[0][k] + l[1] * colors[1][k] + l[2] * colors[2][k]) * tex[k]
+        })
+    }
+}
+
+/// One channel blended: `src + dst · (1 − alpha)` in [0, 1], back to 8 bits.
+fn blend(src: f32, alpha: f32, dst: u8) -> u8 {
+    let out = src + dst as f32 / 255.0 * (1.0 - alpha);
+    (out.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
