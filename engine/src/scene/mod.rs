@@ -18,6 +18,7 @@ pub mod lights;
 mod lines;
 pub mod materials;
 mod memory;
+pub mod mips;
 pub mod optics;
 mod sky_table;
 pub mod surface;
