@@ -75,6 +75,8 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var last_position = vec3<f32>(0.0);
     var last_normal = vec3<f32>(0.0);
     var bounce = 0u;
+    // The path's ray cone: picks the texture levels at each hit.
+    var cone = cone_camera();
     var shadows: ShadowRays;
     shadows.count = 0u;
     var shadow_index = 0u;
@@ -137,7 +139,13 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             break;
         }
         let surface = resolve_surface(hit, ray.direction);
-        let shading = shade_surface(surface);
+        cone.width += cone.spread * max(hit.t, 0.0);
+        var lod_random = 0.0;
+        if (reads_levels(materials[surface.material])) {
+            lod_random = rng_next(&rng);
+        }
+        let lod = cone_lod(cone, surface.uv_density, surface.geometric_normal, ray.direction, lod_random);
+        let shading = shade_surface(surface, lod);
         let wo = -ray.direction;
         let front = dot(wo, surface.geometric_normal) > 0.0;
         if (!front && any(shading.absorption != vec3<f32>(0.0))) {
@@ -207,6 +215,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             } else {
                 last_pdf = s.pdf;
                 last_delta = s.delta;
+                cone = cone_bounce(cone, s.pdf, s.delta);
                 camera_chain = camera_chain && s.delta;
                 last_position = surface.position;
                 last_normal = ns;

@@ -257,12 +257,17 @@ const _: () = assert!(size_of::<GpuMaterial>() == 96);
 pub const WRAP_REPEAT: u32 = 0;
 pub const WRAP_CLAMP: u32 = 1;
 pub const WRAP_MIRROR: u32 = 2;
-/// `GpuTexture::flags` bit 4: nearest filtering (otherwise bilinear).
+/// `GpuTexture::flags` bit 4: nearest filtering on level 0 (otherwise bilinear on the level the
+/// ray cone picks).
 pub const TEXTURE_FLAG_NEAREST: u32 = 1 << 4;
+/// `GpuTexture::flags` bits 8–12: the number of mip levels (0 reads as 1: level 0 only).
+pub const TEXTURE_LEVELS_SHIFT: u32 = 8;
+pub const TEXTURE_LEVELS_MASK: u32 = 31;
 
-/// One texture in the shared texel buffer: `width × height` texels from `texel_offset`, rows top
-/// to bottom, each texel four f16 values (linear RGBA, sRGB already decoded) packed in two u32.
-/// 16 bytes.
+/// One texture in the shared texel buffer: its mip chain from `texel_offset`, level 0
+/// (`width × height`) first, then each level of floor-halved size down to 1×1
+/// (`scene/mips.rs`); rows top to bottom, each texel four f16 values (linear RGBA, sRGB already
+/// decoded) packed in two u32. 16 bytes.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq, Eq)]
 pub struct GpuTexture {

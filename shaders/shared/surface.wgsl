@@ -6,6 +6,8 @@ struct Surface {
     shading_normal: vec3<f32>,
     tangent: vec4<f32>,
     uv: vec2<f32>,
+    // UV area per world area of the triangle, 1/m² (0 when degenerate).
+    uv_density: f32,
     material: u32,
     emits: bool,
 }
@@ -69,21 +71,35 @@ fn resolve_surface(hit: Hit, direction: vec3<f32>) -> Surface {
     let t_object = a.tangent.xyz * w + b.tangent.xyz * hit.u + c.tangent.xyz * hit.v;
     let tangent = vec4<f32>(normalize_or_zero(world_vector(inst, t_object)), a.tangent.w);
     let uv = vec2<f32>(a.u, a.v) * w + vec2<f32>(b.u, b.v) * hit.u + vec2<f32>(c.u, c.v) * hit.v;
+    let world_area = length(cross(world_vector(inst, pb - pa), world_vector(inst, pc - pa)));
+    let duv1 = vec2<f32>(b.u - a.u, b.v - a.v);
+    let duv2 = vec2<f32>(c.u - a.u, c.v - a.v);
+    let uv_area = abs(duv1.x * duv2.y - duv1.y * duv2.x);
+    var uv_density = 0.0;
+    if (world_area > 0.0 && uv_area < 1e30) {
+        uv_density = uv_area / world_area;
+    }
     var material = tri.material;
     if (inst.material_override != INVALID) {
         material = inst.material_override;
     }
-    return Surface(position, ng, ns, tangent, uv, material, (inst.flags & INSTANCE_FLAG_EMISSION_OFF) == 0u);
+    return Surface(position, ng, ns, tangent, uv, uv_density, material, (inst.flags & INSTANCE_FLAG_EMISSION_OFF) == 0u);
 }
 
-fn shade_surface(s: Surface) -> Shading {
+// Whether material m reads a mip-mapped lookup: only then does a path draw the level's random.
+fn reads_levels(m: GpuMaterial) -> bool {
+    return m.base_color_texture != INVALID || m.metal_rough_texture != INVALID || m.normal_texture != INVALID;
+}
+
+// Emission is read on level 0, as light sampling reads it.
+fn shade_surface(s: Surface, lod: Lod) -> Shading {
     let m = materials[s.material];
-    let base = m.base_color * sample_texture(m.base_color_texture, s.uv);
+    let base = m.base_color * sample_texture_lod(m.base_color_texture, s.uv, lod);
     var emission = vec3<f32>(0.0);
     if (s.emits) {
         emission = m.emission.xyz * sample_texture(m.emission_texture, s.uv).xyz;
     }
-    let mr = sample_texture(m.metal_rough_texture, s.uv);
+    let mr = sample_texture_lod(m.metal_rough_texture, s.uv, lod);
     let roughness = clamp(m.roughness * mr.y, 0.0, 1.0);
     var ns = s.shading_normal;
     let t = s.tangent;
@@ -91,7 +107,7 @@ fn shade_surface(s: Surface) -> Shading {
         let n = ns;
         let tangent = normalize_or_zero(t.xyz - n * dot(n, t.xyz));
         let bitangent = cross(n, tangent) * select(1.0, -1.0, t.w < 0.0);
-        let tex = sample_texture(m.normal_texture, s.uv);
+        let tex = sample_texture_lod(m.normal_texture, s.uv, lod);
         let xy = (tex.xy * 2.0 - vec2<f32>(1.0)) * m.normal_scale;
         let z = max(tex.z * 2.0 - 1.0, 0.0);
         let mapped = normalize_or_zero(tangent * xy.x + bitangent * xy.y + n * z);

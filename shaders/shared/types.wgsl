@@ -27,6 +27,8 @@ const WRAP_REPEAT: u32 = 0u;
 const WRAP_CLAMP: u32 = 1u;
 const WRAP_MIRROR: u32 = 2u;
 const TEXTURE_FLAG_NEAREST: u32 = 16u;
+const TEXTURE_LEVELS_SHIFT: u32 = 8u;
+const TEXTURE_LEVELS_MASK: u32 = 31u;
 
 const METHOD_NEE: u32 = 1u;
 const METHOD_MIS: u32 = 2u;

@@ -20,6 +20,7 @@ mod headless;
 mod hero;
 mod layout;
 mod many_lights;
+mod mips;
 mod present;
 mod reflect_kit;
 mod reflect_record;

@@ -11,8 +11,9 @@ use crate::assets::{Material, MaterialKind, Model, Texture, Wrap};
 use crate::layout::{
     GpuMaterial, GpuTexture, INVALID, MATERIAL_CONDUCTOR, MATERIAL_DIELECTRIC, MATERIAL_DIFFUSE,
     MATERIAL_FLAG_LINE, MATERIAL_FLAG_TWO_SIDED_EMISSION, MATERIAL_METAL_ROUGH,
-    TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR, WRAP_REPEAT,
+    TEXTURE_FLAG_NEAREST, TEXTURE_LEVELS_SHIFT, WRAP_CLAMP, WRAP_MIRROR, WRAP_REPEAT,
 };
+use crate::scene::mips;
 
 fn wrap_bits(w: Wrap) -> u32 {
     match w {
@@ -28,9 +29,9 @@ pub fn pack_texel(t: [f16; 4]) -> [u32; 2] {
     [bits[0] | (bits[1] << 16), bits[2] | (bits[3] << 16)]
 }
 
-/// Most texels all textures together may hold: 16 Mi texels of 8 bytes = 128 MiB, the largest
-/// storage binding WebGPU guarantees and what lavapipe offers. Scenes over budget have their
-/// largest textures halved (box filter) until they fit, with a warning.
+/// Most texels all textures together may hold, mip chains included: 16 Mi texels of 8 bytes =
+/// 128 MiB, the largest storage binding WebGPU guarantees and what lavapipe offers. Scenes over
+/// budget have their largest textures halved (box filter) until they fit, with a warning.
 pub const TEXEL_BUDGET: usize = 16 << 20;
 
 /// `t` halved in each dimension (2×2 box filter; odd edges repeat the last texel).
@@ -66,7 +67,10 @@ fn textures_within_budget(models: &[Model]) -> Vec<Vec<std::borrow::Cow<'_, Text
         .map(|m| m.textures.iter().map(std::borrow::Cow::Borrowed).collect())
         .collect();
     let total = |all: &Vec<Vec<std::borrow::Cow<'_, Texture>>>| -> usize {
-        all.iter().flatten().map(|t| t.texels.len()).sum()
+        all.iter()
+            .flatten()
+            .map(|t| mips::chain_len(t.width, t.height))
+            .sum()
     };
     while total(&all) > TEXEL_BUDGET {
         let Some((m, i)) = all
@@ -108,6 +112,18 @@ pub fn pack_textures(models: &[Model]) -> (Vec<GpuTexture>, Vec<[u32; 2]>, Vec<u
             if texture.nearest {
                 flags |= TEXTURE_FLAG_NEAREST;
             }
+            // Nearest (pixel-art) textures are read on level 0 only: no chain.
+            let lower = if texture.nearest {
+                Vec::new()
+            } else {
+                mips::lower_levels(texture.width, texture.height, &texture.texels)
+            };
+            let levels = if lower.is_empty() {
+                1
+            } else {
+                mips::level_count(texture.width, texture.height)
+            };
+            flags |= levels << TEXTURE_LEVELS_SHIFT;
             table.push(GpuTexture {
                 texel_offset: texels.len() as u32,
                 width: texture.width,
@@ -119,6 +135,7 @@ pub fn pack_textures(models: &[Model]) -> (Vec<GpuTexture>, Vec<[u32; 2]>, Vec<u
                 texels.push(pack_texel(*t));
                 sum += luminance(Vec3::new(t[0].to_f32(), t[1].to_f32(), t[2].to_f32())) as f64;
             }
+            texels.extend(lower.iter().map(|t| pack_texel(*t)));
             means.push((sum / texture.texels.len().max(1) as f64) as f32);
         }
     }

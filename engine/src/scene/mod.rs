@@ -18,6 +18,7 @@ pub mod lights;
 mod lines;
 pub(crate) mod materials;
 mod memory;
+pub mod mips;
 pub(crate) mod optics;
 mod sky_table;
 pub(crate) mod surface;

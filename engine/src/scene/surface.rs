@@ -26,6 +26,9 @@ pub struct Surface {
     /// World tangent (xyz) and bitangent sign (w); zero when there is no tangent frame.
     pub tangent: Vec4,
     pub uv: Vec2,
+    /// The triangle's UV area per world area, 1/m² (0 when either is degenerate): with a ray
+    /// cone's width it gives the texture level of detail (`render/cpu/cone.rs`).
+    pub uv_density: f32,
     pub material: u32,
     /// False when the instance's light group is off (`INSTANCE_FLAG_EMISSION_OFF`).
     pub emits: bool,
@@ -83,6 +86,15 @@ pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
         .normalize_or_zero()
         .extend(a.tangent[3]);
     let uv = Vec2::new(a.u, a.v) * w + Vec2::new(b.u, b.v) * u + Vec2::new(c.u, c.v) * v;
+    let world_area = world_vector(inst, pb - pa)
+        .cross(world_vector(inst, pc - pa))
+        .length();
+    let uv_area = (Vec2::new(b.u - a.u, b.v - a.v)).perp_dot(Vec2::new(c.u - a.u, c.v - a.v));
+    let uv_density = if world_area > 0.0 && uv_area.is_finite() {
+        uv_area.abs() / world_area
+    } else {
+        0.0
+    };
     let material = if inst.material_override != INVALID {
         inst.material_override
     } else {
@@ -94,6 +106,7 @@ pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
         shading_normal,
         tangent,
         uv,
+        uv_density,
         material,
         emits: inst.flags & INSTANCE_FLAG_EMISSION_OFF == 0,
     }

@@ -53,7 +53,8 @@ fn instancing_shares_storage_and_texels_cost_eight_bytes() -> anyhow::Result<()>
     let t = RenderScene::build(&textured).memory();
     assert_eq!(
         t.textures,
-        m.textures + 64 * 64 * 8 + size_of::<GpuTexture>()
+        m.textures + candela::scene::mips::chain_len(64, 64) * 8 + size_of::<GpuTexture>(),
+        "a texture stores its whole mip chain: 64² + 32² + … + 1² texels"
     );
     Ok(())
 }

@@ -267,7 +267,13 @@ fn light_emission(scene: &RenderScene, instance: u32, triangle: u32, bary: Vec2)
             Vec2::new(v.u, v.v)
         };
         let uv = uv(0) * (1.0 - bary.x - bary.y) + uv(1) * bary.x + uv(2) * bary.y;
-        emission *= super::texture::sample(&scene.textures, &scene.texels, m.emission_texture, uv)
+        emission *= super::texture::sample(
+            &scene.textures,
+            &scene.texels,
+            m.emission_texture,
+            uv,
+            super::texture::Lod::FINEST,
+        )
             .truncate();
     }
     (

@@ -63,7 +63,7 @@ fn guide_pixel(
             break;
         };
         let surface = resolve(scene, &hit, ray.direction);
-        let shading = shade(scene, &surface);
+        let shading = shade(scene, &surface, super::texture::Lod::FINEST);
         let wo = -ray.direction;
         let mut n = shading.shading_normal;
         if n.dot(wo) < 0.0 {

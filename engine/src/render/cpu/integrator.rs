@@ -19,7 +19,8 @@ use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
 use super::sampling::{basis, concentric_disc, to_local, to_world};
-use super::surface::{offset_origin, resolve, shade};
+use super::cone::Cone;
+use super::surface::{offset_origin, reads_levels, resolve, shade};
 use crate::layout::{
     GpuFrameUniforms, GpuLine, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, SKY_GRADIENT,
     SKY_PHYSICAL,
@@ -127,6 +128,8 @@ pub fn radiance(
     let sun_radiance = Vec3::from(u.sun_radiance);
     let sun_terminator = Vec3::from(u.sun_terminator);
     let mut bounce = 0u32;
+    // The path's ray cone: picks the texture levels at each hit.
+    let mut cone = Cone::camera(u);
     // The path so far is the camera ray and perfect mirror or glass turns: it sees line
     // emitters prefiltered over the pixel, `travelled` metres from the camera.
     let mut camera_chain = !lines.is_empty();
@@ -162,7 +165,19 @@ pub fn radiance(
             break;
         };
         let surface = resolve(scene, &hit, ray.direction);
-        let shading = shade(scene, &surface);
+        cone.travel(hit.t);
+        let lod_random = if reads_levels(&scene.materials[surface.material as usize]) {
+            rng.next_f32()
+        } else {
+            0.0
+        };
+        let lod = cone.lod(
+            surface.uv_density,
+            surface.geometric_normal,
+            ray.direction,
+            lod_random,
+        );
+        let shading = shade(scene, &surface, lod);
         let wo = -ray.direction;
         let front = wo.dot(surface.geometric_normal) > 0.0;
         if !front && shading.absorption != Vec3::ZERO {
@@ -251,6 +266,7 @@ pub fn radiance(
         }
         last_pdf = s.pdf;
         last_delta = s.delta;
+        cone.bounce(s.pdf, s.delta);
         camera_chain &= s.delta;
         last_position = surface.position;
         last_normal = ns;

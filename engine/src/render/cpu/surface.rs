@@ -8,7 +8,7 @@
 use glam::{Vec2, Vec3, Vec4};
 
 use super::bsdf::Bsdf;
-use super::texture;
+use super::texture::{self, Lod};
 use crate::layout::{GpuMaterial, INVALID, MATERIAL_DIELECTRIC, MATERIAL_METAL_ROUGH};
 use crate::scene::RenderScene;
 pub use crate::scene::surface::{Surface, resolve};
@@ -23,13 +23,28 @@ pub struct Shading {
     pub two_sided_emission: bool,
 }
 
-/// Applies `material`'s textures at `surface`.
-pub fn shade(scene: &RenderScene, surface: &Surface) -> Shading {
+/// Whether `m` reads a mip-mapped lookup (base colour, metallic-roughness or normal texture):
+/// only then does a path draw the random number that picks between levels.
+pub fn reads_levels(m: &GpuMaterial) -> bool {
+    m.base_color_texture != INVALID || m.metal_rough_texture != INVALID || m.normal_texture != INVALID
+}
+
+/// Applies `material`'s textures at `surface`, on the mip levels `lod` picks. Emission is read
+/// on level 0, as light sampling reads it (`direct.rs`), so both MIS strategies see one emitter.
+pub fn shade(scene: &RenderScene, surface: &Surface, lod: Lod) -> Shading {
     let m: &GpuMaterial = &scene.materials[surface.material as usize];
-    let tex = |index: u32| texture::sample(&scene.textures, &scene.texels, index, surface.uv);
+    let tex = |index: u32| texture::sample(&scene.textures, &scene.texels, index, surface.uv, lod);
     let base = Vec4::from(m.base_color) * tex(m.base_color_texture);
     let emission = if surface.emits {
-        Vec3::from_slice(&m.emission[..3]) * tex(m.emission_texture).truncate()
+        Vec3::from_slice(&m.emission[..3])
+            * texture::sample(
+                &scene.textures,
+                &scene.texels,
+                m.emission_texture,
+                surface.uv,
+                Lod::FINEST,
+            )
+            .truncate()
     } else {
         Vec3::ZERO
     };

@@ -1,13 +1,57 @@
 //! Texture lookups of the CPU tracer (twin: `shaders/shared/texture.wgsl`).
 //!
-//! Owns: wrapping, nearest and bilinear filtering over the packed f16 texel buffer.
+//! Owns: wrapping, nearest and bilinear filtering over the packed f16 texel buffer, and the
+//! mip level a ray cone's [`Lod`] picks (Akenine-Möller et al., "Texture Level of Detail
+//! Strategies for Real-Time Ray Tracing", Ray Tracing Gems ch. 20): level ⌊λ⌋ or ⌊λ⌋ + 1,
+//! chosen at random in proportion to λ's fraction, then bilinear — trilinear in expectation.
 //! Texture coordinates follow glTF: (0, 0) is the top-left of the image, v grows downward.
-//! Must not: decode image files.
+//! Must not: decode image files or build mip chains (`scene/mips.rs`).
 
 use glam::{Vec2, Vec4};
 use half::f16;
 
-use crate::layout::{GpuTexture, TEXTURE_FLAG_NEAREST, WRAP_CLAMP, WRAP_MIRROR};
+use crate::layout::{
+    GpuTexture, TEXTURE_FLAG_NEAREST, TEXTURE_LEVELS_MASK, TEXTURE_LEVELS_SHIFT, WRAP_CLAMP,
+    WRAP_MIRROR,
+};
+use crate::scene::mips::level_size;
+
+/// Where a lookup's footprint lies on the mip chain, before the texture's own size is known.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lod {
+    /// log2 of the footprint in texture space, in units of the whole texture's side: λ of a
+    /// `w × h` texture is `footprint + ½·log2(w·h)`. −∞ reads level 0.
+    pub footprint: f32,
+    /// Uniform in [0, 1): picks between the two nearest levels.
+    pub random: f32,
+}
+
+impl Lod {
+    /// Always level 0 (light sampling, the denoiser's guides, tests).
+    pub const FINEST: Lod = Lod {
+        footprint: f32::NEG_INFINITY,
+        random: 0.0,
+    };
+
+    /// The level of texture `t` (`levels` of them): ⌊λ⌋ or ⌊λ⌋ + 1 with probability frac(λ).
+    pub fn level(&self, t: &GpuTexture, levels: u32) -> u32 {
+        let lambda = self.footprint + 0.5 * ((t.width as f32) * (t.height as f32)).log2();
+        if lambda.is_nan() || lambda <= 0.0 || levels <= 1 {
+            return 0;
+        }
+        let top = (levels - 1) as f32;
+        if lambda >= top {
+            return levels - 1;
+        }
+        let floor = lambda.floor();
+        floor as u32 + u32::from(self.random < lambda - floor)
+    }
+}
+
+/// Number of mip levels of `t` (at least 1).
+pub fn levels(t: &GpuTexture) -> u32 {
+    ((t.flags >> TEXTURE_LEVELS_SHIFT) & TEXTURE_LEVELS_MASK).max(1)
+}
 
 fn unpack(t: [u32; 2]) -> Vec4 {
     let h = |bits: u32| f16::from_bits(bits as u16).to_f32();
@@ -34,8 +78,15 @@ fn wrap(i: i32, size: i32, mode: u32) -> i32 {
     }
 }
 
-/// Samples texture `index` at `uv`; returns opaque white for `INVALID` or a broken index.
-pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2) -> Vec4 {
+/// Samples texture `index` at `uv` on the level `lod` picks (nearest textures: level 0);
+/// returns opaque white for `INVALID` or a broken index.
+pub fn sample(
+    textures: &[GpuTexture],
+    texels: &[[u32; 2]],
+    index: u32,
+    uv: Vec2,
+    lod: Lod,
+) -> Vec4 {
     let Some(t) = textures.get(index as usize) else {
         return Vec4::ONE;
     };
@@ -43,9 +94,20 @@ pub fn sample(textures: &[GpuTexture], texels: &[[u32; 2]], index: u32, uv: Vec2
         return Vec4::ONE;
     }
     let uv = if uv.is_finite() { uv } else { Vec2::ZERO };
-    let (w, h) = (t.width as i32, t.height as i32);
+    let level = if t.flags & TEXTURE_FLAG_NEAREST != 0 {
+        0
+    } else {
+        lod.level(t, levels(t))
+    };
+    // Levels lie one after the other from `texel_offset`.
+    let mut base = t.texel_offset as usize;
+    for l in 0..level {
+        let (lw, lh) = level_size(t.width, t.height, l);
+        base += lw as usize * lh as usize;
+    }
+    let (w, h) = level_size(t.width, t.height, level);
+    let (w, h) = (w as i32, h as i32);
     let (wrap_u, wrap_v) = (t.flags & 3, (t.flags >> 2) & 3);
-    let base = t.texel_offset as usize;
     // Fetches the texel at wrapped column `x` and wrapped row `y`.
     let fetch = |x: i32, y: i32| {
         let i = base + (y * w + x) as usize;
@@ -89,7 +151,7 @@ mod tests {
             flags: WRAP_REPEAT,
         };
         let s = |t: &GpuTexture, u: f32| {
-            sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5)).x
+            sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5), Lod::FINEST).x
         };
         assert_eq!(s(&t, 0.25), 0.0); // texel centre
         assert_eq!(s(&t, 0.5), 0.5); // half way
@@ -102,6 +164,6 @@ mod tests {
         t.flags = TEXTURE_FLAG_NEAREST;
         assert_eq!(s(&t, 0.49), 0.0);
         assert_eq!(s(&t, 0.51), 1.0);
-        assert_eq!(sample(&[], &texels, 0, Vec2::ZERO), Vec4::ONE);
+        assert_eq!(sample(&[], &texels, 0, Vec2::ZERO, Lod::FINEST), Vec4::ONE);
     }
 }
