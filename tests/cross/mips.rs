@@ -98,13 +98,18 @@ fn mean_and_frame_variance(which: Which, desc: &SceneDesc) -> (f64, f64) {
 /// 512² one-texel checker over 16×16 pixels: 32 texels per pixel (λ ≈ 5 at the centre). With
 /// mips every level read is the grey mean; on level 0 (nearest) each sample is 0.2 or 0.8.
 fn minified_checker_is_grey(which: Which) {
-    let (mipped, mipped_var) = mean_and_frame_variance(which, &textured_square(checker(512, 1, false)));
-    let (level0, level0_var) = mean_and_frame_variance(which, &textured_square(checker(512, 1, true)));
+    let (mipped, mipped_var) =
+        mean_and_frame_variance(which, &textured_square(checker(512, 1, false)));
+    let (level0, level0_var) =
+        mean_and_frame_variance(which, &textured_square(checker(512, 1, true)));
     eprintln!(
         "minified checker ({which:?}): mips mean {mipped:.5} frame variance {mipped_var:.3e}; level 0 mean {level0:.5} frame variance {level0_var:.3e}"
     );
     // f16 rounding of 0.2 and 0.8 and of the levels' means: within 1e-3 of 0.5.
-    assert!((mipped - 0.5).abs() < 1e-3, "{which:?}: mipped mean {mipped}");
+    assert!(
+        (mipped - 0.5).abs() < 1e-3,
+        "{which:?}: mipped mean {mipped}"
+    );
     assert!(
         mipped_var * 100.0 < level0_var,
         "{which:?}: frame variance with mips {mipped_var:.3e} is not far below level 0's {level0_var:.3e}"

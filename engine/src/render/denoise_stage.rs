@@ -18,7 +18,7 @@
 use std::time::Instant;
 
 use super::cpu::guides::trace_guides;
-use super::denoise::{ReprojectStats, Svgf, SvgfParams, Traced, View, world_from_object};
+use super::denoise::{Svgf, SvgfParams, Traced, View, world_from_object};
 use super::film::Film;
 use super::jitter::unpack;
 use super::tracer::{FilmView, RenderError, Tracer};
@@ -29,7 +29,6 @@ use crate::scene::RenderScene;
 pub struct DenoiseStage {
     svgf: Svgf,
     film: Film,
-    reprojected: Option<ReprojectStats>,
 }
 
 impl DenoiseStage {
@@ -37,7 +36,6 @@ impl DenoiseStage {
         Self {
             svgf: Svgf::new(params),
             film: Film::new(0, 0),
-            reprojected: None,
         }
     }
 
@@ -57,7 +55,8 @@ impl DenoiseStage {
         let started = Instant::now();
         let frame = tracer.film()?;
         let transforms = scene.instances.iter().map(world_from_object).collect();
-        let (film, stats) = if upscale > 1 {
+        // The denoiser also says how many pixels kept their history; nothing reads it here.
+        let (film, _kept) = if upscale > 1 {
             let mut high = *uniforms;
             high.width = uniforms.width * upscale;
             high.height = uniforms.height * upscale;
@@ -77,14 +76,7 @@ impl DenoiseStage {
         }
         .map_err(|e| RenderError::Device(format!("denoiser: {e}")))?;
         self.film = film;
-        self.reprojected = stats;
         Ok(started.elapsed().as_secs_f64())
-    }
-
-    /// How many pixels of the last frame kept their reprojected history (`None` after a
-    /// restart).
-    pub fn reprojected(&self) -> Option<ReprojectStats> {
-        self.reprojected
     }
 
     /// The last denoised film.

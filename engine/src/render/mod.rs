@@ -7,7 +7,7 @@ pub mod balance;
 pub(crate) mod camera;
 pub mod cpu;
 pub mod denoise;
-pub mod denoise_stage;
+pub(crate) mod denoise_stage;
 mod device_loss;
 pub mod film;
 mod frame_render;

@@ -274,7 +274,7 @@ fn light_emission(scene: &RenderScene, instance: u32, triangle: u32, bary: Vec2)
             uv,
             super::texture::Lod::FINEST,
         )
-            .truncate();
+        .truncate();
     }
     (
         emission,

@@ -14,12 +14,12 @@
 
 use glam::{Vec2, Vec3};
 
+use super::cone::Cone;
 use super::direct::{NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances};
 use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
 use super::sampling::{basis, concentric_disc, to_local, to_world};
-use super::cone::Cone;
 use super::surface::{offset_origin, reads_levels, resolve, shade};
 use crate::layout::{
     GpuFrameUniforms, GpuLine, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, SKY_GRADIENT,

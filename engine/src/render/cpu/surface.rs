@@ -26,7 +26,9 @@ pub struct Shading {
 /// Whether `m` reads a mip-mapped lookup (base colour, metallic-roughness or normal texture):
 /// only then does a path draw the random number that picks between levels.
 pub fn reads_levels(m: &GpuMaterial) -> bool {
-    m.base_color_texture != INVALID || m.metal_rough_texture != INVALID || m.normal_texture != INVALID
+    m.base_color_texture != INVALID
+        || m.metal_rough_texture != INVALID
+        || m.normal_texture != INVALID
 }
 
 /// Applies `material`'s textures at `surface`, on the mip levels `lod` picks. Emission is read

@@ -151,7 +151,14 @@ mod tests {
             flags: WRAP_REPEAT,
         };
         let s = |t: &GpuTexture, u: f32| {
-            sample(std::slice::from_ref(t), &texels, 0, Vec2::new(u, 0.5), Lod::FINEST).x
+            sample(
+                std::slice::from_ref(t),
+                &texels,
+                0,
+                Vec2::new(u, 0.5),
+                Lod::FINEST,
+            )
+            .x
         };
         assert_eq!(s(&t, 0.25), 0.0); // texel centre
         assert_eq!(s(&t, 0.5), 0.5); // half way
