@@ -93,4 +93,6 @@ pub use script::{
     ObjectKey, RunOptions, Screenshot, Script, ScriptError, ScriptLevel, ScriptRender,
     ScriptReport, ScriptTracer, ShotResult, TimeKey, camera_at, matches, run_script,
 };
-pub use window::{WindowConfig, WindowEnd, WindowError, WindowReport, run_game, run_window};
+pub use window::{
+    WindowConfig, WindowEnd, WindowError, WindowReport, run_game, run_window, stats_window,
+};

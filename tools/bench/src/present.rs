@@ -56,8 +56,8 @@ fn test_film(w: u32, h: u32) -> Film {
     film
 }
 
-/// The stats window as `app/window/stats_overlay.rs` lays it out (bottom right, 11-point
-/// font, a grid of 22 label–value rows), run until its layout settles, at 1 pixel per point.
+/// The stats window the F3 overlay draws (`candela::app::stats_window`) with 22 label–value
+/// rows, run until its layout settles, at 1 pixel per point.
 fn stats_overlay(size: (u32, u32)) -> Overlay {
     let context = egui::Context::default();
     let mut textures = egui::TexturesDelta::default();
@@ -70,29 +70,10 @@ fn stats_overlay(size: (u32, u32)) -> Overlay {
             )),
             ..Default::default()
         };
-        let mut output = context.run_pass(input, |ctx| {
-            egui::Window::new("Candela stats (F3)")
-                .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
-                .resizable(false)
-                .title_bar(false)
-                .show(ctx, |ui| {
-                    ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
-                    ui.spacing_mut().interact_size.y = 13.0;
-                    ui.spacing_mut().item_spacing.y = 1.0;
-                    ui.label(egui::RichText::new("Candela stats (F3)").strong());
-                    egui::Grid::new("stats")
-                        .num_columns(2)
-                        .spacing([8.0, 1.0])
-                        .show(ui, |ui| {
-                            for i in 0..22 {
-                                ui.label(format!("phase {i}"));
-                                let value = format!("{:.2} ms", 1.234 * i as f32);
-                                ui.label(egui::RichText::new(value).monospace().size(11.0));
-                                ui.end_row();
-                            }
-                        });
-                });
-        });
+        let rows: Vec<(String, String)> = (0..22)
+            .map(|i| (format!("phase {i}"), format!("{:.2} ms", 1.234 * i as f32)))
+            .collect();
+        let mut output = context.run_pass(input, |ctx| candela::app::stats_window(ctx, &rows));
         textures.append(std::mem::take(&mut output.textures_delta));
         last = Some(output);
     }

@@ -17,3 +17,4 @@ mod stats_overlay;
 
 pub use config::{WindowConfig, WindowEnd, WindowError, WindowReport};
 pub use run::{run_game, run_window};
+pub use stats_overlay::stats_window;

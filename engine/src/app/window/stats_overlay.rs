@@ -3,7 +3,8 @@
 //!
 //! Owns: the egui context and its winit glue (pointer, keyboard, scale factor). Produces an
 //! [`Overlay`] per frame while visible. Must not: touch the device (the render thread draws)
-//! or the world.
+//! or the world. [`stats_window`] is the window's layout alone (`bench present` times the CPU
+//! overlay drawing it).
 
 use winit::window::Window;
 
@@ -71,28 +72,7 @@ impl StatsOverlay {
             if !visible {
                 return;
             }
-            // Bottom right, in a small fixed font: clear of the games' HUD (objective top left,
-            // counters top right, crosshair in the middle).
-            egui::Window::new("Candela stats (F3)")
-                .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
-                .resizable(false)
-                .title_bar(false)
-                .show(context, |ui| {
-                    ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
-                    ui.spacing_mut().interact_size.y = 13.0;
-                    ui.spacing_mut().item_spacing.y = 1.0;
-                    ui.label(egui::RichText::new("Candela stats (F3)").strong());
-                    egui::Grid::new("stats")
-                        .num_columns(2)
-                        .spacing([8.0, 1.0])
-                        .show(ui, |ui| {
-                            for (label, value) in stats.lines() {
-                                ui.label(label);
-                                ui.label(egui::RichText::new(value).monospace().size(11.0));
-                                ui.end_row();
-                            }
-                        });
-                });
+            stats_window(context, &stats.lines());
         });
         self.state
             .handle_platform_output(window, output.platform_output);
@@ -105,4 +85,30 @@ impl StatsOverlay {
             pixels_per_point: output.pixels_per_point,
         })
     }
+}
+
+/// The stats window of `lines` (label, value) in `context`: bottom right, in a small fixed
+/// font, clear of the games' HUD (objective top left, counters top right, crosshair in the
+/// middle).
+pub fn stats_window<L: AsRef<str>>(context: &egui::Context, lines: &[(L, String)]) {
+    egui::Window::new("Candela stats (F3)")
+        .anchor(egui::Align2::RIGHT_BOTTOM, [-8.0, -8.0])
+        .resizable(false)
+        .title_bar(false)
+        .show(context, |ui| {
+            ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
+            ui.spacing_mut().interact_size.y = 13.0;
+            ui.spacing_mut().item_spacing.y = 1.0;
+            ui.label(egui::RichText::new("Candela stats (F3)").strong());
+            egui::Grid::new("stats")
+                .num_columns(2)
+                .spacing([8.0, 1.0])
+                .show(ui, |ui| {
+                    for (label, value) in lines {
+                        ui.label(label.as_ref());
+                        ui.label(egui::RichText::new(value).monospace().size(11.0));
+                        ui.end_row();
+                    }
+                });
+        });
 }
