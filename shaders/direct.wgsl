@@ -86,7 +86,7 @@ fn pick_chances() -> vec2<f32> {
 // Direct light at a non-delta surface: one emissive triangle (picked by power, uniformly or by
 // the light tree) and the sun, each weighted against BSDF sampling. Returns the shadow rays to
 // trace; `throughput` is folded into their contributions.
-fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, throughput: vec3<f32>, rng: ptr<function, Rng>) -> ShadowRays {
+fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<f32>, throughput: vec3<f32>, medium: vec3<f32>, rng: ptr<function, Rng>) -> ShadowRays {
     var xi: array<f32, 6>;
     for (var i = 0u; i < NEE_RANDOMS; i++) {
         xi[i] = rng_next(rng);
@@ -152,13 +152,14 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
                         w = power_heuristic(light_pdf, e.pdf);
                     }
                     out.rays[out.count] = shadow_ray_to(x, ng, p, cr / (2.0 * area));
-                    out.contribution[out.count] = throughput * e.value * emitter.radiance * (w / light_pdf);
+                    out.contribution[out.count] = throughput * e.value * emitter.radiance * (w / light_pdf) * transmittance(medium, dist);
                     out.count += 1u;
                 }
             }
         }
     }
-    if (nee && take_disc && frame.sun_solid_angle >= 0.0) {
+    // Inside an absorbing medium the sun is infinitely far through it: nothing arrives.
+    if (nee && take_disc && frame.sun_solid_angle >= 0.0 && all(medium == vec3<f32>(0.0))) {
         let sun = frame.sun_direction;
         var wi = sun;
         var scale = 1.0 / chances.x;
@@ -205,4 +206,13 @@ fn hit_area(hit: Hit) -> f32 {
     let b = world_point(inst, v3(vertices[inst.vertex_base + tri.indices[1]].position));
     let c = world_point(inst, v3(vertices[inst.vertex_base + tri.indices[2]].position));
     return 0.5 * length(cross(b - a, c - a));
+}
+
+// Beer–Lambert transmittance over `distance` metres of a medium with absorption `sigma` (1/m);
+// exactly 1 outside any medium (twin of `transmittance` in direct.rs).
+fn transmittance(sigma: vec3<f32>, distance: f32) -> vec3<f32> {
+    if (all(sigma == vec3<f32>(0.0))) {
+        return vec3<f32>(1.0);
+    }
+    return exp(-sigma * distance);
 }

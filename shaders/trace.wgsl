@@ -87,6 +87,8 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     // emitters prefiltered over the pixel, `travelled` metres from the camera (lines.wgsl).
     var camera_chain = has_lines();
     var travelled = 0.0;
+    // Absorption (1/m) of the medium the path travels in (twin of `medium` in integrator.rs).
+    var medium = vec3<f32>(0.0);
     let pixel_angle = LINE_FOOTPRINT_PIXELS * 2.0 * length(frame.camera_up) / f32(max(frame.height, 1u));
     var crossings = 0u;
     loop {
@@ -135,7 +137,9 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
                 let w = bsdf_hit_weight(last_delta, last_pdf, pick_chances().x / frame.sun_solid_angle);
                 escaped += frame.sun_radiance * w;
             }
-            result += throughput * escaped;
+            if (all(medium == vec3<f32>(0.0))) {
+                result += throughput * escaped;
+            }
             break;
         }
         let surface = resolve_surface(hit, ray.direction);
@@ -148,7 +152,9 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         let shading = shade_surface(surface, lod);
         let wo = -ray.direction;
         let front = dot(wo, surface.geometric_normal) > 0.0;
-        if (!front && any(shading.absorption != vec3<f32>(0.0))) {
+        if (any(medium != vec3<f32>(0.0))) {
+            throughput *= transmittance(medium, hit.t);
+        } else if (!front && any(shading.absorption != vec3<f32>(0.0))) {
             throughput *= exp(-shading.absorption * hit.t);
         }
         if (any(shading.emission != vec3<f32>(0.0)) && (front || shading.two_sided_emission)) {
@@ -193,7 +199,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         shadows.count = 0u;
         shadow_index = 0u;
         if (!bsdf_is_delta(bsdf)) {
-            shadows = next_event(bsdf, surface.position, ng, f, wo_local, throughput, &rng);
+            shadows = next_event(bsdf, surface.position, ng, f, wo_local, throughput, medium, &rng);
         } else {
             for (var i = 0u; i < NEE_RANDOMS; i++) {
                 rng_next(&rng);
@@ -213,6 +219,14 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             if ((dot(wi, ng) < 0.0) != below || all(throughput == vec3<f32>(0.0))) {
                 have_next = false;
             } else {
+                // Crossed the surface (wo and wi on opposite sides): into or out of its medium.
+                if (below != (wo_local.z < 0.0) && !bsdf_is_two_sided(bsdf)) {
+                    if (front) {
+                        medium = shading.absorption;
+                    } else {
+                        medium = vec3<f32>(0.0);
+                    }
+                }
                 last_pdf = s.pdf;
                 last_delta = s.delta;
                 cone = cone_bounce(cone, s.pdf, s.delta);

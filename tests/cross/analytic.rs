@@ -1,6 +1,7 @@
 //! Scenes with closed-form answers, rendered by both tracers: the sun (delta and disc), the
-//! sky, a textured emitter, and light through an absorbing glass slab (Fresnel, refraction,
-//! Beer–Lambert, radiance scaling, internal reflections).
+//! sky, a textured emitter, light through an absorbing glass slab (Fresnel, refraction,
+//! Beer–Lambert, radiance scaling, internal reflections), and an emitter under open water
+//! (absorption tracked along the path inside the medium, at two depths and two colours).
 //!
 //! Tolerances: 4.5 standard errors of the image mean (estimated from independent batches, see
 //! `candela_tests`) plus 1e-4 relative for f32 rounding where the answer has no noise at all.
@@ -252,6 +253,61 @@ fn absorbing_slab(which: Which) {
     check(which, "absorbing glass slab", &desc, 16, 32, expected);
 }
 
+/// Looking down through open water (one surface, IOR 1.33, no walls or bottom face) at an
+/// emitter of radiance 1 lying `depth` metres under it, near-normal incidence (1° FOV): the path
+/// is transmitted into the water and reaches the emitter inside it, so the segment is absorbed
+/// although it never meets the water's back face. L = (1 − R) e^(−σ d) / η², R = ((η − 1)/(η +
+/// 1))², σ = −ln(colour) per metre (the colour left after 1 m); reflections see a black sky.
+fn open_water(which: Which, depth: f32, colour: Vec3) {
+    let water = Material {
+        kind: MaterialKind::Dielectric,
+        base_color: Vec3::ONE,
+        roughness: 0.0,
+        ior: 1.33,
+        attenuation_color: colour,
+        attenuation_distance: 1.0,
+        ..Material::default()
+    };
+    let light = Material {
+        kind: MaterialKind::Diffuse,
+        base_color: Vec3::ZERO,
+        emission: Vec3::ONE,
+        ..Material::default()
+    };
+    let corners = |z: f32| {
+        [
+            Vec3::new(-500.0, -500.0, z),
+            Vec3::new(500.0, -500.0, z),
+            Vec3::new(500.0, 500.0, z),
+            Vec3::new(-500.0, 500.0, z),
+        ]
+    };
+    let [a, b, c, d] = corners(0.0);
+    let surface = quad(a, b, c, d, 0);
+    let [a, b, c, d] = corners(-depth);
+    let emitter = quad(a, b, c, d, 1);
+    let desc = scene(
+        model(vec![surface, emitter], vec![water, light], vec![]),
+        Vec3::new(0.0, 0.0, 5.0),
+        Vec3::ZERO,
+        1.0,
+    );
+    let eta = 1.33f64;
+    let r = ((eta - 1.0) / (eta + 1.0)).powi(2);
+    let expected = colour
+        .to_array()
+        .map(|c| (1.0 - r) * f64::from(c).powf(f64::from(depth)) / (eta * eta));
+    check(which, &format!("open water {depth} m deep"), &desc, 16, 32, expected);
+}
+
+fn open_water_cases(which: Which) {
+    for depth in [0.5, 2.0] {
+        for colour in [Vec3::new(0.5, 0.8, 1.0), Vec3::new(0.9, 0.6, 0.3)] {
+            open_water(which, depth, colour);
+        }
+    }
+}
+
 #[test]
 fn cpu_delta_sun() {
     sun_on_a_floor(Which::Cpu, 0.0);
@@ -291,6 +347,14 @@ fn cpu_absorbing_slab() {
 #[test]
 fn gpu_absorbing_slab() {
     absorbing_slab(Which::Gpu);
+}
+#[test]
+fn cpu_open_water() {
+    open_water_cases(Which::Cpu);
+}
+#[test]
+fn gpu_open_water() {
+    open_water_cases(Which::Gpu);
 }
 
 /// Thin lens: whatever point of the lens a camera ray starts from, it passes through the point

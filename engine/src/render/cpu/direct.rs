@@ -40,6 +40,7 @@ pub(super) fn next_event(
     ng: Vec3,
     frame: (Vec3, Vec3, Vec3),
     wo_local: Vec3,
+    medium: Vec3,
     rng: &mut Rng,
     counts: &mut RayCounts,
 ) -> Vec3 {
@@ -145,14 +146,15 @@ pub(super) fn next_event(
                         } else {
                             1.0
                         };
-                        sum += f * emitter.0 * (w / light_pdf);
+                        sum += f * emitter.0 * (w / light_pdf) * transmittance(medium, dist);
                     }
                 }
             }
         }
     }
 
-    if nee && take_disc && u.sun_solid_angle >= 0.0 {
+    // Inside an absorbing medium the sun is infinitely far through it: nothing arrives.
+    if nee && take_disc && u.sun_solid_angle >= 0.0 && medium == Vec3::ZERO {
         let sun = Vec3::from(u.sun_direction);
         let radiance = Vec3::from(u.sun_radiance);
         if u.sun_solid_angle == 0.0 {
@@ -280,4 +282,15 @@ fn light_emission(scene: &RenderScene, instance: u32, triangle: u32, bary: Vec2)
         emission,
         m.flags & crate::layout::MATERIAL_FLAG_TWO_SIDED_EMISSION != 0,
     )
+}
+
+/// Beer–Lambert transmittance over `distance` metres of a medium with absorption coefficients
+/// `sigma` (1/m, per channel); exactly 1 outside any medium (`sigma` zero), so paths that never
+/// enter one keep their bits.
+pub(super) fn transmittance(sigma: Vec3, distance: f32) -> Vec3 {
+    if sigma == Vec3::ZERO {
+        Vec3::ONE
+    } else {
+        (-sigma * distance).exp()
+    }
 }

@@ -5,7 +5,9 @@
 //! table, uniformly, or by importance from the light tree (`light_tree.rs`); point uniform on
 //! the triangle) and on the sun, combined with BSDF sampling by multiple importance
 //! sampling (power heuristic); Russian roulette after `roulette_start` scattering events;
-//! Beer–Lambert absorption inside dielectrics; sky radiance for escaping rays; line emitters
+//! Beer–Lambert absorption along every segment inside an absorbing dielectric (the path tracks
+//! the medium it was transmitted into, so light reaching a pool's floor through open water is
+//! attenuated on the way); sky radiance for escaping rays; line emitters
 //! seen prefiltered along camera rays and their perfect specular turns (`lines.rs`).
 //! The path loop is read against `shaders/trace.wgsl` line by line (the same random draws in the
 //! same order); next-event estimation lives in `direct.rs`, and the pieces that stand alone
@@ -15,7 +17,9 @@
 use glam::{Vec2, Vec3};
 
 use super::cone::Cone;
-use super::direct::{NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances};
+use super::direct::{
+    NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances, transmittance,
+};
 use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
@@ -134,6 +138,10 @@ pub fn radiance(
     // emitters prefiltered over the pixel, `travelled` metres from the camera.
     let mut camera_chain = !lines.is_empty();
     let mut travelled = 0.0f32;
+    // Absorption coefficients (1/m) of the medium the path travels in: set when it is
+    // transmitted into an absorbing dielectric's front face, cleared when transmitted out of a
+    // back face (one level: a medium inside a medium is left for the outer one's air).
+    let mut medium = Vec3::ZERO;
     let pixel_angle =
         LINE_FOOTPRINT_PIXELS * 2.0 * Vec3::from(u.camera_up).length() / u.height.max(1) as f32;
     loop {
@@ -161,7 +169,10 @@ pub fn radiance(
                 let w = bsdf_hit_weight(u.method, last_delta, last_pdf, disc_pdf);
                 escaped += sun_radiance * w;
             }
-            result += throughput * escaped;
+            // Escaping through a medium is an infinite path through it.
+            if medium == Vec3::ZERO {
+                result += throughput * escaped;
+            }
             break;
         };
         let surface = resolve(scene, &hit, ray.direction);
@@ -180,8 +191,13 @@ pub fn radiance(
         let shading = shade(scene, &surface, lod);
         let wo = -ray.direction;
         let front = wo.dot(surface.geometric_normal) > 0.0;
-        if !front && shading.absorption != Vec3::ZERO {
-            // Travelled `t` metres inside an absorbing dielectric.
+        if medium != Vec3::ZERO {
+            // Travelled `t` metres through the medium the path is in (to the medium's far side
+            // or to anything inside it: a pool's floor under open water).
+            throughput *= transmittance(medium, hit.t);
+        } else if !front && shading.absorption != Vec3::ZERO {
+            // Reached an absorbing dielectric's back face without having been transmitted into
+            // it (the camera is inside): the `t` metres ran through it.
             throughput *= (-shading.absorption * hit.t).exp();
         }
         if shading.emission != Vec3::ZERO && (front || shading.two_sided_emission) {
@@ -240,6 +256,7 @@ pub fn radiance(
                     ng,
                     (t, b, ns),
                     wo_local,
+                    medium,
                     &mut rng,
                     counts,
                 );
@@ -263,6 +280,15 @@ pub fn radiance(
         throughput *= s.weight;
         if throughput == Vec3::ZERO {
             break;
+        }
+        // Crossed the surface (wo and wi on opposite sides of it): into or out of its medium.
+        let crossed = transmitted != (wo_local.z < 0.0);
+        if crossed && !bsdf.is_two_sided() {
+            medium = if front {
+                shading.absorption
+            } else {
+                Vec3::ZERO
+            };
         }
         last_pdf = s.pdf;
         last_delta = s.delta;
