@@ -134,29 +134,31 @@ pub fn run(args: &BuildArgs) -> anyhow::Result<()> {
     }
     time_blas("5 dragons", &positions, &triangles, args.reps);
 
-    let mut rng = Rng::new(1, 2, 3, 4);
-    let mut u = || rng.next_f32();
-    let boxes: Vec<Aabb> = (0..10_000)
-        .map(|_| {
-            let c = Vec3::new(u(), u() * 0.1, u()) * 500.0;
-            let h = Vec3::new(u(), u(), u()) * 3.0 + Vec3::splat(0.1);
-            Aabb {
-                min: c - h,
-                max: c + h,
-            }
-        })
-        .collect();
-    let _ = build_tlas(&boxes);
-    let times: Vec<f64> = (0..args.reps.max(10))
-        .map(|_| {
-            let started = Instant::now();
-            std::hint::black_box(build_tlas(&boxes));
-            started.elapsed().as_secs_f64()
-        })
-        .collect();
-    println!(
-        "| TLAS | 10000 instances | {:.2} ms | |",
-        median(&times) * 1e3
-    );
+    for count in [300, 2_000, 10_000] {
+        let mut rng = Rng::new(1, 2, 3, 4);
+        let mut u = || rng.next_f32();
+        let boxes: Vec<Aabb> = (0..count)
+            .map(|_| {
+                let c = Vec3::new(u(), u() * 0.1, u()) * 500.0;
+                let h = Vec3::new(u(), u(), u()) * 3.0 + Vec3::splat(0.1);
+                Aabb {
+                    min: c - h,
+                    max: c + h,
+                }
+            })
+            .collect();
+        let _ = build_tlas(&boxes);
+        let times: Vec<f64> = (0..args.reps.max(10))
+            .map(|_| {
+                let started = Instant::now();
+                std::hint::black_box(build_tlas(&boxes));
+                started.elapsed().as_secs_f64()
+            })
+            .collect();
+        println!(
+            "| TLAS | {count} instances | {:.2} ms | |",
+            median(&times) * 1e3
+        );
+    }
     Ok(())
 }

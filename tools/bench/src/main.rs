@@ -44,6 +44,7 @@ mod balance_record;
 mod bounce_budget;
 mod build;
 mod chamber_rays;
+mod instance_merge;
 mod chart;
 mod chart_methods;
 mod chart_plan;
@@ -92,12 +93,15 @@ struct Args {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// BLAS per million triangles and TLAS for 10,000 instances.
+    /// BLAS per million triangles and TLAS for 300, 2,000 and 10,000 instances.
     Build(build::BuildArgs),
     /// Rays per second per tracer and ray kind on a level.
     Rays(rays::RaysArgs),
     /// Rays per second of the CPU path tracer on a Reflect chamber's view, as the game renders it.
     ChamberRays(chamber_rays::ChamberRaysArgs),
+    /// Traversal of a Reflect chamber's two-level scene against its triangles merged into one
+    /// BLAS, on the same rays.
+    InstanceMerge(instance_merge::InstanceMergeArgs),
     /// Error and frame time of Reflect's chamber views per bounce cap, against a reference
     /// with more bounces: how many bounces a chamber needs in play.
     BounceBudget(bounce_budget::BounceBudgetArgs),
@@ -136,6 +140,7 @@ fn main() -> anyhow::Result<()> {
         Command::Memory(a) => memory::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::ChamberRays(a) => chamber_rays::run(&a),
+        Command::InstanceMerge(a) => instance_merge::run(&a),
         Command::BounceBudget(a) => bounce_budget::run(&a),
         Command::Error(a) => error::run(&a),
         Command::Chart(a) => {
