@@ -134,7 +134,9 @@ impl Reader<'_> {
         let start = self.i;
         let c = self.peek()?;
         let mut name = String::new();
-        if c == b'"' || c == b'\'' || (c == b'r' && matches!(self.b.get(start + 1), Some(b'"' | b'#')))
+        if c == b'"'
+            || c == b'\''
+            || (c == b'r' && matches!(self.b.get(start + 1), Some(b'"' | b'#')))
         {
             self.string()?;
             return Some(Node {
@@ -238,8 +240,7 @@ pub(super) fn same(at: &str, a: &Node, bt: &str, b: &Node) -> bool {
     match (&a.group, &b.group) {
         (None, None) => {
             let (x, y) = (&at[a.start..a.end], &bt[b.start..b.end]);
-            x == y
-                || matches!((x.parse::<f64>(), y.parse::<f64>()), (Ok(p), Ok(q)) if p == q)
+            x == y || matches!((x.parse::<f64>(), y.parse::<f64>()), (Ok(p), Ok(q)) if p == q)
         }
         (Some(g), Some(h)) => {
             g.name == h.name
@@ -253,9 +254,10 @@ pub(super) fn same(at: &str, a: &Node, bt: &str, b: &Node) -> bool {
                             .is_some_and(|f| same(at, &e.value, bt, &f.value))
                     })
                 } else {
-                    g.entries.iter().zip(&h.entries).all(|(e, f)| {
-                        e.key == f.key && same(at, &e.value, bt, &f.value)
-                    })
+                    g.entries
+                        .iter()
+                        .zip(&h.entries)
+                        .all(|(e, f)| e.key == f.key && same(at, &e.value, bt, &f.value))
                 }
         }
         _ => false,

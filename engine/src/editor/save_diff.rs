@@ -78,7 +78,13 @@ impl Ctx<'_> {
             .and_then(|f| entry(f, name))
             .ok_or_else(|| SpliceError::Shape(path.into()))?;
         let text = self.fresh[e.start..e.value.end].to_string();
-        insert(self.old, g, g.entries.len().checked_sub(1), |_| text.clone(), &mut self.out);
+        insert(
+            self.old,
+            g,
+            g.entries.len().checked_sub(1),
+            |_| text.clone(),
+            &mut self.out,
+        );
         Ok(())
     }
 
@@ -90,7 +96,9 @@ impl Ctx<'_> {
         for keep_absent in [true, false] {
             let mut splices = Vec::new();
             merge(self.old, node, &text, &tree, keep_absent, &mut splices);
-            let inside = splices.iter().all(|s| s.start >= node.start && s.end <= node.end);
+            let inside = splices
+                .iter()
+                .all(|s| s.start >= node.start && s.end <= node.end);
             let local: Vec<Splice> = splices
                 .iter()
                 .map(|s| Splice {
@@ -147,7 +155,11 @@ impl Ctx<'_> {
         if old == new {
             return Ok(());
         }
-        let key = if path.is_empty() { name.to_string() } else { format!("{path}.{name}") };
+        let key = if path.is_empty() {
+            name.to_string()
+        } else {
+            format!("{path}.{name}")
+        };
         let Some(e) = entry(g, name) else {
             return self.add_field(g, fresh, path, name);
         };
@@ -179,8 +191,11 @@ impl Ctx<'_> {
                         .then(|| self.comments.item(&key, j).cloned())
                         .flatten()
                         .unwrap_or_default();
-                    let lines: Vec<String> =
-                        comments.before.into_iter().chain(comments.trailing).collect();
+                    let lines: Vec<String> = comments
+                        .before
+                        .into_iter()
+                        .chain(comments.trailing)
+                        .collect();
                     let item = |pad: &str| {
                         let body = if single || pad.is_empty() {
                             text.clone()
@@ -190,7 +205,11 @@ impl Ctx<'_> {
                         if pad.is_empty() {
                             return body;
                         }
-                        lines.iter().map(|c| format!("{c}\n{pad}")).collect::<String>() + &body
+                        lines
+                            .iter()
+                            .map(|c| format!("{c}\n{pad}"))
+                            .collect::<String>()
+                            + &body
                     };
                     insert(self.old, list, after, item, &mut self.out);
                 }
@@ -220,7 +239,11 @@ impl Ctx<'_> {
         let Some(e) = entry(g, "gameplay") else {
             return self.add_field(g, fresh, "", "gameplay");
         };
-        let inner = e.value.group.as_ref().filter(|h| h.open == b'(' && h.keyed());
+        let inner = e
+            .value
+            .group
+            .as_ref()
+            .filter(|h| h.open == b'(' && h.keyed());
         let inner = inner.ok_or_else(|| SpliceError::Shape("gameplay".into()))?;
         let fresh_inner = fresh
             .and_then(|f| entry(f, "gameplay"))
@@ -228,7 +251,13 @@ impl Ctx<'_> {
         self.gameplay(inner, fresh_inner, &old.gameplay, &new.gameplay)
     }
 
-    fn gameplay(&mut self, g: &Group, fresh: Option<&Group>, o: &GameplayEntry, n: &GameplayEntry) -> Res {
+    fn gameplay(
+        &mut self,
+        g: &Group,
+        fresh: Option<&Group>,
+        o: &GameplayEntry,
+        n: &GameplayEntry,
+    ) -> Res {
         let at = (g, fresh, "gameplay");
         self.list(at, "sounds", &o.sounds, &n.sounds)?;
         self.one(at, "music", &o.music, &n.music)?;

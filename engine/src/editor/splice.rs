@@ -92,7 +92,8 @@ pub(super) fn cut(text: &str, g: &Group, k: usize, out: &mut Vec<Splice>) {
         while start > 0 {
             let above = line_start(text, start - 1);
             let line = text[above..start].trim();
-            let comment = line.starts_with("//") || (line.starts_with("/*") && line.ends_with("*/"));
+            let comment =
+                line.starts_with("//") || (line.starts_with("/*") && line.ends_with("*/"));
             if !comment {
                 break;
             }
@@ -126,7 +127,9 @@ pub(super) fn insert(
     let Some(e) = neighbour else {
         // An empty group: the item alone inside its brackets.
         let at = g.open_at + 1;
-        let close = text[at..].find(|c: char| !c.is_whitespace()).map_or(at, |k| at + k);
+        let close = text[at..]
+            .find(|c: char| !c.is_whitespace())
+            .map_or(at, |k| at + k);
         out.push(Splice::new(at, close, item("")));
         return;
     };
@@ -141,7 +144,11 @@ pub(super) fn insert(
             out.push(Splice::new(end, end, format!("\n{pad}{},", item(pad))));
         }
         (Some(_), false) => {
-            out.push(Splice::new(e.value.end, e.value.end, format!(", {}", item(""))));
+            out.push(Splice::new(
+                e.value.end,
+                e.value.end,
+                format!(", {}", item("")),
+            ));
         }
         (None, true) => {
             let pad = indent_at(text, e.start);
@@ -233,11 +240,19 @@ fn pair_run(steps: &mut Vec<Step>, olds: std::ops::Range<usize>, news: std::ops:
 /// Splices that turn old value `o` (in `ot`) into new value `n` (in `nt`), keeping all that is
 /// the same. `keep_absent`: keyed entries the new value leaves out stay as they were (fields
 /// written at their default value); otherwise they are removed.
-pub(super) fn merge(ot: &str, o: &Node, nt: &str, n: &Node, keep_absent: bool, out: &mut Vec<Splice>) {
+pub(super) fn merge(
+    ot: &str,
+    o: &Node,
+    nt: &str,
+    n: &Node,
+    keep_absent: bool,
+    out: &mut Vec<Splice>,
+) {
     if same(ot, o, nt, n) {
         return;
     }
-    let replace = |out: &mut Vec<Splice>| out.push(Splice::new(o.start, o.end, &nt[n.start..n.end]));
+    let replace =
+        |out: &mut Vec<Splice>| out.push(Splice::new(o.start, o.end, &nt[n.start..n.end]));
     let (Some(g), Some(h)) = (&o.group, &n.group) else {
         return replace(out);
     };
@@ -257,7 +272,11 @@ pub(super) fn merge(ot: &str, o: &Node, nt: &str, n: &Node, keep_absent: bool, o
                 last = Some(k);
             }
         }
-        for f in h.entries.iter().filter(|f| !g.entries.iter().any(|e| e.key == f.key)) {
+        for f in h
+            .entries
+            .iter()
+            .filter(|f| !g.entries.iter().any(|e| e.key == f.key))
+        {
             let item = text_of(f);
             insert(ot, g, last, |_| item.clone(), out);
         }
@@ -272,7 +291,14 @@ pub(super) fn merge(ot: &str, o: &Node, nt: &str, n: &Node, keep_absent: bool, o
     for step in steps {
         match step {
             Step::Keep(..) => {}
-            Step::Change(i, j) => merge(ot, &g.entries[i].value, nt, &h.entries[j].value, keep_absent, out),
+            Step::Change(i, j) => merge(
+                ot,
+                &g.entries[i].value,
+                nt,
+                &h.entries[j].value,
+                keep_absent,
+                out,
+            ),
             Step::Remove(i) => cut(ot, g, i, out),
             Step::Insert(j, after) => {
                 let item = text_of(&h.entries[j]);

@@ -18,7 +18,10 @@ use editor_common::{Scratch, assets, committed_levels};
 fn every_level_file() -> Vec<PathBuf> {
     let mut out = committed_levels();
     let parts = assets().join("reflect/levels");
-    for entry in std::fs::read_dir(&parts).expect("Reflect's levels").flatten() {
+    for entry in std::fs::read_dir(&parts)
+        .expect("Reflect's levels")
+        .flatten()
+    {
         out.push(entry.path());
     }
     out.sort();
@@ -73,7 +76,11 @@ fn added_lines<'a>(old: &str, new: &'a str) -> Vec<&'a str> {
         .zip(n[head..].iter().rev())
         .take_while(|(a, b)| a == b)
         .count();
-    assert_eq!(head + tail, o.len(), "lines of the old file changed:\n{new}");
+    assert_eq!(
+        head + tail,
+        o.len(),
+        "lines of the old file changed:\n{new}"
+    );
     n[head..n.len() - tail].to_vec()
 }
 
@@ -114,14 +121,24 @@ fn saving_without_an_edit_or_after_an_undo_writes_the_same_bytes() -> anyhow::Re
         let (mut state, old) = open_copy(&scratch, &path)?;
         let (report, new) = save(&mut state)?;
         assert_eq!(report.rewritten, None, "{}", path.display());
-        assert_eq!(new, old, "{}: an unedited save changed bytes", path.display());
+        assert_eq!(
+            new,
+            old,
+            "{}: an unedited save changed bytes",
+            path.display()
+        );
         if state.doc.level.instances.is_empty() {
             continue;
         }
         state.apply(Edit::DeleteInstance { index: 0 })?;
         state.undo()?;
         let (_, new) = save(&mut state)?;
-        assert_eq!(new, old, "{}: delete and undo changed bytes", path.display());
+        assert_eq!(
+            new,
+            old,
+            "{}: delete and undo changed bytes",
+            path.display()
+        );
     }
     Ok(())
 }
@@ -148,19 +165,32 @@ fn adding_a_rule_only_adds_its_lines() -> anyhow::Result<()> {
     for level in levels {
         let (mut state, old) = open_copy(&scratch, &assets().join(level))?;
         let volume = state.doc.level.gameplay.volumes[0].name.clone();
-        state.doc.level.gameplay.rules.push(rule("added_rule", &volume));
+        state
+            .doc
+            .level
+            .gameplay
+            .rules
+            .push(rule("added_rule", &volume));
         let (report, new) = save(&mut state)?;
         assert_eq!(report.rewritten, None, "{level}");
         let added = added_lines(&old, &new);
         assert_eq!(added.len(), 1, "{level}: {added:#?}");
-        assert!(added[0].contains("(name: \"added_rule\""), "{level}: {added:?}");
+        assert!(
+            added[0].contains("(name: \"added_rule\""),
+            "{level}: {added:?}"
+        );
     }
     // A level without rules gets the field, and nothing else changes.
     let (mut state, old) = open_copy(&scratch, &assets().join("reflect/levels/chamber_1.ron"))?;
     state.doc.level.gameplay.rules.clear();
     let (_, cleared) = save(&mut state)?;
     assert!(cleared.len() < old.len());
-    state.doc.level.gameplay.rules.push(rule("only_rule", "room_1"));
+    state
+        .doc
+        .level
+        .gameplay
+        .rules
+        .push(rule("only_rule", "room_1"));
     let (_, new) = save(&mut state)?;
     assert_eq!(added_lines(&cleared, &new).len(), 1, "{new}");
     Ok(())
@@ -216,7 +246,10 @@ fn a_file_the_splicer_cannot_follow_is_rewritten_whole_and_says_why() -> anyhow:
     let (report, new) = save(&mut state)?;
     let why = report.rewritten.expect("a whole rewrite");
     assert!(why.contains("does not read as a level"), "{why}");
-    assert!(new.starts_with("// Chamber 1"), "written with its comments:\n{new}");
+    assert!(
+        new.starts_with("// Chamber 1"),
+        "written with its comments:\n{new}"
+    );
     // A new file has nothing to keep.
     std::fs::remove_file(&state.path)?;
     let (report, _) = save(&mut state)?;
