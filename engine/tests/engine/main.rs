@@ -61,6 +61,7 @@ mod editor_full_disk;
 mod editor_kill;
 mod editor_mode;
 mod editor_mode_box;
+mod editor_names;
 mod editor_pick;
 mod editor_problem_select;
 mod editor_recovery;
