@@ -177,7 +177,7 @@ pub(super) enum Step {
 /// equals new item `j`. Lists with more than `LIMIT` items left after trimming are paired in
 /// order without a search.
 pub(super) fn align(old: usize, new: usize, same: impl Fn(usize, usize) -> bool) -> Vec<Step> {
-    const LIMIT: usize = 4000;
+    const LIMIT: usize = 2000;
     let head = (0..old.min(new)).take_while(|&i| same(i, i)).count();
     let tail = (0..old.min(new) - head)
         .take_while(|&k| same(old - 1 - k, new - 1 - k))
