@@ -1,5 +1,7 @@
-//! Saving a level document: refused while the level has problems (`check`), written as RON
-//! with its comments (`write`), checked to read back as the very same level, the previous
+//! Saving a level document: refused while the level has problems (`check`), written as the
+//! file on disk with only the edited items changed (`save_diff`), or, when that cannot be
+//! done (a new file, an old file it cannot follow), as RON with its comments (`write`), and
+//! the report says why; checked to read back as the very same level, the previous
 //! file kept as `<name>.bak` beside it, then replaced atomically (a temporary file renamed
 //! over it, `assets::atomic_file`), and the recovery file, now stale, removed.
 //!
@@ -16,6 +18,7 @@ use super::check::{Problem, check_level};
 use super::document::Document;
 use super::layout::options;
 use super::recovery::discard_recovery;
+use super::save_diff::splice_level;
 use super::write::render_document;
 
 /// Why a save did not happen; the level file on disk is unchanged.
@@ -59,6 +62,9 @@ pub struct SaveReport {
     pub backup: Option<PathBuf>,
     /// Bytes written.
     pub bytes: usize,
+    /// `None` when only the edited items changed in the file; otherwise why the whole file
+    /// was written anew (`a new file`, or the reason the old text could not be kept).
+    pub rewritten: Option<String>,
 }
 
 /// `<path>.bak`: `levels/hall.ron` → `levels/hall.ron.bak`.
@@ -76,8 +82,23 @@ pub(super) fn with_suffix(path: &Path, suffix: &str) -> PathBuf {
     path.with_file_name(name)
 }
 
-/// `doc` as level RON that reads back as `doc.level` (checked by parsing it again).
-pub(super) fn text_of(doc: &Document) -> Result<String, SaveError> {
+/// `doc` as level RON that reads back as `doc.level` (checked by parsing it again): `old`
+/// (the file's text on disk) with only the edited items changed when it can be done (the
+/// second value is `None`), else written whole (the second value says why).
+pub(super) fn text_of(
+    doc: &Document,
+    old: Option<&str>,
+) -> Result<(String, Option<String>), SaveError> {
+    let why = match old.map(|old| splice_level(old, doc)) {
+        Some(Ok(text)) => return Ok((text, None)),
+        Some(Err(e)) => e.to_string(),
+        None => "a new file".to_string(),
+    };
+    Ok((full_text(doc)?, Some(why)))
+}
+
+/// `doc` written whole by `write`, checked to read back as `doc.level`.
+pub(super) fn full_text(doc: &Document) -> Result<String, SaveError> {
     let text = render_document(doc).map_err(|e| SaveError::Format(e.to_string()))?;
     let back = options()
         .from_str::<Level>(&text)
@@ -106,17 +127,26 @@ pub fn save_document(
 /// file) for a document its caller has checked: a part of a composed world, which only checks
 /// merged with the other parts.
 pub fn write_document(path: &Path, doc: &Document) -> Result<SaveReport, SaveError> {
-    let text = text_of(doc)?;
-    let backup = if path.exists() {
-        let old = std::fs::read(path).map_err(|source| SaveError::Backup {
+    let old = if path.exists() {
+        Some(std::fs::read(path).map_err(|source| SaveError::Backup {
             path: path.to_path_buf(),
             source,
-        })?;
-        let backup = backup_path(path);
-        write_atomic(&backup, &old)?;
-        Some(backup)
+        })?)
     } else {
         None
+    };
+    let old_text = old.as_deref().map(String::from_utf8_lossy);
+    let (text, rewritten) = text_of(doc, old_text.as_deref())?;
+    if let Some(why) = &rewritten {
+        log::info!("{}: the whole file is written: {why}", path.display());
+    }
+    let backup = match &old {
+        Some(old) => {
+            let backup = backup_path(path);
+            write_atomic(&backup, old)?;
+            Some(backup)
+        }
+        None => None,
     };
     write_atomic(path, text.as_bytes())?;
     if let Err(e) = discard_recovery(path) {
@@ -129,5 +159,6 @@ pub fn write_document(path: &Path, doc: &Document) -> Result<SaveReport, SaveErr
         path: path.to_path_buf(),
         backup,
         bytes: text.len(),
+        rewritten,
     })
 }

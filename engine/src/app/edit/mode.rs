@@ -287,8 +287,12 @@ impl EditMode {
         };
         match saved {
             Ok(report) => {
+                let how = match &report.rewritten {
+                    None => "only the edited items changed".to_string(),
+                    Some(why) => format!("the whole file rewritten: {why}"),
+                };
                 self.say(format!(
-                    "saved {} ({} bytes)",
+                    "saved {} ({} bytes, {how})",
                     report.path.display(),
                     report.bytes
                 ));

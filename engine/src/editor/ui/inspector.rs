@@ -1,7 +1,8 @@
-//! The inspector: typed fields for the primary selected instance — transform (translation in
-//! metres, rotation in degrees, scale, snapped when snapping is on), model, material override,
-//! dynamic flag, light group — and the fields of its override material (base colour,
-//! emission, roughness, metallic, IOR). Bodies are shown, not yet edited.
+//! The inspector: headed by the primary selected instance's name (its model and index only
+//! when it has no name, `outliner::instance_label`), typed fields for it — transform
+//! (translation in metres, rotation in degrees, scale, snapped when snapping is on), model,
+//! material override, dynamic flag, light group — and the fields of its override material
+//! (base colour, emission, roughness, metallic, IOR). Bodies are shown, not yet edited.
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
@@ -10,6 +11,7 @@ use crate::assets::{InstanceEntry, LevelMaterial, TransformDesc};
 use super::super::command::{Edit, InstanceField, MaterialField};
 use super::super::state::EditorState;
 use super::Pending;
+use super::outliner::instance_label;
 
 /// Three drag values in a row; whether any changed.
 pub(super) fn vec3(ui: &mut egui::Ui, label: &str, v: &mut [f32; 3], speed: f64) -> bool {
@@ -32,7 +34,7 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     let Some(entry) = level.instances.get(index) else {
         return;
     };
-    ui.label(egui::RichText::new(format!("Instance {index}")).strong());
+    ui.label(egui::RichText::new(instance_label(index, entry)).strong());
     let mut t: TransformDesc = entry.transform;
     let moved = vec3(ui, "translation (m)", &mut t.translation, 0.01)
         | vec3(ui, "rotation (°)", &mut t.rotation_deg, 0.5)

@@ -1,10 +1,13 @@
-//! The outliner: every instance (by name, or model and index) with a search field, then the
+//! The outliner: every instance (by its name first, then its model; by model and index only
+//! when it has no name: [`instance_label`]) with a search field, then the
 //! light groups, trigger volumes, lasers, clips and rules. Clicking an instance selects it
 //! (Shift adds, Ctrl toggles).
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
 use std::collections::BTreeSet;
+
+use crate::assets::InstanceEntry;
 
 use super::super::state::EditorState;
 use super::{Pending, mode_of};
@@ -29,10 +32,7 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
         .show(ui, |ui| {
             ui.label(egui::RichText::new("Instances").strong());
             for (i, entry) in level.instances.iter().enumerate() {
-                let label = match &entry.name {
-                    Some(name) => format!("{i}  {name}  ({})", entry.model),
-                    None => format!("{i}  ({})", entry.model),
-                };
+                let label = instance_label(i, entry);
                 if !needle.is_empty() && !label.to_lowercase().contains(&needle) {
                     continue;
                 }
@@ -80,6 +80,16 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
             );
             section(ui, "Rules", g.rules.iter().map(|r| r.name.clone()), &needle);
         });
+}
+
+/// How the outliner and the inspector name `instances[index]`: its name, then its model
+/// (`door_1  (door)`); only an instance without a name is known by its model and index
+/// (`wall_8x4 #12`).
+pub fn instance_label(index: usize, entry: &InstanceEntry) -> String {
+    match &entry.name {
+        Some(name) => format!("{name}  ({})", entry.model),
+        None => format!("{} #{index}", entry.model),
+    }
 }
 
 fn section(ui: &mut egui::Ui, title: &str, items: impl Iterator<Item = String>, needle: &str) {
