@@ -25,7 +25,8 @@
 use glam::Vec3;
 use obvhs::bvh2::Bvh2;
 
-use crate::layout::{GpuBvh8Node, INVALID, LEAF_BIT};
+use super::octant_order::octant_orders;
+use crate::layout::{GpuBvh8Node, LEAF_BIT};
 use crate::scene::Aabb;
 
 /// Relative costs the collapse minimises (units: one 8-wide node test). Also the constants of the
@@ -283,60 +284,4 @@ fn emit(bvh: &Bvh2, decisions: &[Decision], costs: Costs) -> Wide {
         (costs.node as f64 * wide.nodes.len() as f64 + costs.leaf as f64 * leaf_blocks) as f32
     };
     wide
-}
-
-/// `perm` of a node: for each ray octant `o` (bit set = negative direction component), the
-/// occupied slots sorted by their box centre projected on the octant's diagonal (±1, ±1, ±1),
-/// nearest first, then the empty slots; rank `i`'s slot goes to bits `3o..3o+3` of `perm[i]`.
-pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
-    let used = node.child.map(|c| c != INVALID);
-    let centers: [Vec3; 8] = std::array::from_fn(|s| {
-        Vec3::new(
-            node.min_x[s] + node.max_x[s],
-            node.min_y[s] + node.max_y[s],
-            node.min_z[s] + node.max_z[s],
-        )
-    });
-    let occupied = used.iter().filter(|&&u| u).count();
-    let mut perm = [0u32; 8];
-    // Octant 7 - o sees the keys negated: its order of the occupied slots is the reverse of
-    // octant o's (ties aside, which both break by slot index), so only octants 0..4 are ranked.
-    for octant in 0..4u32 {
-        let sign = Vec3::new(
-            if octant & 1 != 0 { -1.0 } else { 1.0 },
-            if octant & 2 != 0 { -1.0 } else { 1.0 },
-            if octant & 4 != 0 { -1.0 } else { 1.0 },
-        );
-        let key: [f32; 8] = std::array::from_fn(|s| centers[s].dot(sign));
-        // Rank of each occupied slot among the occupied ones: smaller key first, ties by slot.
-        let mut order = [0usize; 8];
-        let mut order_rev = [0usize; 8];
-        let mut next_empty = occupied;
-        for s in 0..8 {
-            if !used[s] {
-                order[next_empty] = s;
-                order_rev[next_empty] = s;
-                next_empty += 1;
-                continue;
-            }
-            let (mut rank, mut rank_rev) = (0, 0);
-            for t in 0..8 {
-                if used[t] && t != s {
-                    // total_cmp: a strict total order even for NaN keys (centres that
-                    // overflowed), so the ranks always form a permutation.
-                    let order = key[t].total_cmp(&key[s]).then(t.cmp(&s));
-                    rank += usize::from(order.is_lt());
-                    rank_rev +=
-                        usize::from(key[t].total_cmp(&key[s]).reverse().then(t.cmp(&s)).is_lt());
-                }
-            }
-            order[rank] = s;
-            order_rev[rank_rev] = s;
-        }
-        for rank in 0..8 {
-            perm[rank] |= (order[rank] as u32) << (3 * octant);
-            perm[rank] |= (order_rev[rank] as u32) << (3 * (7 - octant));
-        }
-    }
-    perm
 }

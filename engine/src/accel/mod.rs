@@ -8,7 +8,7 @@
 //!
 //! Phases (one file each): `bounds` (the box type), `bvh2` (binary build: obvhs PLOC presets
 //! or the balanced fallback) and `binned` (our binned SAH build, the default), `collapse`
-//! (SAH-optimal 8-wide collapse and the per-octant child orders), `blas` (triangle blocks),
+//! (SAH-optimal 8-wide collapse), `octant_order` (the per-octant child orders), `blas` (triangle blocks),
 //! `tlas` (instances).
 //!
 //! # Why this layout and this build (measured)
@@ -63,6 +63,7 @@ mod flatten;
 
 mod bvh2;
 mod collapse;
+mod octant_order;
 pub mod origin;
 pub(crate) mod refit;
 pub(crate) mod tlas;

@@ -10,7 +10,7 @@
 use glam::Vec3;
 
 use super::blas::{Blas, BlasParams};
-use super::collapse::octant_orders;
+use super::octant_order::octant_orders;
 use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
 use crate::scene::Aabb;
 use crate::trace::leaf_blocks;

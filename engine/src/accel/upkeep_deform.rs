@@ -7,11 +7,11 @@
 
 use glam::Vec3;
 
-use super::blas::build_blas_with_params;
+use super::blas::{Blas, build_blas_with_params};
 use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
-use super::upkeep::{REBUILD_RATIO, Upkeep};
+use super::upkeep::{MeshSlot, REBUILD_RATIO, Upkeep};
 use crate::ecs::ModelHandle;
-use crate::scene::SceneWrite;
+use crate::scene::{Aabb, SceneWrite};
 
 impl Upkeep {
     /// New object-space positions (and optionally normals) for mesh `mesh` of `model`: refits
@@ -33,13 +33,15 @@ impl Upkeep {
             return;
         };
         let started = std::time::Instant::now();
-        let mut slot = self.meshes[slot_index].clone();
-        let first = slot.vertex_base as usize;
-        let count = slot.vertex_count as usize;
+        let first = self.meshes[slot_index].vertex_base as usize;
+        let count = self.meshes[slot_index].vertex_count as usize;
         if positions.len() != count || normals.is_some_and(|n| n.len() != count) {
             log::warn!("deform: mesh has {count} vertices, got {}", positions.len());
             return;
         }
+        // Taken out while the upkeep writes (not cloned: a frame of several settled steps
+        // deforms the explorer once per step), put back below.
+        let mut slot = std::mem::replace(&mut self.meshes[slot_index], MeshSlot::vacant());
         let mut vertices = self.scene.vertices[first..first + count].to_vec();
         for (i, v) in vertices.iter_mut().enumerate() {
             v.position = positions[i].to_array();
@@ -67,5 +69,31 @@ impl Upkeep {
         self.meshes[slot_index] = slot;
         self.refresh_bounds_of_slot(slot_index);
         self.stats.seconds += started.elapsed().as_secs_f64();
+    }
+}
+
+impl MeshSlot {
+    /// An empty stand-in, left in the table while the real slot is taken out to be written
+    /// (`upkeep_deform.rs`); never seen outside that call.
+    pub(super) fn vacant() -> Self {
+        Self {
+            blas: Blas {
+                nodes: Vec::new(),
+                blocks: Vec::new(),
+                bounds: Aabb::EMPTY,
+                sah_cost: 0.0,
+            },
+            node_base: 0,
+            node_capacity: 0,
+            block_base: 0,
+            block_capacity: 0,
+            triangle_base: 0,
+            vertex_base: 0,
+            vertex_count: 0,
+            triangles: Vec::new(),
+            built_cost: 0.0,
+            built_area: 0.0,
+            emissive: false,
+        }
     }
 }

@@ -28,7 +28,7 @@ pub const MAX_SUBSTEPS: u32 = 16;
 ///
 /// ```ron
 /// waves: Some((amplitude: 0.02, wavelength: 3, speed: 0.6,
-///              simulate: Some((wave_speed: 1.5, damping: 0.4)))),
+///              simulate: Some((wave_speed: 1.5, damping: 0.4, start_at_rest: true)))),
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -46,6 +46,15 @@ pub struct WaterSimDesc {
     /// makes a trough of about 6 cm around it).
     #[serde(default = "push")]
     pub push: f32,
+    /// The surface starts at rest under whatever wades in it when the level starts (default
+    /// false): the first fixed step takes the waders' push as the rest state instead of
+    /// dropping the surface under them, so a body placed in the water (It's About Time's
+    /// kinematic reed float) leaves no entry ring to ring out (about 20 s, refitted and
+    /// committed every frame meanwhile). The damped wave equation with its edges held at 0
+    /// rests flat, so this is the state the old start reached once settled, without the
+    /// ripples on the way.
+    #[serde(default)]
+    pub start_at_rest: bool,
 }
 
 fn one() -> u32 {

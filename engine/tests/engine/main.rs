@@ -117,6 +117,8 @@ mod structure_layers;
 mod trace_agreement;
 mod upkeep_camera_motion;
 mod upkeep_equivalence;
+mod upkeep_settled_queries;
+mod water_at_rest;
 mod water_level;
 mod water_sim;
 mod work_report;

@@ -30,6 +30,7 @@ fn sim(wave_speed: f32, damping: f32) -> WaterSimDesc {
         damping,
         substeps: 1,
         push: 0.5,
+        start_at_rest: false,
     }
 }
 

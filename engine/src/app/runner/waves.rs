@@ -139,6 +139,7 @@ mod tests {
             damping: 0.5,
             substeps: 1,
             push: 0.1,
+            start_at_rest: false,
         };
         let desc = |amplitude| WaveDesc {
             amplitude,

@@ -82,6 +82,8 @@ pub struct HeightField {
     v: Vec<f32>,
     /// The waders' push of the last step (metres, ≥ 0 pushes down), per vertex.
     pushed: Vec<f32>,
+    /// No step has run yet (see [`WaterSimDesc::start_at_rest`]).
+    unstarted: bool,
 }
 
 impl HeightField {
@@ -94,6 +96,7 @@ impl HeightField {
             h: vec![0.0; n],
             v: vec![0.0; n],
             pushed: vec![0.0; n],
+            unstarted: true,
         }
     }
 
@@ -136,13 +139,30 @@ impl HeightField {
 
     /// One fixed step of `step_seconds`: the surface gives way to `push` (this step's push of
     /// the waders, metres per vertex, or empty for none) by the change since the last step,
-    /// then [`Self::substeps`] substeps of the damped wave equation.
+    /// then [`Self::substeps`] substeps of the damped wave equation. With
+    /// [`WaterSimDesc::start_at_rest`], the first step's push is the rest state: remembered,
+    /// the surface left where it is.
     pub fn step(&mut self, step_seconds: f32, push: &[f32]) {
+        if std::mem::take(&mut self.unstarted) && self.desc.start_at_rest {
+            self.rest_under(push);
+        }
         self.give_way(push);
         let n = self.substeps(step_seconds);
         let dt = step_seconds / n as f32;
         for _ in 0..n {
             self.substep(dt);
+        }
+    }
+
+    /// Takes `push` (metres per vertex) as what the waders pushed in the last step, so that
+    /// only a later change of it makes waves.
+    fn rest_under(&mut self, push: &[f32]) {
+        let (c, r) = (self.layout.columns, self.layout.rows);
+        for iz in 1..r - 1 {
+            for ix in 1..c - 1 {
+                let i = ix + iz * c;
+                self.pushed[i] = push.get(i).copied().unwrap_or(0.0);
+            }
         }
     }
 
