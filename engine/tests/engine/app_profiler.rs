@@ -232,3 +232,39 @@ fn the_view_lays_out_the_threads_and_their_scopes() {
     }
     assert_eq!(state, ProfilerState::default(), "drawing changed the state");
 }
+
+/// Opens and closes `n` scopes inside one top scope ("cost loop"); returns the nanoseconds per
+/// inner scope.
+fn scope_loop(n: u32) -> f64 {
+    let started = std::time::Instant::now();
+    {
+        puffin::profile_scope!("cost loop");
+        for i in 0..n {
+            puffin::profile_scope!("cost scope");
+            std::hint::black_box(i);
+        }
+    }
+    started.elapsed().as_secs_f64() * 1e9 / f64::from(n)
+}
+
+/// What a scope costs, off and on, printed (`--no-capture`; `docs/PERFORMANCE.md`, "The
+/// profiler's cost"); asserted is only what is recorded: nothing off, every scope on.
+#[test]
+fn scopes_off_record_nothing_and_scopes_on_record_each_one() {
+    const N: u32 = 100_000;
+    let mut recorder = ProfileRecorder::default();
+    recorder.set_on(false);
+    let off_ns = scope_loop(N);
+    puffin::GlobalProfiler::lock().new_frame();
+    assert!(recorder.recent(10).is_empty(), "scopes off were recorded");
+    recorder.set_on(true);
+    let on_ns = scope_loop(N);
+    puffin::GlobalProfiler::lock().new_frame();
+    recorder.set_on(false);
+    let frame = recorder.frame(None).expect("a frame was recorded");
+    let thread = frame.thread_with("cost loop").expect("the loop's thread");
+    let inner = thread.scopes.iter().filter(|s| s.name == "cost scope").count();
+    assert_eq!(inner, N as usize);
+    assert!(thread.nests("cost loop", "cost scope"));
+    println!("one scope: {off_ns:.2} ns with the scopes off, {on_ns:.1} ns on");
+}

@@ -1,9 +1,7 @@
 //! [`Engine::frame`]: one frame of the Brigade pipeline on the main thread, one function per
 //! [`Phase`] (`phase.rs` lists them and says what each does).
 //!
-//! Profiling: while puffin's scopes are on (the F5 view, `app/window/profile_frames.rs`) each
-//! frame ends puffin's previous frame and opens a `"frame"` scope, one scope per [`Phase`]
-//! (named by [`Phase::name`]) and one per main system inside; off, each costs an atomic load.
+//! Profiling (F5, `app/window/profile_frames.rs`): puffin scopes per [`Phase`] and system.
 //!
 //! Owns: the order of the engine's work in a frame, carrying out the game's [`Commands`] and
 //! the level logic's effects, and delivering [`LevelEvent`]s to the game. Main thread.

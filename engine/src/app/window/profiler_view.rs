@@ -72,12 +72,16 @@ pub fn profiler_window(
     frames: &[FrameTime],
     frame: Option<&ProfileFrame>,
 ) {
+    // No title bar: the games' egui style draws titles in their large heading font. Below the
+    // games' objective line (top left), clear of the F3 stats (bottom right).
     egui::Window::new("Profiler (F5)")
-        .default_pos([8.0, 64.0])
+        .title_bar(false)
+        .default_pos([8.0, 110.0])
         .default_width(760.0)
         .resizable(true)
         .show(context, |ui| {
             ui.style_mut().override_font_id = Some(egui::FontId::proportional(11.0));
+            ui.label(egui::RichText::new("Profiler (F5)").strong());
             ui.horizontal(|ui| {
                 ui.checkbox(&mut state.paused, "pause");
                 match frame {
