@@ -4,8 +4,8 @@
 //! off nothing is recorded. The view lays the scope and thread names out in an egui pass.
 
 use candela::app::{
-    Engine, Environment, FrameTime, Phase, ProfileFrame, ProfileRecorder, ProfilerState,
-    ScopeBar, Step, ThreadScopes, profiler_window,
+    Engine, Environment, FrameTime, Phase, ProfileFrame, ProfileRecorder, ProfilerState, ScopeBar,
+    Step, ThreadScopes, profiler_window,
 };
 use candela::assets::AssetRoot;
 use candela::level::load_level;
@@ -97,7 +97,11 @@ fn engine_frames_record_the_phases_and_systems_nested_on_both_threads() -> anyho
         .iter()
         .map(|name| {
             let (_, bar) = main.find(name).expect("checked above");
-            assert_eq!(bar.parent, Some(0), "{name} is not directly inside \"frame\"");
+            assert_eq!(
+                bar.parent,
+                Some(0),
+                "{name} is not directly inside \"frame\""
+            );
             bar.start_ms
         })
         .collect();
@@ -118,7 +122,10 @@ fn engine_frames_record_the_phases_and_systems_nested_on_both_threads() -> anyho
     ];
     let main = frame_with(&frames, "frame", &["physics step", "TLAS", "light table"]);
     for (phase, system) in systems {
-        assert!(main.nests(phase, system), "{system:?} is not inside {phase:?}");
+        assert!(
+            main.nests(phase, system),
+            "{system:?} is not inside {phase:?}"
+        );
     }
     assert!(main.nests("scene upkeep", "TLAS"));
     assert!(main.nests("scene upkeep", "light table"));
@@ -136,7 +143,10 @@ fn engine_frames_record_the_phases_and_systems_nested_on_both_threads() -> anyho
         ("denoise", "guides"),
         ("denoise", "svgf"),
     ] {
-        assert!(render.nests(outer, inner), "{inner:?} is not inside {outer:?}");
+        assert!(
+            render.nests(outer, inner),
+            "{inner:?} is not inside {outer:?}"
+        );
     }
     drop(engine.shutdown());
     let _ = std::fs::remove_dir_all(&dir);
@@ -263,7 +273,11 @@ fn scopes_off_record_nothing_and_scopes_on_record_each_one() {
     recorder.set_on(false);
     let frame = recorder.frame(None).expect("a frame was recorded");
     let thread = frame.thread_with("cost loop").expect("the loop's thread");
-    let inner = thread.scopes.iter().filter(|s| s.name == "cost scope").count();
+    let inner = thread
+        .scopes
+        .iter()
+        .filter(|s| s.name == "cost scope")
+        .count();
     assert_eq!(inner, N as usize);
     assert!(thread.nests("cost loop", "cost scope"));
     println!("one scope: {off_ns:.2} ns with the scopes off, {on_ns:.1} ns on");

@@ -161,7 +161,15 @@ fn read_frame(data: &Arc<puffin::FrameData>, names: &puffin::ScopeCollection) ->
             scopes: Vec::new(),
         };
         let reader = puffin::Reader::from_start(&stream.stream);
-        let read = read_scopes(reader, &stream.stream, names, start_ns, None, 0, &mut thread);
+        let read = read_scopes(
+            reader,
+            &stream.stream,
+            names,
+            start_ns,
+            None,
+            0,
+            &mut thread,
+        );
         if let Err(e) = read {
             log::warn!("profiler: thread {:?}'s frame stream: {e:?}", info.name);
         }
@@ -199,7 +207,15 @@ fn read_scopes(
             duration_ms: scope.record.duration_ns as f64 * 1e-6,
         });
         let children = puffin::Reader::with_offset(stream, scope.child_begin_position)?;
-        read_scopes(children, stream, names, start_ns, Some(index), depth + 1, thread)?;
+        read_scopes(
+            children,
+            stream,
+            names,
+            start_ns,
+            Some(index),
+            depth + 1,
+            thread,
+        )?;
     }
     Ok(())
 }

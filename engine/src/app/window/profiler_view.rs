@@ -114,7 +114,12 @@ pub fn profiler_window(
 
 /// The frame-time bars: taller is slower; the shown frame is highlighted; a click picks one
 /// (and pauses, so it stays).
-fn frame_bars(ui: &mut egui::Ui, state: &mut ProfilerState, frames: &[FrameTime], shown: Option<u64>) {
+fn frame_bars(
+    ui: &mut egui::Ui,
+    state: &mut ProfilerState,
+    frames: &[FrameTime],
+    shown: Option<u64>,
+) {
     let width = ui.available_width().max(120.0);
     let (rect, response) = ui.allocate_exact_size(egui::vec2(width, 40.0), egui::Sense::click());
     let painter = ui.painter_at(rect);
@@ -176,15 +181,13 @@ fn flame(ui: &mut egui::Ui, thread: &ThreadScopes, duration_ms: f64) {
         painter.rect_filled(bar, 2.0, colour_of(&scope.name));
         if bar.width() >= LABELLED {
             let label = format!("{} {:.2} ms", scope.name, scope.duration_ms);
-            painter
-                .with_clip_rect(bar.intersect(rect))
-                .text(
-                    bar.left_center() + egui::vec2(3.0, 0.0),
-                    egui::Align2::LEFT_CENTER,
-                    label,
-                    font.clone(),
-                    egui::Color32::BLACK,
-                );
+            painter.with_clip_rect(bar.intersect(rect)).text(
+                bar.left_center() + egui::vec2(3.0, 0.0),
+                egui::Align2::LEFT_CENTER,
+                label,
+                font.clone(),
+                egui::Color32::BLACK,
+            );
         }
     }
     let Some(pointer) = response.hover_pos() else {
@@ -210,9 +213,9 @@ fn flame(ui: &mut egui::Ui, thread: &ThreadScopes, duration_ms: f64) {
 
 /// A stable colour per scope name, light enough for black text.
 fn colour_of(name: &str) -> egui::Color32 {
-    let hash = name
-        .bytes()
-        .fold(2166136261u32, |h, b| (h ^ u32::from(b)).wrapping_mul(16777619));
+    let hash = name.bytes().fold(2166136261u32, |h, b| {
+        (h ^ u32::from(b)).wrapping_mul(16777619)
+    });
     let hue = (hash % 360) as f32 / 360.0;
     egui::ecolor::Hsva::new(hue, 0.45, 0.95, 1.0).into()
 }

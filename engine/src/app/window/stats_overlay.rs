@@ -49,7 +49,8 @@ impl StatsOverlay {
         event: &winit::event::WindowEvent,
         game_ui: bool,
     ) -> bool {
-        (self.visible || self.profiler.visible() || game_ui) && self.state.on_window_event(window, event).consumed
+        (self.visible || self.profiler.visible() || game_ui)
+            && self.state.on_window_event(window, event).consumed
     }
 
     /// Whether the pointer is over the overlay.
