@@ -20,6 +20,6 @@ mod stats_overlay;
 
 pub use config::{WindowConfig, WindowEnd, WindowError, WindowReport};
 pub use profile_frames::{FrameTime, ProfileFrame, ProfileRecorder, ScopeBar, ThreadScopes};
-pub use profiler_view::{ProfilerState, profiler_window};
+pub use profiler_view::{FRAME_BARS, ProfilerState, ProfilerView, profiler_window};
 pub use run::{run_game, run_window};
 pub use stats_overlay::stats_window;
