@@ -332,6 +332,7 @@ impl Upkeep {
     /// do not read it). For fixed steps between two commits (`Engine::frame`).
     pub fn settle_queries(&mut self) {
         if self.tlas_dirty {
+            puffin::profile_scope!("TLAS");
             let started = std::time::Instant::now();
             let bounds: Vec<Aabb> = self
                 .rows
@@ -358,6 +359,7 @@ impl Upkeep {
     pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
         self.settle_queries();
         if self.lights_dirty {
+            puffin::profile_scope!("light table");
             let counts: Vec<u32> = self
                 .rows
                 .iter()

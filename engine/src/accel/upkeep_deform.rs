@@ -53,6 +53,7 @@ impl Upkeep {
             first: first as u32,
             data: vertices,
         });
+        puffin::profile_scope!("BLAS refit/rebuild");
         let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
         let area = triangle_area_ratio(&slot.blas);
         if cost > rebuild_bound(REBUILD_RATIO, slot.built_cost, slot.built_area, area) {

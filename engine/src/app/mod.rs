@@ -94,5 +94,7 @@ pub use script::{
     ScriptReport, ScriptTracer, ShotResult, TimeKey, camera_at, matches, run_script,
 };
 pub use window::{
-    WindowConfig, WindowEnd, WindowError, WindowReport, run_game, run_window, stats_window,
+    FRAME_BARS, FrameTime, ProfileFrame, ProfileRecorder, ProfilerState, ProfilerView, ScopeBar,
+    ThreadScopes, WindowConfig, WindowEnd, WindowError, WindowReport, profiler_window, run_game,
+    run_window, stats_window,
 };

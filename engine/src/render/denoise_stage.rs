@@ -60,7 +60,11 @@ impl DenoiseStage {
             let mut high = *uniforms;
             high.width = uniforms.width * upscale;
             high.height = uniforms.height * upscale;
-            let guides = trace_guides(scene, &high);
+            let guides = {
+                puffin::profile_scope!("guides");
+                trace_guides(scene, &high)
+            };
+            puffin::profile_scope!("svgf");
             let traced = Traced {
                 mean: &frame.mean,
                 width: frame.width,
@@ -70,7 +74,11 @@ impl DenoiseStage {
             self.svgf
                 .denoise_upscaled(traced, &guides, blend, View::of(&high), transforms)
         } else {
-            let guides = trace_guides(scene, uniforms);
+            let guides = {
+                puffin::profile_scope!("guides");
+                trace_guides(scene, uniforms)
+            };
+            puffin::profile_scope!("svgf");
             self.svgf
                 .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)
         }

@@ -69,10 +69,14 @@ fn trace(
         uniforms.pixel_jitter = jitter::pack(jitter::frame_jitter(commit.frame));
     }
     let started = Instant::now();
-    let stats = tracer.render(scene, &uniforms)?;
+    let stats = {
+        puffin::profile_scope!("trace");
+        tracer.render(scene, &uniforms)?
+    };
     let render_seconds = started.elapsed().as_secs_f64();
     let (denoise_seconds, film) = match denoiser {
         Some(d) => {
+            puffin::profile_scope!("denoise");
             let seconds = d.run(scene, &uniforms, tracer, blend, upscale)?;
             (seconds, commit.capture.then(|| d.film().clone()))
         }
@@ -106,6 +110,7 @@ pub(super) fn render_one(
     mut denoiser: Option<&mut DenoiseStage>,
 ) -> Result<Rendered, RenderError> {
     let started = Instant::now();
+    let apply_scope = puffin::profile_scope_custom!("apply commit");
     scene.apply(&commit.writes, &commit.header);
     // A table rebuilt in the background lands frames after the sky changed: the film restarts
     // then (the commit's sky change already restarted it when the change came).
@@ -121,6 +126,7 @@ pub(super) fn render_one(
         converge.reset();
     }
     let apply_seconds = started.elapsed().as_secs_f64();
+    drop(apply_scope);
     let work = scaling.current();
     let shown = work.film_size(output.0, output.1);
     if scaling.resized() {

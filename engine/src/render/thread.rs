@@ -208,6 +208,8 @@ fn run(
         .denoise
         .then(|| DenoiseStage::new(SvgfParams::default()));
     while let Ok(mut commit) = commits.recv() {
+        // Profiling (the F5 view): one scope per commit, opened after the wait.
+        puffin::profile_scope!("render frame");
         let mut request = commit.present.take();
         if let Some(wanted) = request.as_ref().and_then(|r| r.scaling) {
             scaling.set_goal(ScalingGoal {
@@ -250,7 +252,10 @@ fn run(
                 Some(d) => d.film_view(),
                 None => tracer.film_view(),
             };
-            let mut presented = shown.present(view, request);
+            let mut presented = {
+                puffin::profile_scope!("present");
+                shown.present(view, request)
+            };
             if presented.is_err()
                 && let Some(reason) = shown.device_lost()
             {

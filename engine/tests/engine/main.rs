@@ -29,6 +29,7 @@ mod app_bindings;
 mod app_full_disk;
 mod app_game_api;
 mod app_monkey;
+mod app_profiler;
 mod app_replay;
 mod app_replay_engine;
 mod app_replay_format;

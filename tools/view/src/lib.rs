@@ -38,8 +38,8 @@ pub enum TracerKind {
 }
 
 /// Open a level in a window: fly with WASD/QE (shift: faster), click to look around with the
-/// mouse, Escape to release the mouse (again to leave), F1 the level editor, F3 stats, F4
-/// vsync, F11 fullscreen.
+/// mouse, Escape to release the mouse (again to leave), F1 the level editor, F3 stats, F5 the
+/// profiler, F4 vsync, F11 fullscreen.
 #[derive(Clone, Debug, Parser)]
 #[command(name = "view", version)]
 pub struct ViewArgs {

@@ -7,6 +7,9 @@
 //! frame) and the memory (the scene both tracers read, and the process's resident set, against
 //! Brigade's 737 MB) ([`BenchFigures`]). The game's table of them is the game's.
 //!
+//! With `CANDELA_PROFILE=1` in the environment the profiler's scopes are on for the run, as
+//! with the F5 view shown, and its frames kept (`docs/PERFORMANCE.md` compares the two).
+//!
 //! Main thread (the render thread renders). Must not: change the game.
 
 use std::path::Path;
@@ -113,6 +116,11 @@ pub fn bench_replay<C: HarnessGame>(
         mut game,
         ..
     } = start_headless(config, Some(path), render)?;
+    let mut profiler = crate::app::window::ProfileRecorder::default();
+    let profiling = std::env::var_os("CANDELA_PROFILE").is_some_and(|v| v == "1");
+    if profiling {
+        profiler.set_on(true);
+    }
     let begun = Instant::now();
     let mut last = Instant::now();
     let mut dt = 1.0 / 30.0;
@@ -127,6 +135,16 @@ pub fn bench_replay<C: HarnessGame>(
         frame_ms.push(dt * 1e3);
         phases.push(report.phases);
         commits.push(report.commit_bytes);
+    }
+    profiler.set_on(false);
+    if profiling {
+        let scopes = profiler.frame(None).map_or(0, |f| {
+            f.threads.iter().map(|t| t.scopes.len()).sum::<usize>()
+        });
+        log::info!(
+            "profiler: scopes on, {} frames kept, {scopes} scopes in the last",
+            profiler.recent(usize::MAX).len()
+        );
     }
     let scene_bytes = engine.scene().memory().total();
     let rss_bytes = super::soak::rss_bytes();

@@ -54,6 +54,8 @@ pub struct InputMap {
 pub mod actions {
     /// Show or hide the stats overlay (F3).
     pub const TOGGLE_STATS: &str = "toggle_stats";
+    /// Show or hide the profiler view (F5): per-phase and per-system scopes of recent frames.
+    pub const TOGGLE_PROFILER: &str = "toggle_profiler";
     /// Switch between windowed and borderless fullscreen (F11).
     pub const TOGGLE_FULLSCREEN: &str = "toggle_fullscreen";
     /// Switch vsync on and off (F4).
@@ -65,12 +67,13 @@ pub mod actions {
 }
 
 impl InputMap {
-    /// The runner's own keys under the shell: stats overlay (F3), vsync (F4), fullscreen
+    /// The runner's own keys under the shell: stats overlay (F3), profiler (F5), vsync (F4), fullscreen
     /// (F11). Pausing and the mouse are the game's `pause` action (Escape, Start).
     pub fn runner_keys() -> Self {
         use Binding::Key;
         let entries = [
             (actions::TOGGLE_STATS, vec![Key(KeyCode::F3)]),
+            (actions::TOGGLE_PROFILER, vec![Key(KeyCode::F5)]),
             (actions::TOGGLE_FULLSCREEN, vec![Key(KeyCode::F11)]),
             (actions::TOGGLE_VSYNC, vec![Key(KeyCode::F4)]),
         ];
@@ -87,8 +90,9 @@ impl InputMap {
     pub fn fly_camera_defaults() -> Self {
         use super::fly_actions as fly;
         use Binding::*;
-        let entries: [(&str, Vec<Binding>); 14] = [
+        let entries: [(&str, Vec<Binding>); 15] = [
             (actions::TOGGLE_STATS, vec![Key(KeyCode::F3)]),
+            (actions::TOGGLE_PROFILER, vec![Key(KeyCode::F5)]),
             (actions::TOGGLE_FULLSCREEN, vec![Key(KeyCode::F11)]),
             (actions::TOGGLE_VSYNC, vec![Key(KeyCode::F4)]),
             (actions::CAPTURE_MOUSE, vec![Mouse(MouseButton::Left)]),

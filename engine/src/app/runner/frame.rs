@@ -1,6 +1,8 @@
 //! [`Engine::frame`]: one frame of the Brigade pipeline on the main thread, one function per
 //! [`Phase`] (`phase.rs` lists them and says what each does).
 //!
+//! Profiling (F5, `app/window/profile_frames.rs`): puffin scopes per [`Phase`] and system.
+//!
 //! Owns: the order of the engine's work in a frame, carrying out the game's [`Commands`] and
 //! the level logic's effects, and delivering [`LevelEvent`]s to the game. Main thread.
 //! Must not: render (the render thread does) or block on anything but the hand-off.
@@ -65,6 +67,10 @@ impl Engine {
         frame_seconds: f64,
         game: &mut G,
     ) -> Result<FrameReport, EngineError> {
+        if puffin::are_scopes_on() {
+            puffin::GlobalProfiler::lock().new_frame();
+        }
+        puffin::profile_scope!("frame");
         let mut timer = PhaseTimer::start();
         let steps = if self.paused {
             // Held by the shell: no game hooks, no game time; presses made meanwhile are not
@@ -93,7 +99,10 @@ impl Engine {
             .and_then(|p| p.overlay.as_ref())
             .map_or(0, |o| o.bytes());
         timer.lap(Phase::Seal);
-        self.render.submit(commit)?;
+        {
+            puffin::profile_scope!(Phase::HandOff.name());
+            self.render.submit(commit)?;
+        }
         timer.lap(Phase::HandOff);
         self.input.end_frame();
         let report = FrameReport {
@@ -111,6 +120,7 @@ impl Engine {
 
     /// [`Phase::Input`]: the game's per-frame hook.
     fn input_phase<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) {
+        puffin::profile_scope!(Phase::Input.name());
         game.frame(&mut FrameInput {
             world: &mut self.world,
             input: &self.input,
@@ -124,10 +134,12 @@ impl Engine {
     /// [`Engine::settle_every_step`], each on the world and the query scene as the previous step
     /// left them, however many steps the frame runs (`app/step_scene.rs`).
     fn fixed_steps<G: Game + ?Sized>(&mut self, game: &mut G, frame_seconds: f64) -> u32 {
+        puffin::profile_scope!(Phase::Steps.name());
         let steps = self.clock.advance(frame_seconds);
         let first = self.clock.steps - u64::from(steps);
         for index in first..self.clock.steps {
             if self.settle_steps && !self.step_scene_current {
+                puffin::profile_scope!("settle step scene");
                 self.settle_step_scene(index);
             }
             self.fixed_step(game, index);
@@ -142,12 +154,22 @@ impl Engine {
     fn fixed_step<G: Game + ?Sized>(&mut self, game: &mut G, index: u64) {
         let dt = self.clock.step_seconds;
         self.step_actions = self.next_actions();
-        game.fixed_step(&mut self.step_view(index));
-        self.carry_out_commands();
-        self.physics.step(&mut self.world, dt);
-        water_system(&mut self.world, dt);
-        animate_characters(&mut self.world, dt);
-        tick_skinned(&mut self.world, dt);
+        {
+            puffin::profile_scope!("game rules");
+            game.fixed_step(&mut self.step_view(index));
+            self.carry_out_commands();
+        }
+        {
+            puffin::profile_scope!("physics step");
+            self.physics.step(&mut self.world, dt);
+            water_system(&mut self.world, dt);
+        }
+        {
+            puffin::profile_scope!("animation");
+            animate_characters(&mut self.world, dt);
+            tick_skinned(&mut self.world, dt);
+        }
+        let level_logic = puffin::profile_scope_custom!("level logic");
         let ended_before = self.logic.outcome().is_some();
         let lights_off = self.upkeep.light_groups_off();
         let sun = self.sun_for_rules();
@@ -177,6 +199,8 @@ impl Engine {
             self.carry_out_commands();
         }
         self.flow_time(dt);
+        drop(level_logic);
+        puffin::profile_scope!("audio");
         self.audio.tick(dt);
     }
 
@@ -221,9 +245,14 @@ impl Engine {
     /// last two steps by `alpha` (the clock's leftover fraction of a step, 0 to 1), level waves
     /// at `seconds` of simulated time, skinned meshes deformed, transforms propagated.
     pub(in crate::app) fn pose(&mut self, alpha: f64, seconds: f64) {
+        puffin::profile_scope!(Phase::Pose.name());
         self.physics.interpolate(&mut self.world, alpha);
         waves_system(&mut self.world, seconds);
-        deform_skinned(&mut self.world);
+        {
+            puffin::profile_scope!("skinned deform");
+            deform_skinned(&mut self.world);
+        }
+        puffin::profile_scope!("transforms");
         propagate_transforms(&mut self.world);
     }
 
@@ -231,6 +260,7 @@ impl Engine {
     /// refits and rebuilds, TLAS, light table), the render-space origin near the camera, and
     /// the listener and emitters following their entities.
     fn upkeep_scene(&mut self) -> Prepared {
+        puffin::profile_scope!(Phase::Upkeep.name());
         self.update_scene();
         let (writes, header, stats) = self.upkeep.finish_frame();
         let mut work = FrameWork::of(&self.world, &self.upkeep, &stats, &self.environment.render);
@@ -251,6 +281,7 @@ impl Engine {
 
     /// [`Phase::Seal`]: the frame's commit.
     fn seal(&mut self, prepared: Prepared) -> Commit {
+        puffin::profile_scope!(Phase::Seal.name());
         Commit {
             frame: self.frame,
             writes: prepared.writes,

@@ -33,9 +33,15 @@ impl Engine {
     /// since the last commit adds up (metres plus radians of camera motion; whether objects
     /// changed).
     pub(in crate::app) fn update_scene(&mut self) {
-        let extracted = self.extractor.extract(&mut self.world);
+        let extracted = {
+            puffin::profile_scope!("extract");
+            self.extractor.extract(&mut self.world)
+        };
         self.motion.objects |= !extracted.changes.is_empty();
-        self.upkeep.apply_changes(extracted.changes);
+        {
+            puffin::profile_scope!("instances and BLAS");
+            self.upkeep.apply_changes(extracted.changes);
+        }
         if let Some(camera) = extracted.camera {
             self.camera = camera;
             self.motion.camera += extracted.camera_motion;

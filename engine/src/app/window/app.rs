@@ -240,6 +240,10 @@ impl<'g> WindowApp<'g> {
         if input.pressed_this_frame(actions::TOGGLE_STATS) {
             running.overlay.visible = !running.overlay.visible;
         }
+        if input.pressed_this_frame(actions::TOGGLE_PROFILER) {
+            let shown = running.overlay.profiler.visible();
+            running.overlay.profiler.set_visible(!shown);
+        }
         if self.shell.is_some() {
             // Vsync, fullscreen and the mouse follow the shell (`Running::follow`).
             return;

@@ -1,13 +1,15 @@
-//! [`StatsOverlay`]: the egui stats window (F3), run on the main thread where the window's
-//! events are, tessellated there, and handed to the render thread inside the commit.
+//! [`StatsOverlay`]: the egui stats window (F3) and the profiler view (F5,
+//! `profiler_view.rs`), run on the main thread where the window's events are, tessellated
+//! there, and handed to the render thread inside the commit.
 //!
-//! Owns: the egui context and its winit glue (pointer, keyboard, scale factor). Produces an
-//! [`Overlay`] per frame while visible. Must not: touch the device (the render thread draws)
+//! Owns: the egui context and its winit glue (pointer, keyboard, scale factor), the profiler
+//! view. Produces an [`Overlay`] per frame while either is visible. Must not: touch the device (the render thread draws)
 //! or the world. [`stats_window`] is the window's layout alone (`bench present` times the CPU
 //! overlay drawing it).
 
 use winit::window::Window;
 
+use super::profiler_view::ProfilerView;
 use crate::app::runner::FrameStats;
 use crate::commit::Overlay;
 
@@ -16,6 +18,8 @@ pub struct StatsOverlay {
     context: egui::Context,
     state: egui_winit::State,
     pub visible: bool,
+    /// The profiler view (F5), drawn in the same pass.
+    pub profiler: ProfilerView,
 }
 
 impl StatsOverlay {
@@ -33,6 +37,7 @@ impl StatsOverlay {
             context,
             state,
             visible,
+            profiler: ProfilerView::default(),
         }
     }
 
@@ -44,35 +49,38 @@ impl StatsOverlay {
         event: &winit::event::WindowEvent,
         game_ui: bool,
     ) -> bool {
-        (self.visible || game_ui) && self.state.on_window_event(window, event).consumed
+        (self.visible || self.profiler.visible() || game_ui)
+            && self.state.on_window_event(window, event).consumed
     }
 
     /// Whether the pointer is over the overlay.
     pub fn wants_pointer(&self) -> bool {
-        self.visible && self.context.egui_wants_pointer_input()
+        (self.visible || self.profiler.visible()) && self.context.egui_wants_pointer_input()
     }
 
     /// Runs egui for this frame: the game's `ui` (its HUD and menus) when `game_ui` is given,
-    /// then the stats window when it is shown; tessellates both. `None` when there is neither.
+    /// then the stats window and the profiler when they are shown; tessellates them all.
+    /// `None` when there is nothing to draw.
     pub fn build(
         &mut self,
         window: &Window,
         stats: &FrameStats,
         mut game_ui: Option<&mut dyn FnMut(&egui::Context)>,
     ) -> Option<Overlay> {
-        if !self.visible && game_ui.is_none() {
+        if !self.visible && !self.profiler.visible() && game_ui.is_none() {
             return None;
         }
         let input = self.state.take_egui_input(window);
         let visible = self.visible;
+        let profiler = &mut self.profiler;
         let output = self.context.run_pass(input, |context| {
             if let Some(ui) = game_ui.as_mut() {
                 ui(context);
             }
-            if !visible {
-                return;
+            if visible {
+                stats_window(context, &stats.lines());
             }
-            stats_window(context, &stats.lines());
+            profiler.ui(context);
         });
         self.state
             .handle_platform_output(window, output.platform_output);

@@ -95,6 +95,9 @@ impl Tracer for CpuTracer {
         let tiles_y = u.height.div_ceil(TILE);
         let tracer = scene.trace_scene();
         let lines = scene.lines();
+        // Profiling: the tiles run on rayon's workers, which are not profiled; this scope is
+        // the render thread's wait for them.
+        let tiles = puffin::profile_scope_custom!("trace tiles");
         let results: Vec<(u32, Vec<Vec3>, RayCounts)> = (0..tiles_x * tiles_y)
             .into_par_iter()
             .map(|tile| {
@@ -105,6 +108,8 @@ impl Tracer for CpuTracer {
                 (tile, sums, counts)
             })
             .collect();
+        drop(tiles);
+        puffin::profile_scope!("film blend");
         let mut counts = RayCounts::default();
         for (tile, sums, c) in results {
             counts += c;

@@ -151,9 +151,11 @@ impl Presenter {
                 format,
                 wgpu::TextureFormat::Bgra8Unorm | wgpu::TextureFormat::Bgra8UnormSrgb
             );
-            let pixels = self
-                .host_compose
-                .compose(host, size, &request.tonemap, bgra);
+            let pixels = {
+                puffin::profile_scope!("compose");
+                self.host_compose
+                    .compose(host, size, &request.tonemap, bgra)
+            };
             log::debug!(
                 "present ms: cpu compose {:.2}",
                 started.elapsed().as_secs_f64() * 1e3
@@ -162,6 +164,7 @@ impl Presenter {
             // an sRGB one blends in linear space, which the device's painter does below.
             let cpu_overlay = !format.is_srgb();
             if let (true, Some(overlay)) = (cpu_overlay, overlay) {
+                puffin::profile_scope!("overlay");
                 self.cpu_overlay.draw(pixels, size, bgra, overlay);
                 log::debug!(
                     "present ms: cpu overlay {:.2}",
@@ -200,6 +203,7 @@ impl Presenter {
             );
             return Ok(None);
         }
+        puffin::profile_scope!("compose and overlay (device)");
         let direct = surface_texture.is_some() && !self.surface.accepts_copies();
         let mut encoder = context.device.create_command_encoder(&Default::default());
         let mut extra = Vec::new();
