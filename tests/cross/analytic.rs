@@ -297,7 +297,14 @@ fn open_water(which: Which, depth: f32, colour: Vec3) {
     let expected = colour
         .to_array()
         .map(|c| (1.0 - r) * f64::from(c).powf(f64::from(depth)) / (eta * eta));
-    check(which, &format!("open water {depth} m deep"), &desc, 16, 32, expected);
+    check(
+        which,
+        &format!("open water {depth} m deep"),
+        &desc,
+        16,
+        32,
+        expected,
+    );
 }
 
 fn open_water_cases(which: Which) {

@@ -124,8 +124,9 @@ mod tests {
                         // overflowed), so the ranks always form a permutation.
                         let order = key[t].total_cmp(&key[s]).then(t.cmp(&s));
                         rank += usize::from(order.is_lt());
-                        rank_rev +=
-                            usize::from(key[t].total_cmp(&key[s]).reverse().then(t.cmp(&s)).is_lt());
+                        rank_rev += usize::from(
+                            key[t].total_cmp(&key[s]).reverse().then(t.cmp(&s)).is_lt(),
+                        );
                     }
                 }
                 order[rank] = s;
@@ -169,7 +170,11 @@ mod tests {
                     node.min_x[s] = f32::NAN;
                 }
             }
-            assert_eq!(octant_orders(&node), pairwise(&node), "case {case}: {node:?}");
+            assert_eq!(
+                octant_orders(&node),
+                pairwise(&node),
+                "case {case}: {node:?}"
+            );
         }
     }
 }

@@ -153,7 +153,13 @@ fn run(steps_per_frame: f64, steps: u64) -> Run {
                 .map(|ray| {
                     step.queries.closest(ray).map(|h| {
                         let n = h.geometric_normal.to_array().map(f32::to_bits);
-                        (h.entity.map(|e| e.to_bits().get()), h.instance, h.triangle, h.t.to_bits(), n)
+                        (
+                            h.entity.map(|e| e.to_bits().get()),
+                            h.instance,
+                            h.triangle,
+                            h.t.to_bits(),
+                            n,
+                        )
                     })
                 })
                 .collect();
@@ -194,15 +200,24 @@ fn settled_steps_see_what_steps_of_their_own_frames_see() {
             continue;
         };
         for (ray, (a, b)) in hits.iter().zip(reference).enumerate() {
-            assert_eq!(a, b, "step {index}, ray {ray}: settled {a:?}, own frame {b:?}");
+            assert_eq!(
+                a, b,
+                "step {index}, ray {ray}: settled {a:?}, own frame {b:?}"
+            );
         }
         water_hits += hits.iter().filter(|h| h.is_some()).count();
         compared += 1;
     }
     assert!(compared >= 80, "only {compared} steps compared");
-    assert!(water_hits > 60 * compared, "the fan missed: {water_hits} hits");
+    assert!(
+        water_hits > 60 * compared,
+        "the fan missed: {water_hits} hits"
+    );
     // The scene moved under the fan: the hits of the first and the last step differ.
-    assert_ne!(settled.seen.first_key_value().map(|(_, h)| h), settled.seen.last_key_value().map(|(_, h)| h));
+    assert_ne!(
+        settled.seen.first_key_value().map(|(_, h)| h),
+        settled.seen.last_key_value().map(|(_, h)| h)
+    );
     let mut hashed = 0;
     for (done, hash) in &settled.hashes {
         if let Some(reference) = own.hashes.get(done) {

@@ -86,10 +86,12 @@ fn run(start_at_rest: bool, frames: usize) -> anyhow::Result<Run> {
         if frame == 0 {
             after_first = vertices;
         } else {
-            out.refits.push(report.upkeep.blas_refits + report.upkeep.blas_rebuilds);
+            out.refits
+                .push(report.upkeep.blas_refits + report.upkeep.blas_rebuilds);
             out.geometry_bytes.push(report.upkeep.geometry_bytes);
-            out.pool_vertices_changed +=
-                (vertices.iter().zip(&after_first)).filter(|(a, b)| a != b).count();
+            out.pool_vertices_changed += (vertices.iter().zip(&after_first))
+                .filter(|(a, b)| a != b)
+                .count();
         }
     }
     let sim = engine.world().get::<&WaterSim>(pool)?;

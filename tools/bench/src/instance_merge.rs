@@ -49,14 +49,14 @@ fn merged_triangles(scene: &RenderScene) -> (Vec<Vec3>, Vec<[u32; 3]>) {
     let (mut positions, mut triangles) = (Vec::new(), Vec::new());
     for inst in &scene.instances {
         let start = inst.triangle_base;
-        let end = bases
-            .iter()
-            .copied()
-            .find(|&b| b > start)
-            .unwrap_or(start);
+        let end = bases.iter().copied().find(|&b| b > start).unwrap_or(start);
         let m = inst.world_from_object;
         let rows = m.map(Vec4::from_array);
-        for tri in scene.triangles.get(start as usize..end as usize).unwrap_or(&[]) {
+        for tri in scene
+            .triangles
+            .get(start as usize..end as usize)
+            .unwrap_or(&[])
+        {
             let mut out = [0u32; 3];
             for (k, &i) in tri.indices.iter().enumerate() {
                 let Some(v) = scene.vertices.get((inst.vertex_base + i) as usize) else {
