@@ -44,7 +44,7 @@
 //! The binned top-down build gives the lowest SAH cost and the fastest traversal at the build
 //! time of PLOC medium, so it is the default ([`BuildQuality::BinnedSah`]). On bunny and cornell
 //! all presets trace within ±5 % of each other. The TLAS (rebuilt every frame) uses the binned
-//! SAH build up to 2,048 instances (4 % faster traversal in Reflect's chamber 1; `tlas.rs`) and
+//! SAH build up to 2,048 instances (3 % faster traversal in Reflect's chamber 1; `tlas.rs`) and
 //! PLOC very fast above: 2.7 ms for 10,000 instances, 43 ms for 100,000 (the collapse is most
 //! of it).
 //!

@@ -25,7 +25,7 @@ const TLAS_COSTS: Costs = Costs {
 /// Up to this many instances the per-frame TLAS uses the binned SAH build
 /// ([`BuildQuality::BinnedSah`]); above it PLOC very fast. Measured 2026-12-06 (Intel Xeon, one
 /// thread, `bench instance-merge` / `bench chamber-rays` A/B and `bench build`): on Reflect's
-/// chamber 1 (279 instances) the binned tree traces the game's frame 4 % faster (2.03–2.11
+/// chamber 1 (279 instances) the binned tree traces the game's frame 3 % faster (median) (2.03–2.11
 /// against 1.97–1.98 Mrays per CPU second, three interleaved rounds) for a build of well under a
 /// millisecond; at 10,000 instances it builds in 14.5 ms against PLOC's 9.9 ms, a per-frame cost
 /// that the small gain does not repay.
