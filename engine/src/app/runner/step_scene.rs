@@ -3,8 +3,8 @@
 //! pose and upkeep (the clock leaves no fraction of a step); a frame of several steps (a slow
 //! frame rate) or one that ends between steps (posed part-way to the next step) settles them
 //! again before each step that needs it, so a replay, or the same live input, does the same at
-//! 10 fps as at 60 fps. Only with `Engine::settle_every_step` (the first-person game turns it
-//! on): each settle is an upkeep (deforming meshes refitted, the TLAS rebuilt), which scripted
+//! 10 fps as at 60 fps. Only with `Engine::settle_every_step` (the first- and third-person
+//! games turn it on): each settle is an upkeep (deforming meshes refitted, the TLAS rebuilt), which scripted
 //! runs and captures, whose steps query nothing, do not pay.
 //!
 //! Owns: [`Engine::settle_step_scene`] and [`Engine::update_scene`] (typed scene changes into
