@@ -7,6 +7,10 @@
 //! character's centre (horizontally) and in front of it (within 70° of its heading or of the
 //! camera's view). A `use` press uses it. Usables are found by their place, not by a ray, so a
 //! lever seen past the character's own shoulder is usable as soon as the character stands at it.
+//! A use press with no usable in front lifts the light body in front, or puts the held one down;
+//! the primary action throws it (`third_person_hands`). The character plays its model's
+//! `pick_up` clip as it lifts or puts down, its `push` clip while it leans into a body, and the
+//! push clip's upper body over its walk while it carries (`sim::animation::upper_body`).
 //!
 //! Main thread, in the game's fixed step, before physics. Must not: read devices (its input is
 //! a `PlayerInput`), move the body itself (the physics controller does), or know the runner.
@@ -18,13 +22,18 @@ use hecs::{Entity, World};
 use super::follow_camera::{CameraPose, FollowCamera};
 use super::input::PlayerInput;
 use super::third_person::ThirdPersonController;
+use super::third_person_hands::{Hands, HandsAct};
 use crate::ecs::{CameraRig, Transform};
 use crate::extract::RenderCamera;
 use crate::sim::animation::{
     ActionKind, AnimResult, CharacterAnimation, heading_direction, request_action,
+    request_upper_body,
 };
-use crate::sim::physics::PhysicsWorld;
+use crate::sim::physics::{CharacterState, PhysicsWorld};
 use crate::sim::triggers::Usable;
+
+/// The clip whose upper body the character holds a carried body with.
+pub const CARRY_CLIP: &str = "push";
 
 /// Cosine of the widest angle between the character's heading (or the camera's view) and a
 /// usable it can use (70°).
@@ -37,6 +46,11 @@ pub struct ThirdPersonStep {
     pub used: Option<String>,
     /// The camera's pose after the step.
     pub camera: Option<CameraPose>,
+    /// What the hands were asked to do.
+    pub hands: HandsAct,
+    /// The character leans into a dynamic body (it walked into one from the side in the last
+    /// physics step) and plays its push clip.
+    pub pushing: bool,
 }
 
 /// A level character driven in third person.
@@ -52,7 +66,10 @@ pub struct ThirdPersonPlayer {
     pub controller: ThirdPersonController,
     /// How far from the character's centre (horizontally) a usable's origin may be, metres.
     pub reach_m: f32,
+    /// What it lifts and carries.
+    pub hands: Hands,
     focus: Option<(Entity, Usable)>,
+    pushing: bool,
 }
 
 impl ThirdPersonPlayer {
@@ -76,7 +93,9 @@ impl ThirdPersonPlayer {
             follow,
             controller: ThirdPersonController::default(),
             reach_m: 1.8,
+            hands: Hands::default(),
             focus: None,
+            pushing: false,
         };
         // Place the camera behind the character before the first step.
         let centre = player.centre(world, None);
@@ -130,6 +149,25 @@ impl ThirdPersonPlayer {
         self.focus.as_ref()
     }
 
+    /// Whether it leaned into a dynamic body at its last step (and played its push clip).
+    pub fn pushing(&self) -> bool {
+        self.pushing
+    }
+
+    /// The body it carries now.
+    pub fn held(&self, world: &World) -> Option<Entity> {
+        self.hands.held(world)
+    }
+
+    /// The level was spawned again (the editor): play `body` drawn by `visual`; whatever the
+    /// hands held is gone with the old entities.
+    pub fn respawned(&mut self, body: Entity, visual: Entity) {
+        self.body = body;
+        self.visual = visual;
+        self.hands.forget();
+        self.focus = None;
+    }
+
     /// One fixed step of `dt_seconds`: camera, move, focus, use.
     pub fn step(
         &mut self,
@@ -158,9 +196,43 @@ impl ThirdPersonPlayer {
             (Some((_, usable)), true) => Some(usable.event.clone()),
             _ => None,
         };
+        let heading = self.heading(world);
+        let hands = self.hands.step(
+            world,
+            physics,
+            self.body,
+            centre,
+            heading,
+            &facing,
+            self.reach_m,
+            input.use_pressed && used.is_none(),
+            input.primary_pressed,
+        );
+        // A model without the clip just goes on walking.
+        if matches!(hands, HandsAct::Take(_) | HandsAct::PutDown) {
+            let _ = self.request_action(world, "pick_up", ActionKind::Once);
+        }
+        // Carrying: the arms hold the body out in front (the push clip's upper body) while
+        // the legs walk.
+        let carrying = match hands {
+            HandsAct::Take(_) => true,
+            HandsAct::PutDown | HandsAct::Throw => false,
+            HandsAct::Nothing => self.hands.carrying(),
+        };
+        if carrying {
+            let _ = request_upper_body(world, self.body, CARRY_CLIP);
+        }
+        self.pushing = world
+            .get::<&CharacterState>(self.body)
+            .is_ok_and(|s| s.pushing);
+        if self.pushing {
+            let _ = self.request_action(world, "push", ActionKind::Held);
+        }
         ThirdPersonStep {
             used,
             camera: Some(pose),
+            hands,
+            pushing: self.pushing,
         }
     }
 }

@@ -2,7 +2,9 @@
 //! (`characters` in the file) driven by a [`ThirdPersonPlayer`] with its follow camera. Each
 //! fixed step turns the step's actions into a `PlayerInput` (`player_input.rs`, with the
 //! player's settings), steps the player, and sends the event of the usable it used to the
-//! level's rules; it keeps the same log as the first-person game ([`Happened`]). Games such as
+//! level's rules; it keeps the same log as the first-person game ([`Happened`]). The player
+//! lifts, carries, puts down and throws light bodies and pushes heavy ones (its hands,
+//! `player::Hands`); the prompt says what E does. Games such as
 //! It's About Time wrap it and add their own rules; the playground plays any level with a
 //! character in it.
 //!
@@ -20,6 +22,12 @@ use crate::app::runner::{Game, HudInfo, LevelEntry, LevelEvent, SetupError, Shel
 use crate::app::runner::{ShellInfo, Step};
 use crate::level::PlayableLevel;
 use crate::player::ThirdPersonPlayer;
+
+/// The prompt while the character carries a body.
+pub const CARRY_PROMPT: &str = "E  put down · left mouse  throw";
+
+/// The prompt while a body the character can lift is in front of it.
+pub const TAKE_PROMPT: &str = "E  pick up";
 
 /// The game name replays of [`ThirdPersonGame`] carry unless the game sets its own.
 pub const THIRD_PERSON_GAME: &str = "candela-third-person";
@@ -123,12 +131,17 @@ impl ThirdPersonGame {
         &self.log
     }
 
-    /// The prompt of the usable the character faces.
+    /// The prompt for what the character faces: the usable's own, else what E does with the
+    /// body it carries or could lift.
     pub fn prompt(&self) -> Option<String> {
-        self.player
-            .as_ref()
-            .and_then(|p| p.focus())
-            .map(|(_, u)| u.prompt.clone())
+        let player = self.player.as_ref()?;
+        if let Some((_, usable)) = player.focus() {
+            Some(usable.prompt.clone())
+        } else if player.hands.carrying() {
+            Some(CARRY_PROMPT.into())
+        } else {
+            player.hands.takeable().map(|_| TAKE_PROMPT.into())
+        }
     }
 
     /// Where the steps' input comes from once set up (a replay in a window; the devices by
@@ -254,8 +267,7 @@ impl EditHooks for ThirdPersonGame {
             self.player.as_mut(),
             name.and_then(|n| spawned.characters.get(n)),
         ) {
-            player.body = hero.body;
-            player.visual = hero.visual;
+            player.respawned(hero.body, hero.visual);
         }
     }
 }
@@ -276,7 +288,10 @@ impl ShellHooks for ThirdPersonGame {
     fn hud(&self) -> HudInfo {
         HudInfo {
             crosshair: false,
-            objective: Some("Walk with WASD, turn the camera with the mouse; E uses".into()),
+            objective: Some(
+                "Walk with WASD, turn the camera with the mouse; E uses, picks up and puts down"
+                    .into(),
+            ),
             prompt: self.prompt(),
             ..HudInfo::default()
         }

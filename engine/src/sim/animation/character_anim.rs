@@ -19,6 +19,7 @@ use super::action::{ActionKind, ActionRequest, ActionSlot};
 use super::error::AnimResult;
 use super::skinned_entities::SkinnedAnimator;
 use super::state_machine::{Locomotion, StateChange, StateMachine};
+use super::upper_body::UpperBodySlot;
 use crate::ecs::Transform;
 use crate::sim::physics::CharacterState;
 
@@ -53,6 +54,8 @@ pub struct CharacterAnimation {
     pub airborne_seconds: f32,
     /// The action asked for this step and the one playing.
     pub action: ActionSlot,
+    /// The clip asked for on the upper body this step and the one playing there.
+    pub upper: UpperBodySlot,
 }
 
 impl CharacterAnimation {
@@ -73,6 +76,7 @@ impl CharacterAnimation {
             smoothed_speed_mps: 0.0,
             airborne_seconds: 0.0,
             action: ActionSlot::default(),
+            upper: UpperBodySlot::default(),
         }
     }
 
@@ -93,6 +97,9 @@ impl CharacterAnimation {
                     p.time_seconds.to_bits(),
                 ]
             }));
+        }
+        if let Some(player) = player {
+            words.extend(self.upper.state_words(player));
         }
         words
     }
@@ -164,6 +171,7 @@ pub fn animate_characters(world: &mut World, dt_seconds: f64) {
         let change = match world.get::<&mut SkinnedAnimator>(visual) {
             Ok(mut animator) => {
                 let anim = &mut *anim;
+                anim.upper.update(&mut animator.player, dt_seconds);
                 anim.action.update(
                     &mut anim.machine,
                     &mut animator.player,
@@ -200,5 +208,21 @@ pub fn request_action(
     };
     let index = animator.model.find_clip(clip)?;
     anim.request_action(ActionRequest::new(index, kind));
+    Ok(true)
+}
+
+/// Asks the character `body` to play its model's clip `clip` (by name, or index in decimal) on
+/// its upper body this step, over its locomotion (`upper_body`): held, so ask every step it
+/// should go on. Returns whether `body` is an animated character; a clip the model lacks, or a
+/// model without the upper body's joint, is an error naming the model's file.
+pub fn request_upper_body(world: &mut World, body: Entity, clip: &str) -> AnimResult<bool> {
+    let Ok(mut anim) = world.get::<&mut CharacterAnimation>(body) else {
+        return Ok(false);
+    };
+    let Ok(animator) = world.get::<&SkinnedAnimator>(anim.visual) else {
+        return Ok(false);
+    };
+    let index = animator.model.find_clip(clip)?;
+    anim.upper.request(&animator.model, index)?;
     Ok(true)
 }

@@ -34,11 +34,12 @@ mod skin;
 mod skinned_entities;
 mod speed_blend;
 mod state_machine;
+mod upper_body;
 
 pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
 pub use action::{ActionKind, ActionRequest, ActionSlot};
 pub use character_anim::{
-    CharacterAnimation, animate_characters, heading_direction, request_action,
+    CharacterAnimation, animate_characters, heading_direction, request_action, request_upper_body,
 };
 pub use clip::{Channel, Clip, ClipEvent, Interpolation, Property, check_clip};
 pub use deform::{
@@ -58,4 +59,7 @@ pub use speed_blend::{BlendPartner, SpeedBlend};
 pub use state_machine::{
     AnimState, Contact, Locomotion, StateChange, StateCondition, StateMachine, StateMachineError,
     rate,
+};
+pub use upper_body::{
+    UPPER_BODY_JOINT, UPPER_FADE_SECONDS, UpperBodySlot, UpperLayer, subtree_mask,
 };

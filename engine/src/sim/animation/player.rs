@@ -16,6 +16,7 @@
 use super::clip::{Clip, ClipEvent};
 use super::pose::Pose;
 use super::speed_blend::BlendPartner;
+use super::upper_body::UpperLayer;
 pub use crate::assets::PlayMode;
 
 /// Cycles (loops or ping-pong legs) one tick walks through before skipping the rest.
@@ -169,6 +170,8 @@ pub struct AnimationPlayer {
     fading_out: Option<Playback>,
     fade_elapsed_seconds: f64,
     fade_seconds: f64,
+    /// A clip blended over the upper body (`upper_body`).
+    layer: Option<UpperLayer>,
 }
 
 impl AnimationPlayer {
@@ -229,6 +232,21 @@ impl AnimationPlayer {
         }
     }
 
+    /// Sets or clears the upper-body layer.
+    pub fn set_layer(&mut self, layer: Option<UpperLayer>) {
+        self.layer = layer;
+    }
+
+    /// The upper-body layer, if any.
+    pub fn layer(&self) -> Option<&UpperLayer> {
+        self.layer.as_ref()
+    }
+
+    /// The upper-body layer, to fade it.
+    pub fn layer_mut(&mut self) -> Option<&mut UpperLayer> {
+        self.layer.as_mut()
+    }
+
     /// The weight of the current clip: 1, or in [0, 1) while a crossfade runs.
     pub fn current_weight(&self) -> f32 {
         match &self.fading_out {
@@ -252,10 +270,15 @@ impl AnimationPlayer {
         if let Some(playback) = &mut self.current {
             playback.advance(clips, dt_seconds, &mut fired);
         }
+        if let Some(layer) = &mut self.layer {
+            // The layer's events are not fired: the locomotion's are the character's.
+            layer.playback.advance(clips, dt_seconds, &mut Vec::new());
+        }
         fired
     }
 
-    /// The pose now: `rest` with the current clip applied, blended with the clip fading out.
+    /// The pose now: `rest` with the current clip applied, blended with the clip fading out,
+    /// then the upper-body layer blended over the nodes of its mask by its weight.
     pub fn pose(&self, clips: &[Clip], rest: &Pose) -> Pose {
         let mut pose = rest.clone();
         let apply = |pose: &mut Pose, playback: &Playback| {
@@ -289,6 +312,13 @@ impl AnimationPlayer {
             (None, Some(current)) => apply(&mut pose, current),
             (Some(out), None) => apply(&mut pose, out),
             (None, None) => {}
+        }
+        if let Some(layer) = self.layer.as_ref().filter(|l| l.weight > 0.0)
+            && let Some(clip) = clips.get(layer.playback.clip)
+        {
+            let mut upper = rest.clone();
+            upper.apply_clip(clip, layer.playback.time_seconds);
+            pose.blend_masked(&upper, &layer.mask, layer.weight);
         }
         pose
     }

@@ -3,7 +3,7 @@
 //! crossfades, and turned into world matrices over a node hierarchy.
 //!
 //! Owns: [`NodeTree`] (the hierarchy and rest transforms), [`Pose`], [`Pose::apply_clip`],
-//! [`Pose::blend`], [`NodeTree::world_matrices`]. Must not: read files or deform vertices.
+//! [`Pose::blend`] (whole or masked), [`NodeTree::world_matrices`]. Must not: read files or deform vertices.
 //! Units: metres, seconds; right-handed, +Y up. Local = T · R · S; world = parent · local.
 //! Rotations are used as stored (see `sample`): the matrix of a non-unit quaternion is
 //! scaled by |q|², as in three.js and glam's `from_scale_rotation_translation`.
@@ -127,26 +127,40 @@ impl Pose {
     /// for crossfades, whose two poses are close and change every frame).
     pub fn blend(&mut self, other: &Pose, weight: f32) {
         let weight = weight.clamp(0.0, 1.0);
-        let count = self.len().min(other.len());
-        for i in 0..count {
-            self.translation[i] = self.translation[i].lerp(other.translation[i], weight);
-            self.scale[i] = self.scale[i].lerp(other.scale[i], weight);
-            let mut target = other.rotation[i];
-            if self.rotation[i].dot(target) < 0.0 {
-                target = -target;
-            }
-            let mixed = self.rotation[i] * (1.0 - weight) + target * weight;
-            if mixed.length_squared() > 0.0 {
-                self.rotation[i] = mixed.normalize();
-            }
-            let (mine, theirs) = (&mut self.weights[i], &other.weights[i]);
-            mine.resize(mine.len().max(theirs.len()), 0.0);
-            for (k, w) in mine.iter_mut().enumerate() {
-                let t = theirs.get(k).copied().unwrap_or(0.0);
-                *w += (t - *w) * weight;
-            }
-            self.animated[i] |= other.animated[i];
+        for i in 0..self.len().min(other.len()) {
+            self.blend_node(other, i, weight);
         }
+    }
+
+    /// Blends node `i` towards `other` by `mask[i] · weight` (a node past the mask's end is
+    /// kept): a layer over part of a body.
+    pub fn blend_masked(&mut self, other: &Pose, mask: &[f32], weight: f32) {
+        for i in 0..self.len().min(other.len()).min(mask.len()) {
+            let w = (mask[i] * weight).clamp(0.0, 1.0);
+            if w > 0.0 {
+                self.blend_node(other, i, w);
+            }
+        }
+    }
+
+    fn blend_node(&mut self, other: &Pose, i: usize, weight: f32) {
+        self.translation[i] = self.translation[i].lerp(other.translation[i], weight);
+        self.scale[i] = self.scale[i].lerp(other.scale[i], weight);
+        let mut target = other.rotation[i];
+        if self.rotation[i].dot(target) < 0.0 {
+            target = -target;
+        }
+        let mixed = self.rotation[i] * (1.0 - weight) + target * weight;
+        if mixed.length_squared() > 0.0 {
+            self.rotation[i] = mixed.normalize();
+        }
+        let (mine, theirs) = (&mut self.weights[i], &other.weights[i]);
+        mine.resize(mine.len().max(theirs.len()), 0.0);
+        for (k, w) in mine.iter_mut().enumerate() {
+            let t = theirs.get(k).copied().unwrap_or(0.0);
+            *w += (t - *w) * weight;
+        }
+        self.animated[i] |= other.animated[i];
     }
 }
 

@@ -23,6 +23,11 @@ use crate::ecs::Transform;
 pub enum CarryRequest {
     /// Pick up the dynamic body under the view's centre, within reach.
     Pick,
+    /// Pick up this entity's dynamic body, wherever it is (the game chose it: a third-person
+    /// character takes the body in front of it, not the one along its camera's view). Refused,
+    /// like [`CarryRequest::Pick`], when the body is not dynamic or heavier than
+    /// [`Carrier::max_mass_kg`].
+    Take(Entity),
     /// Let go: gravity back on, the body keeps its velocity.
     Drop,
     /// Let go and throw: the body leaves along the view at `speed` m/s (added to the
@@ -127,15 +132,13 @@ pub(super) fn drive_carriers(rapier: &mut RapierWorld, world: &mut World, dt: f3
                 }
             }
             Some(CarryRequest::Pick) if !holding => {
-                if let Some((picked, handle)) = pick(rapier, eye, view, reach, ignore_body)
-                    && let Some(body) = rapier.bodies.get_mut(handle)
-                    && body.is_dynamic()
-                    && body.mass() <= max_mass
-                {
-                    body.set_gravity_scale(0.0, true);
-                    if let Ok(carrier) = world.query_one_mut::<&mut Carrier>(entity) {
-                        carrier.held = Some(picked);
-                    }
+                if let Some((picked, handle)) = pick(rapier, eye, view, reach, ignore_body) {
+                    lift(rapier, world, entity, picked, handle, max_mass);
+                }
+            }
+            Some(CarryRequest::Take(picked)) if !holding => {
+                if let Ok(handle) = world.get::<&BodyHandle>(picked).map(|h| h.0) {
+                    lift(rapier, world, entity, picked, handle, max_mass);
                 }
             }
             _ => {}
@@ -217,6 +220,27 @@ fn pick(
     let handle = rapier.colliders.get(collider)?.parent()?;
     let entity = entity_of(rapier.bodies.get(handle)?.user_data)?;
     Some((entity, handle))
+}
+
+/// `carrier` takes `picked` (body `handle`) when it is dynamic and at most `max_mass` kg:
+/// gravity off, held from now on.
+fn lift(
+    rapier: &mut RapierWorld,
+    world: &mut World,
+    carrier: Entity,
+    picked: Entity,
+    handle: rapier3d::prelude::RigidBodyHandle,
+    max_mass: f32,
+) {
+    if let Some(body) = rapier.bodies.get_mut(handle)
+        && body.is_dynamic()
+        && body.mass() <= max_mass
+    {
+        body.set_gravity_scale(0.0, true);
+        if let Ok(c) = world.query_one_mut::<&mut Carrier>(carrier) {
+            c.held = Some(picked);
+        }
+    }
 }
 
 /// Lets go of the carrier's body: gravity back on, velocity kept. Returns the released body.

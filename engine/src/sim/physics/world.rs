@@ -143,6 +143,14 @@ impl PhysicsWorld {
         self.body(entity).map(|b| vec_from_rapier(b.linvel()))
     }
 
+    /// Mass of `entity`'s body, kg, when it is dynamic (`None`: no such body, or a static or
+    /// kinematic one, which no push or lift moves).
+    pub fn dynamic_mass(&self, entity: Entity) -> Option<f32> {
+        self.body(entity)
+            .filter(|b| b.is_dynamic())
+            .map(|b| b.mass())
+    }
+
     /// Whether `entity`'s body sleeps (`None`: no such body).
     pub fn is_sleeping(&self, entity: Entity) -> Option<bool> {
         self.body(entity).map(|b| b.is_sleeping())

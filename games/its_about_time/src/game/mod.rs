@@ -16,7 +16,6 @@ use candela::app::shell::ShellHooks;
 use candela::app::{Engine, Game, Happened, LevelEvent, SetupError, SpawnedLevel, Step};
 use candela::app::{Replay, StepInput, ThirdPersonGame};
 use candela::sim::animation::ActionKind;
-use candela::sim::physics::CharacterState;
 use candela::sky::SkyNow;
 
 use crate::world::{LEVEL_ID, RuinsWorld, TIME_BACK, TIME_FORWARD, actions};
@@ -194,16 +193,13 @@ impl TimeGame {
         }
     }
 
-    /// While the explorer leans into a block (its controller pushed a dynamic body from the
-    /// side in the last step), it plays its model's `push` clip; it walks on when it stops.
+    /// Logs when the explorer begins and stops leaning into a block (the engine's third-person
+    /// player plays its `push` clip meanwhile).
     fn push_pose(&mut self, step: &mut Step<'_>) {
         let Some(player) = self.inner.player() else {
             return;
         };
-        let pushing = (step.world.get::<&CharacterState>(player.body)).is_ok_and(|s| s.pushing);
-        if pushing {
-            let _ = player.request_action(step.world, "push", ActionKind::Held);
-        }
+        let pushing = player.pushing();
         if pushing != self.pushing {
             self.pushing = pushing;
             self.log.push((step.index, TimeEvent::Push(pushing)));
