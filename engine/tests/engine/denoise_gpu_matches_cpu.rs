@@ -111,8 +111,10 @@ fn compare(
     assert_eq!(g.mean.len(), c.mean.len());
     let (gh, gm) = gpu.read_history()?;
     let h = cpu.history();
-    for (rows, cpu_rows, name) in [(&gh, &h.illumination, "history"), (&gm, &h.moments, "moments")]
-    {
+    for (rows, cpu_rows, name) in [
+        (&gh, &h.illumination, "history"),
+        (&gm, &h.moments, "moments"),
+    ] {
         for (i, (a, b)) in cpu_rows.iter().zip(rows.iter()).enumerate() {
             let d = (*a - *b).abs().max_element();
             assert!(
@@ -175,7 +177,12 @@ fn gpu_and_cpu_denoisers_agree_while_the_camera_moves() -> anyhow::Result<()> {
     let params = SvgfParams::default();
     let mut gpu = GpuDenoiser::new(context, params)?;
     let mut cpu = Svgf::new(params);
-    let transforms: Vec<Affine3A> = cornell.scene.instances.iter().map(world_from_object).collect();
+    let transforms: Vec<Affine3A> = cornell
+        .scene
+        .instances
+        .iter()
+        .map(world_from_object)
+        .collect();
     let (mut worst_ratio, mut worst_abs, mut kept, mut reset) = (0.0f32, 0.0f32, 0, 0);
     for k in 0..8u32 {
         let camera = moved(&cornell.desc.camera, 0.7 * k as f32, 0.013 * k as f32);

@@ -176,7 +176,10 @@ impl GpuDenoiser {
             storage("previous ids", bytes),
         );
         let prev_history = storage("previous history", 2 * bytes);
-        let work = [storage("denoise work a", bytes), storage("denoise work b", bytes)];
+        let work = [
+            storage("denoise work a", bytes),
+            storage("denoise work b", bytes),
+        ];
         let n = self.pass_count();
         let uniforms: Vec<wgpu::Buffer> = (0..=n)
             .map(|_| uniform(size_of::<GpuDenoiseUniforms>()))

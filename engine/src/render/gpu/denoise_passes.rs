@@ -210,8 +210,6 @@ pub(super) fn pixel_ids(guides: &Guides) -> Vec<[u32; 4]> {
         .iter()
         .zip(&guides.specular)
         .zip(&guides.depth)
-        .map(|((&instance, &specular), depth)| {
-            [instance, specular as u32, depth.to_bits(), 0]
-        })
+        .map(|((&instance, &specular), depth)| [instance, specular as u32, depth.to_bits(), 0])
         .collect()
 }
