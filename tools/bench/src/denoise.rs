@@ -215,7 +215,7 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
                         .iter()
                         .map(world_from_object)
                         .collect();
-                    let mut step = |g: &mut GpuDenoiser, f: &[Vec3], b: f32| match label {
+                    let step = |g: &mut GpuDenoiser, f: &[Vec3], b: f32| match label {
                         "restart" => g.denoise(f, &guides, 1.0),
                         _ => g.denoise_moving(f, &guides, b, view, transforms.clone()),
                     };
