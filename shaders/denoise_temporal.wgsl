@@ -1,10 +1,13 @@
 // SVGF's temporal stage (twin: engine/src/render/denoise/temporal.rs): blends this frame's
-// demodulated illumination and its luminance moments into each pixel's history (identity
-// reprojection: a pixel's history is its own, updated in place). Entry point denoise_temporal.
+// demodulated illumination and its luminance moments into each pixel's history, updated in
+// place: the pixel's own (ru.mode 0, identity) or the one denoise_reproject.wgsl moved onto it
+// (ru.mode 1: the weight is at least 1/(length + 1), as Reprojection::Moved). Entry point
+// denoise_temporal.
 
 @group(0) @binding(3) var<storage, read> frame: array<vec4<f32>>;
 @group(0) @binding(4) var<storage, read_write> history: array<vec4<f32>>;
 @group(0) @binding(5) var<storage, read_write> moments: array<vec4<f32>>;
+@group(0) @binding(6) var<uniform> ru: GpuReprojectUniforms;
 
 @compute @workgroup_size(8, 8)
 fn denoise_temporal(@builtin(global_invocation_id) id: vec3<u32>) {
@@ -12,10 +15,13 @@ fn denoise_temporal(@builtin(global_invocation_id) id: vec3<u32>) {
         return;
     }
     let i = id.y * du.width + id.x;
-    let blend = du.blend;
+    let h = history[i];
+    var blend = du.blend;
+    if ru.mode == 1u {
+        blend = max(blend, 1.0 / (max(h.w, 0.0) + 1.0));
+    }
     let restart = !(blend < 1.0);
     let c = frame[i].xyz;
-    let h = history[i];
     let m = moments[i];
     if !finite3(c) {
         if restart {

@@ -531,3 +531,42 @@ pub struct GpuDenoiseUniforms {
     pub _padding: u32,
 }
 const _: () = assert!(size_of::<GpuDenoiseUniforms>() == 32);
+
+/// Uniforms of the denoiser's reprojection (`shaders/denoise_reproject.wgsl`, and the temporal
+/// pass's `mode`; render thread): this frame's and the previous frame's pinhole cameras as
+/// `render::denoise::View` holds them (position, metres, in the frame uniforms' space; the
+/// pre-scaled `forward`, `right`, `up`), the previous image's size, how many instance motions
+/// the motion buffer holds, and `mode` (0: identity, each pixel keeps its own history; 1: the
+/// history was reprojected, the temporal weight is at least 1/(length + 1)). Twin of
+/// `render::denoise::reproject`'s inputs. 128 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuReprojectUniforms {
+    pub camera_position: [f32; 3],
+    pub mode: u32,
+    pub camera_forward: [f32; 3],
+    pub instances: u32,
+    pub camera_right: [f32; 3],
+    pub _padding0: u32,
+    pub camera_up: [f32; 3],
+    pub _padding1: u32,
+    pub prev_position: [f32; 3],
+    pub prev_width: u32,
+    pub prev_forward: [f32; 3],
+    pub prev_height: u32,
+    pub prev_right: [f32; 3],
+    pub _padding2: u32,
+    pub prev_up: [f32; 3],
+    pub _padding3: u32,
+}
+const _: () = assert!(size_of::<GpuReprojectUniforms>() == 128);
+
+/// One instance's motion since the previous frame, for the denoiser's reprojection: its
+/// previous world-from-object times this frame's object-from-world (a point on the instance
+/// now, in world space, to where it was), three rows of a 3×4 affine matrix. 48 bytes.
+#[repr(C, align(16))]
+#[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
+pub struct GpuMotion {
+    pub prev_from_now: [[f32; 4]; 3],
+}
+const _: () = assert!(size_of::<GpuMotion>() == 48);

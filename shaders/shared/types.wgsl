@@ -242,3 +242,26 @@ struct GpuDenoiseUniforms {
     sigma_l: f32,
     _padding: u32,
 }
+
+struct GpuReprojectUniforms {
+    camera_position: vec3<f32>,
+    mode: u32,
+    camera_forward: vec3<f32>,
+    instances: u32,
+    camera_right: vec3<f32>,
+    _padding0: u32,
+    camera_up: vec3<f32>,
+    _padding1: u32,
+    prev_position: vec3<f32>,
+    prev_width: u32,
+    prev_forward: vec3<f32>,
+    prev_height: u32,
+    prev_right: vec3<f32>,
+    _padding2: u32,
+    prev_up: vec3<f32>,
+    _padding3: u32,
+}
+
+struct GpuMotion {
+    prev_from_now: array<vec4<f32>, 3>,
+}

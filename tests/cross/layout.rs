@@ -189,6 +189,25 @@ fn rust_layouts() -> Vec<RustLayout> {
             sigma_l,
             _padding
         }),
+        rust_layout!(GpuReprojectUniforms {
+            camera_position,
+            mode,
+            camera_forward,
+            instances,
+            camera_right,
+            _padding0,
+            camera_up,
+            _padding1,
+            prev_position,
+            prev_width,
+            prev_forward,
+            prev_height,
+            prev_right,
+            _padding2,
+            prev_up,
+            _padding3
+        }),
+        rust_layout!(GpuMotion { prev_from_now }),
     ]
 }
 

@@ -78,7 +78,11 @@ fn trace(
         Some(d) => {
             puffin::profile_scope!("denoise");
             let seconds = d.run(scene, &uniforms, tracer, blend, upscale)?;
-            (seconds, commit.capture.then(|| d.film().clone()))
+            let film = match commit.capture {
+                true => Some(d.capture()?),
+                false => None,
+            };
+            (seconds, film)
         }
         None => (
             0.0,

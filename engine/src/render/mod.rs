@@ -7,7 +7,7 @@ pub mod balance;
 pub(crate) mod camera;
 pub mod cpu;
 pub mod denoise;
-pub(crate) mod denoise_stage;
+pub mod denoise_stage;
 mod device_loss;
 pub mod film;
 mod frame_render;
@@ -19,5 +19,6 @@ pub(crate) mod thread;
 pub(crate) mod tracer;
 
 pub use camera::{FrameSettings, frame_uniforms, method_of};
+pub use denoise_stage::DenoiseStage;
 pub use thread::{OpenTracer, RenderConfig, RenderThread, Rendered, TracerChoice};
 pub use tracer::{FilmView, RenderError, RenderStats, Tracer};

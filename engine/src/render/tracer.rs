@@ -96,4 +96,9 @@ pub trait Tracer {
     fn device_lost(&self) -> Option<String> {
         None
     }
+    /// The wgpu device the film lives on (`None`: the film is in host memory), so that the
+    /// denoiser can run on the same device and read the film in place (`denoise_stage`).
+    fn gpu_context(&self) -> Option<std::sync::Arc<super::gpu::GpuContext>> {
+        None
+    }
 }

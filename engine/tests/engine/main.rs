@@ -59,6 +59,7 @@ mod denoise_kernels;
 mod denoise_quality;
 mod denoise_reproject;
 mod denoise_robustness;
+mod denoise_stage_gpu;
 mod editor_full_disk;
 mod editor_kill;
 mod editor_mode;

@@ -3,7 +3,7 @@
 //! history restarted) and with a converged history, side by side with the per-pixel denoiser
 //! it replaced (`denoise_reference.rs`; the largest relative difference of their outputs is
 //! printed), and of the GPU twin on this machine's adapter (lavapipe without a GPU; upload,
-//! passes and readback). Then the RMSE
+//! passes and readback; the converged row with its per-pixel reprojection pass). Then the RMSE
 //! against a converged reference of the Cornell box at 1, 2 and 4 spp with and without the
 //! denoiser (mean and spread over seeds, one frame each), and the bias it adds to a converged
 //! image (64 frames of 16 spp through its history, against the reference). Prints Markdown
@@ -19,7 +19,7 @@ use candela::assets::{AssetRoot, SceneDesc, load_scene};
 use candela::layout::GpuFrameUniforms;
 use candela::render::cpu::CpuTracer;
 use candela::render::cpu::guides::trace_guides;
-use candela::render::denoise::{Svgf, SvgfParams};
+use candela::render::denoise::{Svgf, SvgfParams, View, world_from_object};
 use candela::render::gpu::{GpuContext, GpuDenoiser};
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use candela::scene::RenderScene;
@@ -204,14 +204,31 @@ pub fn run(args: &DenoiseArgs) -> anyhow::Result<()> {
                     worst = worst.max(d);
                 }
             }
-            let gpu_ms = match gpu.as_mut().filter(|_| label == "restart") {
+            // The GPU twin: a cut (identity), or the converged history with the per-pixel
+            // reprojection pass running every frame (a still view: `denoise_moving`).
+            let gpu_ms = match gpu.as_mut() {
                 Some(g) => {
-                    g.denoise(&frame, &guides, 1.0)?;
+                    let view = View::of(&u);
+                    let transforms: Vec<_> = cornell
+                        .scene
+                        .instances
+                        .iter()
+                        .map(world_from_object)
+                        .collect();
+                    let step = |g: &mut GpuDenoiser, f: &[Vec3], b: f32| match label {
+                        "restart" => g.denoise(f, &guides, 1.0),
+                        _ => g.denoise_moving(f, &guides, b, view, transforms.clone()),
+                    };
+                    for k in 0..=warm {
+                        let b = 1.0 / (k + 1) as f32;
+                        step(g, &frames[k as usize % frames.len()], b)?;
+                    }
                     g.read_output()?;
                     let mut times = Vec::new();
-                    for _ in 0..args.runs {
+                    for run in 0..args.runs {
+                        let f = &frames[(warm as usize + 1 + run) % frames.len()];
                         let t = Instant::now();
-                        g.denoise(&frame, &guides, 1.0)?;
+                        step(g, f, blend)?;
                         g.read_output()?;
                         times.push(t.elapsed().as_secs_f64());
                     }

@@ -21,7 +21,7 @@ pub mod weights;
 pub use atrous::{Pass, atrous_pixel};
 pub use guides::{Guides, NO_INSTANCE};
 pub use reproject::{
-    DEPTH_TOLERANCE, NORMAL_COS, PrevFrame, ReprojectStats, SNAP_PIXELS, View, reproject,
+    DEPTH_TOLERANCE, NORMAL_COS, PrevFrame, ReprojectStats, SNAP_PIXELS, View, motions, reproject,
     world_from_object,
 };
 pub use svgf::{DenoiseError, Svgf, SvgfParams};

@@ -99,6 +99,19 @@ pub fn world_from_object(instance: &GpuInstance) -> Affine3A {
     }
 }
 
+/// Each instance's motion since the previous frame: its previous world-from-object times this
+/// frame's object-from-world (a point on it now, in world space, to where it was), by instance
+/// index; identity for an instance the previous frame did not have. The GPU twin uploads these.
+pub fn motions(before: &[Affine3A], now: &[Affine3A]) -> Vec<Affine3A> {
+    now.iter()
+        .enumerate()
+        .map(|(k, now)| match before.get(k) {
+            Some(before) => *before * now.inverse(),
+            None => Affine3A::IDENTITY,
+        })
+        .collect()
+}
+
 /// What reprojection keeps of the previous frame.
 #[derive(Clone, Debug)]
 pub struct PrevFrame {
@@ -136,16 +149,8 @@ pub fn reproject(
         let n = w as usize * h as usize;
         return (out, ReprojectStats { kept: 0, reset: n });
     }
-    // Each instance's motion (previous world-from-object times this frame's object-from-world),
-    // once per frame rather than once per pixel.
-    let moved: Vec<Affine3A> = world_from_object
-        .iter()
-        .enumerate()
-        .map(|(k, now)| match prev.world_from_object.get(k) {
-            Some(before) => *before * now.inverse(),
-            None => Affine3A::IDENTITY,
-        })
-        .collect();
+    // Each instance's motion, once per frame rather than once per pixel.
+    let moved = motions(&prev.world_from_object, world_from_object);
     let rows: Vec<Vec<(Vec4, Vec4)>> = (0..h)
         .into_par_iter()
         .map(|y| {

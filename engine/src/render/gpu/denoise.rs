@@ -1,34 +1,35 @@
 //! The GPU denoiser: the SVGF passes of `render::denoise` (the CPU reference) as wgpu compute
-//! passes (`shaders/denoise_temporal.wgsl`, `denoise_variance.wgsl`, `denoise_atrous.wgsl`).
+//! passes (`denoise_passes`: `shaders/denoise_reproject.wgsl`, `denoise_temporal.wgsl`,
+//! `denoise_variance.wgsl`, `denoise_atrous.wgsl`).
 //!
-//! Owns: [`GpuDenoiser`] — its pipelines, the history and work buffers on the device, the
-//! upload of one frame's radiance and guides, one submission per frame (temporal, variance,
-//! `iterations` à-trous passes, the last remodulating into the output), and reading the
-//! output (and the history, for tests) back. Linear radiance in and out; render thread.
-//! Output rows are `vec4<f32>` (xyz = denoised radiance), like the GPU tracer's film, so a
-//! presenter on the same device can read [`GpuDenoiser::output_view`] in place.
+//! Owns: [`GpuDenoiser`] — the history and work buffers on the device, the previous frame's
+//! guides, ids and history (copied at the end of each frame) with its view and instance
+//! transforms on the host, the upload of one frame's radiance and guides, one submission per
+//! frame (reprojection when the camera or an instance may have moved, temporal, variance,
+//! `iterations` à-trous passes, the last remodulating into the output), and reading the output
+//! (and the history, for tests) back. [`GpuDenoiser::denoise_moving`] twins
+//! `Svgf::denoise_moving`, [`GpuDenoiser::denoise`] `Svgf::denoise`. Linear radiance in and
+//! out; render thread. Output rows are `vec4<f32>` (xyz = denoised radiance), like the GPU
+//! tracer's film, so a presenter on the same device can read [`GpuDenoiser::output_view`] in
+//! place; a frame already on the device can be handed over with [`GpuDenoiser::frame_buffer`].
 //! Must not: trace rays or know the scene.
 
 use std::sync::Arc;
 
-use glam::{Vec3, Vec4};
+use glam::{Affine3A, Vec3, Vec4};
 
 use super::context::{GpuContext, map_for_reading};
-use super::shaders::{
-    DENOISE_ATROUS, DENOISE_SHARED, DENOISE_TEMPORAL, DENOISE_VARIANCE, compose_with,
+use super::denoise_passes::{
+    ATROUS, Passes, REPROJECT, TEMPORAL, VARIANCE, group, motion_rows, pixel_ids,
+    reproject_uniforms,
 };
-use crate::layout::GpuDenoiseUniforms;
-use crate::render::denoise::{Guides, SvgfParams};
+use crate::layout::{GpuDenoiseUniforms, GpuMotion, GpuReprojectUniforms};
+use crate::render::denoise::{Guides, SvgfParams, View, motions};
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError};
 
 /// Workgroup edge of every denoiser pass (8×8).
 const GROUP: u32 = 8;
-
-struct Pipeline {
-    pipeline: wgpu::ComputePipeline,
-    layout: wgpu::BindGroupLayout,
-}
 
 /// Buffers of one image size and the bind groups over them.
 struct Sized {
@@ -40,93 +41,40 @@ struct Sized {
     history: wgpu::Buffer,
     moments: wgpu::Buffer,
     output: wgpu::Buffer,
+    ids: wgpu::Buffer,
+    prev_guides: wgpu::Buffer,
+    prev_ids: wgpu::Buffer,
+    /// The previous frame's history rows, then its moments.
+    prev_history: wgpu::Buffer,
     /// Uniforms: [temporal/variance, à-trous pass 0, 1, …].
     uniforms: Vec<wgpu::Buffer>,
+    reproject_uniforms: wgpu::Buffer,
+    /// Instance motions (room for `motion_capacity`) and the reprojection's group over them.
+    motions: wgpu::Buffer,
+    motion_capacity: usize,
+    /// Built once the buffers it binds are in place.
+    reproject: Option<wgpu::BindGroup>,
     temporal: wgpu::BindGroup,
     variance: wgpu::BindGroup,
     atrous: Vec<wgpu::BindGroup>,
     _work: [wgpu::Buffer; 2],
 }
 
+/// What the reprojection keeps of the previous frame on the host.
+struct Prev {
+    view: View,
+    world_from_object: Vec<Affine3A>,
+}
+
 /// SVGF on the wgpu device.
 pub struct GpuDenoiser {
     context: Arc<GpuContext>,
     pub params: SvgfParams,
-    temporal: Pipeline,
-    variance: Pipeline,
-    atrous: Pipeline,
+    passes: Passes,
     sized: Option<Sized>,
-}
-
-fn pipeline(
-    device: &wgpu::Device,
-    source: super::shaders::ShaderSource,
-    entry: &str,
-    writable: &[bool],
-) -> Pipeline {
-    let buffer = |binding: u32, ty: wgpu::BufferBindingType| wgpu::BindGroupLayoutEntry {
-        binding,
-        visibility: wgpu::ShaderStages::COMPUTE,
-        ty: wgpu::BindingType::Buffer {
-            ty,
-            has_dynamic_offset: false,
-            min_binding_size: None,
-        },
-        count: None,
-    };
-    let mut entries = vec![
-        buffer(0, wgpu::BufferBindingType::Uniform),
-        buffer(1, wgpu::BufferBindingType::Storage { read_only: true }),
-        buffer(2, wgpu::BufferBindingType::Storage { read_only: true }),
-    ];
-    for (k, &w) in writable.iter().enumerate() {
-        entries.push(buffer(
-            3 + k as u32,
-            wgpu::BufferBindingType::Storage { read_only: !w },
-        ));
-    }
-    let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
-        label: Some(entry),
-        entries: &entries,
-    });
-    let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
-        label: Some(entry),
-        bind_group_layouts: &[Some(&layout)],
-        immediate_size: 0,
-    });
-    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some(source.name),
-        source: wgpu::ShaderSource::Wgsl(compose_with(DENOISE_SHARED, source).into()),
-    });
-    let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-        label: Some(entry),
-        layout: Some(&pipeline_layout),
-        module: &module,
-        entry_point: Some(entry),
-        compilation_options: Default::default(),
-        cache: None,
-    });
-    Pipeline { pipeline, layout }
-}
-
-fn group(
-    device: &wgpu::Device,
-    layout: &wgpu::BindGroupLayout,
-    buffers: &[&wgpu::Buffer],
-) -> wgpu::BindGroup {
-    let entries: Vec<wgpu::BindGroupEntry> = buffers
-        .iter()
-        .enumerate()
-        .map(|(k, b)| wgpu::BindGroupEntry {
-            binding: k as u32,
-            resource: b.as_entire_binding(),
-        })
-        .collect();
-    device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: Some("denoise"),
-        layout,
-        entries: &entries,
-    })
+    prev: Option<Prev>,
+    /// The buffers were (re)made since the last frame: the next one restarts.
+    fresh: bool,
 }
 
 impl GpuDenoiser {
@@ -134,45 +82,67 @@ impl GpuDenoiser {
     pub fn new(context: Arc<GpuContext>, params: SvgfParams) -> Result<Self, RenderError> {
         let device = &context.device;
         let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
-        let temporal = pipeline(
-            device,
-            DENOISE_TEMPORAL,
-            "denoise_temporal",
-            &[false, true, true],
-        );
-        let variance = pipeline(
-            device,
-            DENOISE_VARIANCE,
-            "denoise_variance",
-            &[false, false, true],
-        );
-        let atrous = pipeline(device, DENOISE_ATROUS, "denoise_atrous", &[false, true]);
+        let passes = Passes::new(device);
         if let Some(error) = pollster::block_on(scope.pop()) {
             return Err(RenderError::Device(error.to_string()));
         }
         Ok(Self {
             context,
             params,
-            temporal,
-            variance,
-            atrous,
+            passes,
             sized: None,
+            prev: None,
+            fresh: false,
         })
     }
 
-    fn passes(&self) -> usize {
+    /// The device the denoiser runs on.
+    pub fn context(&self) -> &Arc<GpuContext> {
+        &self.context
+    }
+
+    fn pass_count(&self) -> usize {
         self.params.passes().len()
+    }
+
+    fn motion_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
+        device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("denoise motions"),
+            size: (capacity.max(1) * size_of::<GpuMotion>()) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        })
+    }
+
+    fn reproject_group(&self, s: &Sized) -> wgpu::BindGroup {
+        group(
+            &self.context.device,
+            &self.passes.reproject,
+            &REPROJECT,
+            &[
+                &s.uniforms[0],
+                &s.guides,
+                &s.reproject_uniforms,
+                &s.ids,
+                &s.prev_guides,
+                &s.prev_ids,
+                &s.prev_history,
+                &s.motions,
+                &s.history,
+                &s.moments,
+            ],
+        )
     }
 
     fn ensure_size(&mut self, width: u32, height: u32) {
         if self.sized.as_ref().is_some_and(|s| {
-            s.width == width && s.height == height && s.atrous.len() == self.passes()
+            s.width == width && s.height == height && s.atrous.len() == self.pass_count()
         }) {
             return;
         }
         let device = &self.context.device;
         let bytes = (width as u64 * height as u64 * 16).max(16);
-        let storage = |label: &str| {
+        let storage = |label: &str, bytes: u64| {
             device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some(label),
                 size: bytes,
@@ -182,33 +152,59 @@ impl GpuDenoiser {
                 mapped_at_creation: false,
             })
         };
-        let (guides, albedo, frame) = (storage("guides"), storage("albedo"), storage("frame"));
-        let (history, moments, output) =
-            (storage("history"), storage("moments"), storage("denoised"));
-        let work = [storage("denoise work a"), storage("denoise work b")];
-        let n = self.passes();
-        let uniforms: Vec<wgpu::Buffer> = (0..=n)
-            .map(|_| {
-                device.create_buffer(&wgpu::BufferDescriptor {
-                    label: Some("denoise uniforms"),
-                    size: size_of::<GpuDenoiseUniforms>() as u64,
-                    usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                    mapped_at_creation: false,
-                })
+        let uniform = |size: usize| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("denoise uniforms"),
+                size: size as u64,
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
             })
+        };
+        let (guides, albedo, frame) = (
+            storage("guides", bytes),
+            storage("albedo", bytes),
+            storage("frame", bytes),
+        );
+        let (history, moments, output) = (
+            storage("history", bytes),
+            storage("moments", bytes),
+            storage("denoised", bytes),
+        );
+        let (ids, prev_guides, prev_ids) = (
+            storage("denoise ids", bytes),
+            storage("previous guides", bytes),
+            storage("previous ids", bytes),
+        );
+        let prev_history = storage("previous history", 2 * bytes);
+        let work = [
+            storage("denoise work a", bytes),
+            storage("denoise work b", bytes),
+        ];
+        let n = self.pass_count();
+        let uniforms: Vec<wgpu::Buffer> = (0..=n)
+            .map(|_| uniform(size_of::<GpuDenoiseUniforms>()))
             .collect();
-        let common = [&uniforms[0], &guides, &albedo];
+        let reproject_uniforms = uniform(size_of::<GpuReprojectUniforms>());
+        let p = &self.passes;
         let temporal = group(
             device,
-            &self.temporal.layout,
-            &[common[0], common[1], common[2], &frame, &history, &moments],
+            &p.temporal,
+            &TEMPORAL,
+            &[
+                &uniforms[0],
+                &guides,
+                &albedo,
+                &frame,
+                &history,
+                &moments,
+                &reproject_uniforms,
+            ],
         );
         let variance = group(
             device,
-            &self.variance.layout,
-            &[
-                common[0], common[1], common[2], &history, &moments, &work[0],
-            ],
+            &p.variance,
+            &VARIANCE,
+            &[&uniforms[0], &guides, &albedo, &history, &moments, &work[0]],
         );
         let atrous = (0..n)
             .map(|k| {
@@ -220,12 +216,14 @@ impl GpuDenoiser {
                 };
                 group(
                     device,
-                    &self.atrous.layout,
+                    &p.atrous,
+                    &ATROUS,
                     &[&uniforms[k + 1], &guides, &albedo, input, out],
                 )
             })
             .collect();
-        self.sized = Some(Sized {
+        let motions = Self::motion_buffer(device, 1);
+        let mut sized = Sized {
             width,
             height,
             guides,
@@ -234,16 +232,42 @@ impl GpuDenoiser {
             history,
             moments,
             output,
+            ids,
+            prev_guides,
+            prev_ids,
+            prev_history,
             uniforms,
+            reproject_uniforms,
+            motions,
+            motion_capacity: 1,
+            reproject: None,
             temporal,
             variance,
             atrous,
             _work: work,
-        });
+        };
+        sized.reproject = Some(self.reproject_group(&sized));
+        self.sized = Some(sized);
+        self.prev = None;
+        self.fresh = true;
+    }
+
+    /// Room for `count` motions (a new buffer and group when it grows).
+    fn ensure_motions(&mut self, count: usize) {
+        let Some(mut s) = self.sized.take() else {
+            return;
+        };
+        if count > s.motion_capacity {
+            s.motion_capacity = count.next_power_of_two();
+            s.motions = Self::motion_buffer(&self.context.device, s.motion_capacity);
+            s.reproject = Some(self.reproject_group(&s));
+        }
+        self.sized = Some(s);
     }
 
     /// Forgets the history (the next frame starts afresh).
     pub fn reset(&mut self) {
+        self.prev = None;
         if let Some(s) = &self.sized {
             let mut encoder = self
                 .context
@@ -251,49 +275,153 @@ impl GpuDenoiser {
                 .create_command_encoder(&Default::default());
             encoder.clear_buffer(&s.history, 0, None);
             encoder.clear_buffer(&s.moments, 0, None);
+            encoder.clear_buffer(&s.prev_history, 0, None);
             self.context.queue.submit([encoder.finish()]);
         }
     }
 
-    /// Denoises one frame, as `Svgf::denoise` does: `frame` is this frame's mean radiance per
-    /// pixel, `blend` its weight against the history (1 restarts). The output stays on the
-    /// device ([`GpuDenoiser::output_view`], [`GpuDenoiser::read_output`]).
+    /// Denoises one frame, as `Svgf::denoise` does (each pixel keeps its own history):
+    /// `frame` is this frame's mean radiance per pixel, `blend` its weight against the history
+    /// (1 restarts). The output stays on the device ([`GpuDenoiser::output_view`],
+    /// [`GpuDenoiser::read_output`]).
     pub fn denoise(
         &mut self,
         frame: &[Vec3],
         guides: &Guides,
         blend: f32,
     ) -> Result<(), RenderError> {
+        self.upload_frame(frame, guides)?;
+        self.run(guides, blend, None)
+    }
+
+    /// Denoises one frame seen from `view` with the instances at `world_from_object` (by
+    /// instance index), as `Svgf::denoise_moving` does: the history of the previous frame given
+    /// here is reprojected onto this frame's pixels (`shaders/denoise_reproject.wgsl`, twin of
+    /// `denoise::reproject`) unless `blend` restarts (NaN or ≥ 1). `view` must be the guides'
+    /// size.
+    pub fn denoise_moving(
+        &mut self,
+        frame: &[Vec3],
+        guides: &Guides,
+        blend: f32,
+        view: View,
+        world_from_object: Vec<Affine3A>,
+    ) -> Result<(), RenderError> {
+        self.upload_frame(frame, guides)?;
+        self.run(guides, blend, Some((view, world_from_object)))
+    }
+
+    /// Like [`GpuDenoiser::denoise_moving`] with the frame already on this device: `film` holds
+    /// `vec4<f32>` rows (xyz = mean radiance) of the guides' size, as the GPU tracer's film.
+    pub fn denoise_device_frame(
+        &mut self,
+        film: &wgpu::Buffer,
+        guides: &Guides,
+        blend: f32,
+        view: View,
+        world_from_object: Vec<Affine3A>,
+    ) -> Result<(), RenderError> {
+        let bytes = guides.len() as u64 * 16;
+        if film.size() < bytes {
+            return Err(RenderError::BadSize {
+                width: guides.width,
+                height: guides.height,
+                reason: format!("the device film holds {} bytes, not {bytes}", film.size()),
+            });
+        }
+        self.check(guides.len(), guides)?;
+        self.ensure_size(guides.width, guides.height);
+        if let Some(s) = &self.sized {
+            let mut encoder = self
+                .context
+                .device
+                .create_command_encoder(&Default::default());
+            encoder.copy_buffer_to_buffer(film, 0, &s.frame, 0, bytes);
+            self.context.queue.submit([encoder.finish()]);
+        }
+        self.run(guides, blend, Some((view, world_from_object)))
+    }
+
+    fn check(&self, frame: usize, guides: &Guides) -> Result<(), RenderError> {
         let (width, height) = (guides.width, guides.height);
-        if width == 0 || height == 0 || !guides.is_consistent() || frame.len() != guides.len() {
+        if width == 0 || height == 0 || !guides.is_consistent() || frame != guides.len() {
             return Err(RenderError::BadSize {
                 width,
                 height,
-                reason: format!(
-                    "{} frame pixels for {} guide pixels",
-                    frame.len(),
-                    guides.len()
-                ),
+                reason: format!("{frame} frame pixels for {} guide pixels", guides.len()),
             });
         }
-        let resized = self
-            .sized
-            .as_ref()
-            .is_none_or(|s| s.width != width || s.height != height);
-        self.ensure_size(width, height);
+        Ok(())
+    }
+
+    fn upload_frame(&mut self, frame: &[Vec3], guides: &Guides) -> Result<(), RenderError> {
+        self.check(frame.len(), guides)?;
+        self.ensure_size(guides.width, guides.height);
+        if let Some(s) = &self.sized {
+            let rows: Vec<Vec4> = frame.iter().map(|c| c.extend(0.0)).collect();
+            self.context
+                .queue
+                .write_buffer(&s.frame, 0, bytemuck::cast_slice(&rows));
+        }
+        Ok(())
+    }
+
+    /// One frame over the uploaded radiance: `moving` is this frame's view and instance
+    /// transforms (`None`: identity, as `Svgf::denoise`).
+    fn run(
+        &mut self,
+        guides: &Guides,
+        blend: f32,
+        moving: Option<(View, Vec<Affine3A>)>,
+    ) -> Result<(), RenderError> {
+        let (width, height) = (guides.width, guides.height);
+        if let Some((view, _)) = &moving
+            && (view.width != width || view.height != height)
+        {
+            return Err(RenderError::BadSize {
+                width,
+                height,
+                reason: format!("the view is {}×{}", view.width, view.height),
+            });
+        }
+        let restart = blend.is_nan() || blend >= 1.0;
+        let prev = self.prev.take();
+        let (ru, motion) = match &moving {
+            Some((view, now)) => match prev {
+                Some(prev) if !restart => {
+                    let moved = motions(&prev.world_from_object, now);
+                    let ru = reproject_uniforms(view, Some(&prev.view), moved.len() as u32);
+                    (ru, Some(motion_rows(&moved)))
+                }
+                _ => (reproject_uniforms(view, None, 0), None),
+            },
+            None => (GpuReprojectUniforms::default(), None),
+        };
+        if let Some(rows) = &motion {
+            self.ensure_motions(rows.len());
+        }
+        self.prev = moving.map(|(view, world_from_object)| Prev {
+            view,
+            world_from_object,
+        });
         let Some(s) = &self.sized else {
             return Err(RenderError::Device("denoiser buffers missing".into()));
         };
+        let resized = std::mem::take(&mut self.fresh);
         let queue = &self.context.queue;
-        let rows: Vec<Vec4> = frame.iter().map(|c| c.extend(0.0)).collect();
-        queue.write_buffer(&s.frame, 0, bytemuck::cast_slice(&rows));
         queue.write_buffer(
             &s.guides,
             0,
             bytemuck::cast_slice(&guides.packed_normal_depth()),
         );
         queue.write_buffer(&s.albedo, 0, bytemuck::cast_slice(&guides.packed_albedo()));
-        let passes = self.params.passes();
+        queue.write_buffer(&s.ids, 0, bytemuck::cast_slice(&pixel_ids(guides)));
+        queue.write_buffer(&s.reproject_uniforms, 0, bytemuck::bytes_of(&ru));
+        if let Some(rows) = &motion
+            && !rows.is_empty()
+        {
+            queue.write_buffer(&s.motions, 0, bytemuck::cast_slice(rows));
+        }
         let mut base = GpuDenoiseUniforms {
             width,
             height,
@@ -305,12 +433,13 @@ impl GpuDenoiser {
             _padding: 0,
         };
         queue.write_buffer(&s.uniforms[0], 0, bytemuck::bytes_of(&base));
-        for (k, pass) in passes.iter().enumerate() {
+        for (k, pass) in self.params.passes().iter().enumerate() {
             base.step = pass.step as u32;
             base.remodulate = pass.remodulate as u32;
             queue.write_buffer(&s.uniforms[k + 1], 0, bytemuck::bytes_of(&base));
         }
         let groups = (width.div_ceil(GROUP), height.div_ceil(GROUP));
+        let p = &self.passes;
         let mut encoder = self
             .context
             .device
@@ -320,18 +449,29 @@ impl GpuDenoiser {
                 label: Some("denoise"),
                 timestamp_writes: None,
             });
-            pass.set_pipeline(&self.temporal.pipeline);
+            if let (1, Some(reproject)) = (ru.mode, &s.reproject) {
+                pass.set_pipeline(&p.reproject.pipeline);
+                pass.set_bind_group(0, reproject, &[]);
+                pass.dispatch_workgroups(groups.0, groups.1, 1);
+            }
+            pass.set_pipeline(&p.temporal.pipeline);
             pass.set_bind_group(0, &s.temporal, &[]);
             pass.dispatch_workgroups(groups.0, groups.1, 1);
-            pass.set_pipeline(&self.variance.pipeline);
+            pass.set_pipeline(&p.variance.pipeline);
             pass.set_bind_group(0, &s.variance, &[]);
             pass.dispatch_workgroups(groups.0, groups.1, 1);
-            pass.set_pipeline(&self.atrous.pipeline);
+            pass.set_pipeline(&p.atrous.pipeline);
             for g in &s.atrous {
                 pass.set_bind_group(0, g, &[]);
                 pass.dispatch_workgroups(groups.0, groups.1, 1);
             }
         }
+        // What the next frame reprojects from.
+        let bytes = width as u64 * height as u64 * 16;
+        encoder.copy_buffer_to_buffer(&s.history, 0, &s.prev_history, 0, bytes);
+        encoder.copy_buffer_to_buffer(&s.moments, 0, &s.prev_history, bytes, bytes);
+        encoder.copy_buffer_to_buffer(&s.guides, 0, &s.prev_guides, 0, bytes);
+        encoder.copy_buffer_to_buffer(&s.ids, 0, &s.prev_ids, 0, bytes);
         queue.submit([encoder.finish()]);
         Ok(())
     }

@@ -3,6 +3,7 @@
 
 mod context;
 mod denoise;
+mod denoise_passes;
 mod dispatch;
 mod ray_batch;
 mod shaders;

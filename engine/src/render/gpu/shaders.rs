@@ -59,6 +59,9 @@ pub const PRESENT_SHARED: &[ShaderSource] = &[shader!("shared/types.wgsl")];
 pub const DENOISE_SHARED: &[ShaderSource] =
     &[shader!("shared/types.wgsl"), shader!("shared/denoise.wgsl")];
 
+/// The denoiser's per-pixel reprojection of its history (entry point `denoise_reproject`).
+pub const DENOISE_REPROJECT: ShaderSource = shader!("denoise_reproject.wgsl");
+
 /// SVGF's temporal stage (entry point `denoise_temporal`).
 pub const DENOISE_TEMPORAL: ShaderSource = shader!("denoise_temporal.wgsl");
 
@@ -112,7 +115,12 @@ mod tests {
 
     #[test]
     fn denoise_passes_validate() {
-        for pass in [DENOISE_TEMPORAL, DENOISE_VARIANCE, DENOISE_ATROUS] {
+        for pass in [
+            DENOISE_REPROJECT,
+            DENOISE_TEMPORAL,
+            DENOISE_VARIANCE,
+            DENOISE_ATROUS,
+        ] {
             validates(compose_with(DENOISE_SHARED, pass));
         }
     }

@@ -397,4 +397,8 @@ impl Tracer for GpuTracer {
     fn device_lost(&self) -> Option<String> {
         self.context.lost()
     }
+
+    fn gpu_context(&self) -> Option<Arc<GpuContext>> {
+        Some(self.context.clone())
+    }
 }

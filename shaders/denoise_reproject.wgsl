@@ -1,0 +1,171 @@
+// The denoiser's per-pixel reprojection (twin: engine/src/render/denoise/reproject.rs, the
+// reference): where each pixel of this frame was in the previous one, and whether the history
+// found there is the same surface. A pixel's world position is its depth along its centre ray;
+// a point on an instance moves with the instance (its GpuMotion), then projects into the
+// previous view; the history is gathered bilinearly from the 2×2 previous pixels around it,
+// each tap kept only if it saw the same instance, a normal within NORMAL_COS and the expected
+// depth within DEPTH_TOLERANCE; a point within SNAP_PIXELS of a pixel centre takes that pixel
+// alone. Nothing kept, a specular pixel or a point off screen: length 0. Formulas and their
+// order match the Rust twin (glam's Vec3 dot, normalize and Affine3A::transform_point3), so
+// the two differ only by f32 rounding. Entry point denoise_reproject.
+//
+// Bindings besides the shared ones (0 uniforms, 1 guides: its xyz is the raw normal): 3 the
+// reprojection uniforms; 4 this frame's and 6 the previous frame's ids (instance, specular,
+// raw depth bits, 0); 5 the previous guides; 7 the previous history (illumination rows
+// 0..n, moments rows n..2n); 8 the instances' motions; 9, 10 the reprojected history out.
+
+@group(0) @binding(3) var<uniform> ru: GpuReprojectUniforms;
+@group(0) @binding(4) var<storage, read> ids: array<vec4<u32>>;
+@group(0) @binding(5) var<storage, read> prev_guides: array<vec4<f32>>;
+@group(0) @binding(6) var<storage, read> prev_ids: array<vec4<u32>>;
+@group(0) @binding(7) var<storage, read> prev_history: array<vec4<f32>>;
+@group(0) @binding(8) var<storage, read> motions: array<GpuMotion>;
+@group(0) @binding(9) var<storage, read_write> history: array<vec4<f32>>;
+@group(0) @binding(10) var<storage, read_write> moments: array<vec4<f32>>;
+
+const NORMAL_COS: f32 = 0.9;
+const DEPTH_TOLERANCE: f32 = 0.05;
+const SNAP_PIXELS: f32 = 1e-2;
+const NO_INSTANCE: u32 = 0xffffffffu;
+
+// glam's Vec3::dot, in its order (no fused multiply-add asked for).
+fn dot3(a: vec3<f32>, b: vec3<f32>) -> f32 {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// Unit direction through the centre of pixel (x, y) of this frame (View::centre_direction).
+fn centre_direction(x: u32, y: u32) -> vec3<f32> {
+    let sx = 2.0 * (f32(x) + 0.5) / f32(du.width) - 1.0;
+    let sy = 1.0 - 2.0 * (f32(y) + 0.5) / f32(du.height);
+    let d = ru.camera_forward + ru.camera_right * sx + ru.camera_up * sy;
+    return d * (1.0 / sqrt(dot3(d, d)));
+}
+
+// View::project_direction in the previous view: image coordinates (pixels, centres at +0.5)
+// in xy, z 1 when the direction projects (in front of the camera, finite), else 0.
+fn project_previous(d: vec3<f32>) -> vec3<f32> {
+    let f2 = dot3(ru.prev_forward, ru.prev_forward);
+    let r2 = dot3(ru.prev_right, ru.prev_right);
+    let u2 = dot3(ru.prev_up, ru.prev_up);
+    if f2 <= 0.0 || r2 <= 0.0 || u2 <= 0.0 {
+        return vec3<f32>(0.0);
+    }
+    let t = dot3(d, ru.prev_forward) / f2;
+    if !(t > 0.0) {
+        return vec3<f32>(0.0);
+    }
+    let sx = dot3(d, ru.prev_right) / r2 / t;
+    let sy = dot3(d, ru.prev_up) / u2 / t;
+    let x = (sx + 1.0) * 0.5 * f32(ru.prev_width);
+    let y = (1.0 - sy) * 0.5 * f32(ru.prev_height);
+    if !(is_finite(x) && is_finite(y)) {
+        return vec3<f32>(0.0);
+    }
+    return vec3<f32>(x, y, 1.0);
+}
+
+// Affine3A::transform_point3 by instance `k`'s motion (identity past the motions given).
+fn moved_point(k: u32, p: vec3<f32>) -> vec3<f32> {
+    if k >= ru.instances {
+        return p;
+    }
+    let r = motions[k].prev_from_now;
+    return vec3<f32>(
+        r[0].x * p.x + r[0].y * p.y + r[0].z * p.z + r[0].w,
+        r[1].x * p.x + r[1].y * p.y + r[1].z * p.z + r[1].w,
+        r[2].x * p.x + r[2].y * p.y + r[2].z * p.z + r[2].w,
+    );
+}
+
+fn reset_pixel(i: u32) {
+    history[i] = vec4<f32>(0.0);
+    moments[i] = vec4<f32>(0.0);
+}
+
+@compute @workgroup_size(8, 8)
+fn denoise_reproject(@builtin(global_invocation_id) id: vec3<u32>) {
+    if id.x >= du.width || id.y >= du.height {
+        return;
+    }
+    let i = id.y * du.width + id.x;
+    let n = du.width * du.height;
+    let me = ids[i];
+    if me.y != 0u {
+        reset_pixel(i);
+        return;
+    }
+    let instance = me.x;
+    let depth = bitcast<f32>(me.z);
+    let normal = guides[i].xyz;
+    let sky = instance == NO_INSTANCE || !(depth > 0.0);
+    let dir = centre_direction(id.x, id.y);
+    var prev_dir = dir;
+    var expected = 0.0;
+    if !sky {
+        let world = ru.camera_position + dir * depth;
+        let before = moved_point(instance, world) - ru.prev_position;
+        prev_dir = before;
+        expected = sqrt(dot3(before, before));
+    }
+    let q = project_previous(prev_dir);
+    if q.z == 0.0 {
+        reset_pixel(i);
+        return;
+    }
+    let fx = q.x - 0.5;
+    let fy = q.y - 0.5;
+    let x0 = floor(fx);
+    let y0 = floor(fy);
+    let ax = fx - x0;
+    let ay = fy - y0;
+    var tx = array<f32, 4>(x0, x0 + 1.0, x0, x0 + 1.0);
+    var ty = array<f32, 4>(y0, y0, y0 + 1.0, y0 + 1.0);
+    var tw = array<f32, 4>((1.0 - ax) * (1.0 - ay), ax * (1.0 - ay), (1.0 - ax) * ay, ax * ay);
+    if max(min(ax, 1.0 - ax), min(ay, 1.0 - ay)) < SNAP_PIXELS {
+        // Rust's f32::round (half away from zero); a snapped point is never halfway.
+        tx = array<f32, 4>(round(fx), 0.0, 0.0, 0.0);
+        ty = array<f32, 4>(round(fy), 0.0, 0.0, 0.0);
+        tw = array<f32, 4>(1.0, 0.0, 0.0, 0.0);
+    }
+    var il = vec4<f32>(0.0);
+    var mo = vec4<f32>(0.0);
+    var weight = 0.0;
+    var shortest = 3.40282347e38;
+    for (var k = 0; k < 4; k++) {
+        let wt = tw[k];
+        if wt <= 0.0 || tx[k] < 0.0 || ty[k] < 0.0 {
+            continue;
+        }
+        let px = u32(tx[k]);
+        let py = u32(ty[k]);
+        if px >= ru.prev_width || py >= ru.prev_height {
+            continue;
+        }
+        let j = py * ru.prev_width + px;
+        let other = prev_ids[j];
+        var same = false;
+        if sky {
+            same = other.x == NO_INSTANCE;
+        } else {
+            let g_depth = bitcast<f32>(other.z);
+            same = other.x == instance && other.y == 0u
+                && dot3(prev_guides[j].xyz, normal) >= NORMAL_COS
+                && abs(g_depth - expected) <= DEPTH_TOLERANCE * expected;
+        }
+        let hist = prev_history[j];
+        if !same || hist.w <= 0.0 {
+            continue;
+        }
+        il = il + hist * wt;
+        mo = mo + prev_history[n + j] * wt;
+        weight = weight + wt;
+        shortest = min(shortest, hist.w);
+    }
+    if weight <= 0.0 {
+        reset_pixel(i);
+        return;
+    }
+    let mean = il / weight;
+    history[i] = vec4<f32>(mean.xyz, shortest);
+    moments[i] = mo / weight;
+}
