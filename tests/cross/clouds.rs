@@ -60,8 +60,8 @@ pub(crate) fn cloudy_scene() -> SceneDesc {
             texels: 64,
             size_m: 160.0,
             shape: CloudShape::Noise {
-                coverage: 0.5,
-                optical_depth: 2.0,
+                coverage: 0.6,
+                optical_depth: 8.0,
                 cells: 4,
                 seed: 11,
             },
