@@ -178,7 +178,9 @@ fn next_event(bsdf: Bsdf, x: vec3<f32>, ng: vec3<f32>, f: Frame, wo_local: vec3<
         if (any(e.value != vec3<f32>(0.0))
             && disc_lit(wi, sun, frame.sun_sin_radius, frame.sun_terminator)) {
             out.rays[out.count] = shadow_ray(x, ng, wi, FAR);
-            out.contribution[out.count] = throughput * e.value * frame.sun_radiance * scale;
+            // The cloud layer's transmittance, as the escaping ray that reaches the disc.
+            out.contribution[out.count] = throughput * e.value * frame.sun_radiance * scale
+                * cloud_transmittance(x, wi);
             out.count += 1u;
         }
     }

@@ -131,11 +131,13 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             travelled += t_end;
         }
         if (!hit.found) {
-            var escaped = sky_radiance(ray.direction);
+            // The cloud layer dims the sky and the disc alike (shared/clouds.wgsl).
+            let cloud = cloud_transmittance(ray.origin, ray.direction);
+            var escaped = cloud_through(sky_radiance(ray.direction), cloud);
             if (frame.sun_solid_angle > 0.0 && disc_inside(ray.direction, frame.sun_direction, frame.sun_sin_radius)
                 && disc_lit(ray.direction, frame.sun_direction, frame.sun_sin_radius, frame.sun_terminator)) {
                 let w = bsdf_hit_weight(last_delta, last_pdf, pick_chances().x / frame.sun_solid_angle);
-                escaped += frame.sun_radiance * w;
+                escaped += frame.sun_radiance * (w * cloud);
             }
             if (all(medium == vec3<f32>(0.0))) {
                 result += throughput * escaped;

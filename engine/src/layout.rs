@@ -455,8 +455,19 @@ pub struct GpuFrameUniforms {
     pub celestial_x: [f32; 4],
     pub celestial_y: [f32; 4],
     pub celestial_z: [f32; 4],
+    /// The cloud layer (`sky/clouds.rs`; `scene/lights.rs` fills it, `render/camera.rs` moves
+    /// it into render space): x the plane's height (render-space y, metres), y and z where the
+    /// texture's origin sits now (render-space x, z, metres: the wind's drift), w the tile's
+    /// side in metres (0: no clouds).
+    pub cloud_plane: [f32; 4],
+    /// Radiance of an opaque cloud lit by the primary disc, linear RGB (escaping rays see
+    /// sky · T + this · (1 − T)).
+    pub cloud_light: [f32; 3],
+    /// Texels per side of the optical-depth texture (the CPU tracer reads `SkyTable::clouds`;
+    /// on the GPU they follow the sky view in binding 16, four to a texel).
+    pub cloud_texels: u32,
 }
-const _: () = assert!(size_of::<GpuFrameUniforms>() == 336);
+const _: () = assert!(size_of::<GpuFrameUniforms>() == 368);
 
 impl GpuFrameUniforms {
     /// All zeros: for passes that read nothing but `tlas_root` (batch ray tracing).

@@ -27,5 +27,6 @@
 // entries, the scene's first; a zero radius ends the list.
 @group(0) @binding(15) var<storage, read> lines: array<GpuLine>;
 // The physical sky's sky-view table (engine/src/scene/sky_table.rs): always SKY_VIEW_WIDTH ×
-// SKY_VIEW_HEIGHT texels, rgb radiance + padding, row-major; zeros when the sky is not physical.
+// SKY_VIEW_HEIGHT texels, rgb radiance + padding, row-major; zeros when the sky is not physical;
+// then the cloud layer's optical depths, four to a texel (shared/clouds.wgsl).
 @group(0) @binding(16) var<storage, read> sky_view: array<vec4<f32>>;

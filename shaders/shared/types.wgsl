@@ -203,6 +203,9 @@ struct GpuFrameUniforms {
     celestial_x: vec4<f32>,
     celestial_y: vec4<f32>,
     celestial_z: vec4<f32>,
+    cloud_plane: vec4<f32>,
+    cloud_light: vec3<f32>,
+    cloud_texels: u32,
 }
 
 struct GpuRay {

@@ -217,6 +217,7 @@ fn physical_sky_agrees() {
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
         night_sky: 1.0,
+        clouds: None,
     });
     let _ = compare("physical sky", &desc, 32, 4);
 }

@@ -153,7 +153,10 @@ fn rust_layouts() -> Vec<RustLayout> {
             pixel_jitter,
             celestial_x,
             celestial_y,
-            celestial_z
+            celestial_z,
+            cloud_plane,
+            cloud_light,
+            cloud_texels
         }),
         rust_layout!(GpuRay {
             origin,

@@ -11,6 +11,7 @@ mod analytic;
 mod beams;
 mod bvh;
 mod capture_budget;
+mod clouds;
 mod demo;
 mod editor_window;
 mod far_from_origin;

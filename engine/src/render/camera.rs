@@ -134,7 +134,18 @@ pub fn frame_uniforms(
         celestial_x: [1.0, 0.0, 0.0, 0.0],
         celestial_y: [0.0, 1.0, 0.0, 0.0],
         celestial_z: [0.0, 0.0, 1.0, 0.0],
+        cloud_plane: [0.0; 4],
+        cloud_light: [0.0; 3],
+        cloud_texels: 0,
     };
     fill_sun_and_sky(&mut u, sun, sky);
+    // The cloud plane in render space: the scene is traced relative to `origin`.
+    let size = u.cloud_plane[3];
+    if size > 0.0 {
+        let origin = scene.origin;
+        u.cloud_plane[0] -= origin.y;
+        u.cloud_plane[1] = (u.cloud_plane[1] - origin.x).rem_euclid(size);
+        u.cloud_plane[2] = (u.cloud_plane[2] - origin.z).rem_euclid(size);
+    }
     u
 }

@@ -1,7 +1,8 @@
 //! The physical sky's two discs and its night in the frame uniforms: the sun and the moon
 //! (with its phase), the brighter of the two (after the air's transmittance) in the primary
 //! slot that next-event estimation samples (`sun_*`), the other in the second slot that only
-//! escaping rays see (`second_*`), and the stars, airglow and celestial frame.
+//! escaping rays see (`second_*`), the stars, airglow and celestial frame, and the cloud layer
+//! (`cloud_*`: its plane, the wind's drift at the sky's time, the light an opaque cloud sends).
 //!
 //! Any thread; pure functions. Units: irradiance W·m⁻²·nm⁻¹ per channel, radiance
 //! W·m⁻²·sr⁻¹·nm⁻¹, directions unit vectors in engine space. The moon's disc is uniform over
@@ -15,6 +16,7 @@ use glam::Vec3;
 use crate::layout::GpuFrameUniforms;
 use crate::sky::{
     MOON_ANGULAR_RADIUS_DEG, PhysicalSky, STAR_ANGULAR_RADIUS_DEG, SUN_ANGULAR_RADIUS_DEG,
+    cloud_seconds,
 };
 
 use super::materials::luminance;
@@ -142,4 +144,29 @@ pub fn fill_physical(u: &mut GpuFrameUniforms, sky: &PhysicalSky) {
     u.celestial_x = x.extend(0.0).to_array();
     u.celestial_y = y.extend(0.0).to_array();
     u.celestial_z = z.extend(0.0).to_array();
+    fill_clouds(u, sky, first);
+}
+
+/// Reflectance of the cloud layer's in-scatter: an opaque cloud seen from below has the
+/// radiance of a Lambertian sheet of this albedo lit by the primary disc.
+pub const CLOUD_ALBEDO: f32 = 0.8;
+
+/// The cloud layer in the uniforms (world space; `render/camera.rs` moves it into render
+/// space): its plane, where the wind has carried it at the sky's time, its texel count, and
+/// the radiance of an opaque cloud, `CLOUD_ALBEDO` · E · max(ω_disc · y, 0) / π of the primary
+/// disc (`primary`). No clouds (or a layer that fails its checks): all zero.
+fn fill_clouds(u: &mut GpuFrameUniforms, sky: &PhysicalSky, primary: Option<Disc>) {
+    u.cloud_plane = [0.0; 4];
+    u.cloud_light = [0.0; 3];
+    u.cloud_texels = 0;
+    let Some(layer) = sky.clouds.filter(|l| l.validate().is_ok()) else {
+        return;
+    };
+    let offset = layer.offset_m(cloud_seconds(sky.time.as_ref()));
+    u.cloud_plane = [layer.height_m, offset.x, offset.y, layer.size_m];
+    u.cloud_texels = layer.texels;
+    if let Some(d) = primary {
+        let light = d.irradiance * d.direction.y.max(0.0) * CLOUD_ALBEDO / std::f32::consts::PI;
+        u.cloud_light = light.to_array();
+    }
 }

@@ -48,6 +48,11 @@ pub struct SkyTable {
     /// sky is not physical.
     pub texels: Arc<Vec<[f32; 4]>>,
     rebuilding: Option<Arc<Rebuilding>>,
+    /// The cloud layer's optical depths (`sky::CloudLayer::bake`, `texels`² row-major), baked
+    /// on the spot whenever the layer's description changes (not when the wind moves it);
+    /// empty without clouds. The GPU tracer appends them to binding 16.
+    pub clouds: Arc<Vec<f32>>,
+    cloud_source: Option<crate::sky::CloudLayer>,
 }
 
 impl std::fmt::Debug for Rebuilding {
@@ -73,6 +78,15 @@ impl SkyTable {
     /// table: the tracers then see a black sky.
     pub fn update_with(&mut self, sky: &SkyDesc, how: SkyRebuild) -> bool {
         let mut changed = self.collect();
+        let layer = match sky {
+            SkyDesc::Physical(p) => p.clouds,
+            _ => None,
+        };
+        if layer != self.cloud_source {
+            self.cloud_source = layer;
+            self.clouds = Arc::new(layer.map(|l| l.bake()).unwrap_or_default());
+            changed = true;
+        }
         match sky {
             SkyDesc::Physical(p) => {
                 if self.source.as_ref() == Some(p) {

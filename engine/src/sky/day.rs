@@ -56,6 +56,11 @@ impl PhysicalSky {
     }
 }
 
+/// Days since 1970-01-01 of a Gregorian date (the clouds' clock, `clouds.rs`).
+pub(super) fn days_since_1970(year: i32, month: u32, day: u32) -> i64 {
+    days_from_civil(year, month, day)
+}
+
 /// Days since 1970-01-01 of a Gregorian date (H. Hinnant's `days_from_civil`).
 fn days_from_civil(year: i32, month: u32, day: u32) -> i64 {
     let y = i64::from(year) - i64::from(month <= 2);

@@ -10,7 +10,8 @@
 //! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into;
 //! turning the time of day ([`SkyTime::advanced`], [`SkyNow`], `day`), the tables kept while
 //! the sun moves ([`SkyBaker`]), the exposure the sky calls for (`exposure`) and the night's
-//! lights: the moon's phase law, airglow, stars and the celestial frame (`night`).
+//! lights: the moon's phase law, airglow, stars and the celestial frame (`night`); the cloud
+//! layer the wind moves and its transmittance (`clouds`).
 //! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
 //! the layers and uses no engine module (only glam, rayon, serde and thiserror).
@@ -18,6 +19,7 @@
 mod atmosphere;
 mod baker;
 mod calendar;
+mod clouds;
 mod day;
 mod error;
 mod exposure;
@@ -32,6 +34,9 @@ mod transmittance;
 
 pub use baker::{Baked, SkyBaker, TABLE_ELEVATION_STEP_DEG, table_elevation_deg};
 pub use calendar::UtcInstant;
+pub use clouds::{
+    CloudLayer, CloudPlane, CloudShape, MAX_CLOUD_TEXELS, cloud_seconds, cloud_transmittance,
+};
 pub use day::SkyNow;
 pub use error::SkyError;
 pub use exposure::{

@@ -72,6 +72,9 @@ pub struct PhysicalSky {
     /// is not changed).
     #[serde(default = "one")]
     pub night_sky: f32,
+    /// A cloud layer moved by the wind (`sky/clouds.rs`); `None` (the default): a clear sky.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub clouds: Option<super::clouds::CloudLayer>,
 }
 
 /// The haze whose diffuse-to-global horizontal ratio at 60° sun elevation matches Mitsuba's
@@ -91,6 +94,7 @@ impl Default for PhysicalSky {
             ground_albedo: default_albedo(),
             sun_scale: 1.0,
             night_sky: 1.0,
+            clouds: None,
         }
     }
 }
@@ -153,6 +157,9 @@ impl PhysicalSky {
             time.instant()?;
             time.check_rate()?;
             Observer::new(time.latitude_deg, time.longitude_deg)?;
+        }
+        if let Some(clouds) = &self.clouds {
+            clouds.validate()?;
         }
         Ok(())
     }

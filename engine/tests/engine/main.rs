@@ -109,6 +109,7 @@ mod scene_light_tree;
 mod scene_memory;
 mod script_determinism;
 mod script_format;
+mod sky_clouds;
 mod sky_energy;
 mod sky_ephemeris;
 mod sky_gpu;

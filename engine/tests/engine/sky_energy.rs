@@ -56,6 +56,7 @@ fn diffuse_floor_under_the_physical_sky_conserves_energy() -> anyhow::Result<()>
         ground_albedo: [0.3; 3],
         sun_scale: 0.0,
         night_sky: 1.0,
+        clouds: None,
     };
     let camera = CameraDesc {
         position: [0.0, 1.0, 0.0],

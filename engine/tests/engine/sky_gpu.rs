@@ -30,6 +30,7 @@ fn the_gpu_tracer_renders_a_physical_sky_itself() {
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
         night_sky: 1.0,
+        clouds: None,
     });
     let mut engine = Engine::with_tracer(config(2, 16), env, open).expect("engine");
     let floor = engine.add_model(&quad_model(20.0, 0.0));

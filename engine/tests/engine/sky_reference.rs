@@ -40,6 +40,7 @@ fn sky(elevation: u32, haze: f32) -> PhysicalSky {
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
         night_sky: 1.0,
+        clouds: None,
     }
 }
 

@@ -157,10 +157,13 @@ pub(super) fn next_event(
     if nee && take_disc && u.sun_solid_angle >= 0.0 && medium == Vec3::ZERO {
         let sun = Vec3::from(u.sun_direction);
         let radiance = Vec3::from(u.sun_radiance);
+        // The cloud layer's transmittance towards the disc (`clouds.rs`): the same function
+        // the escaping ray that reaches the disc is multiplied by.
+        let cloud = |wi: Vec3| super::clouds::transmittance(u, &scene.sky.clouds, x, wi);
         if u.sun_solid_angle == 0.0 {
             let (f, _) = bsdf.eval(wo_local, to_local(sun, t, b, n));
             if f != Vec3::ZERO && shadow(sun, f32::INFINITY, counts) {
-                sum += f * radiance / disc_chance;
+                sum += f * radiance * cloud(sun) / disc_chance;
             }
         } else {
             let (st, sb) = basis(sun);
@@ -179,7 +182,7 @@ pub(super) fn next_event(
                 } else {
                     1.0
                 };
-                sum += f * radiance * (w / sun_pdf);
+                sum += f * radiance * (w * cloud(wi) / sun_pdf);
             }
         }
     }

@@ -7,7 +7,8 @@
 //! sampling (power heuristic); Russian roulette after `roulette_start` scattering events;
 //! Beer–Lambert absorption along every segment inside an absorbing dielectric (the path tracks
 //! the medium it was transmitted into, so light reaching a pool's floor through open water is
-//! attenuated on the way); sky radiance for escaping rays; line emitters
+//! attenuated on the way); sky radiance for escaping rays, seen through the cloud layer
+//! (`clouds.rs`); line emitters
 //! seen prefiltered along camera rays and their perfect specular turns (`lines.rs`).
 //! The path loop is read against `shaders/trace.wgsl` line by line (the same random draws in the
 //! same order); next-event estimation lives in `direct.rs`, and the pieces that stand alone
@@ -16,6 +17,7 @@
 
 use glam::{Vec2, Vec3};
 
+use super::clouds;
 use super::cone::Cone;
 use super::direct::{
     NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances, transmittance,
@@ -155,7 +157,10 @@ pub fn radiance(
             travelled += t_end;
         }
         let Some(hit) = hit else {
-            let mut escaped = sky_radiance(u, &scene.sky.texels, ray.direction);
+            // The cloud layer dims the sky and the disc alike (`clouds.rs`).
+            let cloud = clouds::transmittance(u, &scene.sky.clouds, ray.origin, ray.direction);
+            let sky = sky_radiance(u, &scene.sky.texels, ray.direction);
+            let mut escaped = clouds::through(u, sky, cloud);
             if sun_solid_angle > 0.0
                 && disc_inside(ray.direction, sun_direction, u.sun_sin_radius)
                 && disc_lit(
@@ -167,7 +172,7 @@ pub fn radiance(
             {
                 let disc_pdf = pick_chances(u).0 / sun_solid_angle;
                 let w = bsdf_hit_weight(u.method, last_delta, last_pdf, disc_pdf);
-                escaped += sun_radiance * w;
+                escaped += sun_radiance * (w * cloud);
             }
             // Escaping through a medium is an infinite path through it.
             if medium == Vec3::ZERO {

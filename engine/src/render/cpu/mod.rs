@@ -2,6 +2,7 @@
 //! image tiles with rayon, reading the same flattened scene.
 
 pub(crate) mod bsdf;
+pub mod clouds;
 pub(crate) mod cone;
 mod direct;
 pub mod guides;

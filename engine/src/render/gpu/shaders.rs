@@ -35,6 +35,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/lines.wgsl"),
     shader!("shared/sky_view.wgsl"),
     shader!("shared/night.wgsl"),
+    shader!("shared/clouds.wgsl"),
 ];
 
 /// The path tracing pass (entry point `trace_main`). Compose it with [`compose_trace`]: it

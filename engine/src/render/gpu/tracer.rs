@@ -34,6 +34,8 @@ pub struct GpuTracer {
     pub(super) film: Option<FilmBuffers>,
     /// The sky-view texels last written to binding 16 (compared by pointer on each update).
     pub(super) sky_texels: Arc<Vec<[f32; 4]>>,
+    /// The cloud optical depths last appended to binding 16 (compared by pointer).
+    pub(super) cloud_texels: Arc<Vec<f32>>,
     pub(super) samples: u32,
     /// Created on first use by `trace_rays` (see `ray_batch.rs`).
     pub(super) ray_batch: Option<super::ray_batch::RayBatchPipeline>,
@@ -181,6 +183,7 @@ impl GpuTracer {
             scene_buffers,
             film: None,
             sky_texels: Arc::clone(&scene.sky.texels),
+            cloud_texels: Arc::clone(&scene.sky.clouds),
             samples: 0,
             ray_batch: None,
         })

@@ -3,7 +3,7 @@
 //! Owns: mapping each write to its storage buffer and byte range, and growing a buffer (to at
 //! least twice its size, within the device's binding limit) when a write ends past it, copying
 //! the old contents on the GPU and rebinding; rewriting the sky-view table (binding 16) when the
-//! scene's `SkyTable` was rebuilt. Render thread only.
+//! scene's `SkyTable` was rebuilt or its clouds rebaked. Render thread only.
 //! Must not: decide what to write (the commit says).
 
 use super::tracer::GpuTracer;
@@ -20,14 +20,20 @@ const SKY_VIEW: usize = 13;
 /// The sky-view buffer's contents (binding 16): always `VIEW_WIDTH × VIEW_HEIGHT` texels, the
 /// scene's table, or zeros (a black sky, as the CPU tracer sees an empty table) when the sky is
 /// not physical or its table is not the full size.
+/// Then the cloud layer's optical depths (`SkyTable::clouds`), four to a texel, the last one
+/// padded with zeros (`shaders/shared/clouds.wgsl`).
 pub(super) fn sky_bytes(scene: &RenderScene) -> Vec<u8> {
     let len = VIEW_WIDTH * VIEW_HEIGHT;
     let texels = scene.sky.texels.as_slice();
-    if texels.len() == len {
+    let mut bytes = if texels.len() == len {
         bytemuck::cast_slice(texels).to_vec()
     } else {
         vec![0; len * std::mem::size_of::<[f32; 4]>()]
-    }
+    };
+    let clouds = scene.sky.clouds.as_slice();
+    bytes.extend_from_slice(bytemuck::cast_slice(clouds));
+    bytes.resize(bytes.len().next_multiple_of(16), 0);
+    bytes
 }
 
 /// The write of `data` at element `first` of binding `index`: the binding, the byte offset (from
@@ -83,12 +89,19 @@ impl GpuTracer {
                 .queue
                 .write_buffer(&self.scene_buffers[LINES], 0, &lines);
         }
-        if !std::sync::Arc::ptr_eq(&self.sky_texels, &scene.sky.texels) {
+        if !std::sync::Arc::ptr_eq(&self.sky_texels, &scene.sky.texels)
+            || !std::sync::Arc::ptr_eq(&self.cloud_texels, &scene.sky.clouds)
+        {
             let sky = sky_bytes(scene);
+            if sky.len() as u64 > self.scene_buffers[SKY_VIEW].size() {
+                self.grow(SKY_VIEW, sky.len() as u64)?;
+                grown = true;
+            }
             self.context
                 .queue
                 .write_buffer(&self.scene_buffers[SKY_VIEW], 0, &sky);
             self.sky_texels = std::sync::Arc::clone(&scene.sky.texels);
+            self.cloud_texels = std::sync::Arc::clone(&scene.sky.clouds);
         }
         if grown {
             self.rebind();
