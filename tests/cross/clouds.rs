@@ -73,5 +73,6 @@ pub(crate) fn cloudy_scene() -> SceneDesc {
 
 #[test]
 fn cloud_shadowed_scene_agrees() {
-    let _ = crate::gpu_matches_cpu::compare_method("clouds", &cloudy_scene(), 32, 4, METHOD_DEFAULT);
+    let _ =
+        crate::gpu_matches_cpu::compare_method("clouds", &cloudy_scene(), 32, 4, METHOD_DEFAULT);
 }
