@@ -12,6 +12,7 @@
 //! out; render thread. Output rows are `vec4<f32>` (xyz = denoised radiance), like the GPU
 //! tracer's film, so a presenter on the same device can read [`GpuDenoiser::output_view`] in
 //! place; a frame already on the device can be handed over with [`GpuDenoiser::frame_buffer`].
+//! The buffers of one image size and their bind groups are made in `denoise/buffers.rs`.
 //! Must not: trace rays or know the scene.
 
 use std::sync::Arc;
@@ -19,46 +20,17 @@ use std::sync::Arc;
 use glam::{Affine3A, Vec3, Vec4};
 
 use super::context::{GpuContext, map_for_reading};
-use super::denoise_passes::{
-    ATROUS, Passes, REPROJECT, TEMPORAL, VARIANCE, group, motion_rows, pixel_ids,
-    reproject_uniforms,
-};
-use crate::layout::{GpuDenoiseUniforms, GpuMotion, GpuReprojectUniforms};
+use super::denoise_passes::{Passes, motion_rows, pixel_ids, reproject_uniforms};
+use crate::layout::{GpuDenoiseUniforms, GpuReprojectUniforms};
 use crate::render::denoise::{Guides, SvgfParams, View, motions};
 use crate::render::film::Film;
 use crate::render::tracer::{FilmView, RenderError};
 
+mod buffers;
+use buffers::Sized;
+
 /// Workgroup edge of every denoiser pass (8×8).
 const GROUP: u32 = 8;
-
-/// Buffers of one image size and the bind groups over them.
-struct Sized {
-    width: u32,
-    height: u32,
-    guides: wgpu::Buffer,
-    albedo: wgpu::Buffer,
-    frame: wgpu::Buffer,
-    history: wgpu::Buffer,
-    moments: wgpu::Buffer,
-    output: wgpu::Buffer,
-    ids: wgpu::Buffer,
-    prev_guides: wgpu::Buffer,
-    prev_ids: wgpu::Buffer,
-    /// The previous frame's history rows, then its moments.
-    prev_history: wgpu::Buffer,
-    /// Uniforms: [temporal/variance, à-trous pass 0, 1, …].
-    uniforms: Vec<wgpu::Buffer>,
-    reproject_uniforms: wgpu::Buffer,
-    /// Instance motions (room for `motion_capacity`) and the reprojection's group over them.
-    motions: wgpu::Buffer,
-    motion_capacity: usize,
-    /// Built once the buffers it binds are in place.
-    reproject: Option<wgpu::BindGroup>,
-    temporal: wgpu::BindGroup,
-    variance: wgpu::BindGroup,
-    atrous: Vec<wgpu::BindGroup>,
-    _work: [wgpu::Buffer; 2],
-}
 
 /// What the reprojection keeps of the previous frame on the host.
 struct Prev {
@@ -103,166 +75,6 @@ impl GpuDenoiser {
 
     fn pass_count(&self) -> usize {
         self.params.passes().len()
-    }
-
-    fn motion_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
-        device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("denoise motions"),
-            size: (capacity.max(1) * size_of::<GpuMotion>()) as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        })
-    }
-
-    fn reproject_group(&self, s: &Sized) -> wgpu::BindGroup {
-        group(
-            &self.context.device,
-            &self.passes.reproject,
-            &REPROJECT,
-            &[
-                &s.uniforms[0],
-                &s.guides,
-                &s.reproject_uniforms,
-                &s.ids,
-                &s.prev_guides,
-                &s.prev_ids,
-                &s.prev_history,
-                &s.motions,
-                &s.history,
-                &s.moments,
-            ],
-        )
-    }
-
-    fn ensure_size(&mut self, width: u32, height: u32) {
-        if self.sized.as_ref().is_some_and(|s| {
-            s.width == width && s.height == height && s.atrous.len() == self.pass_count()
-        }) {
-            return;
-        }
-        let device = &self.context.device;
-        let bytes = (width as u64 * height as u64 * 16).max(16);
-        let storage = |label: &str, bytes: u64| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some(label),
-                size: bytes,
-                usage: wgpu::BufferUsages::STORAGE
-                    | wgpu::BufferUsages::COPY_DST
-                    | wgpu::BufferUsages::COPY_SRC,
-                mapped_at_creation: false,
-            })
-        };
-        let uniform = |size: usize| {
-            device.create_buffer(&wgpu::BufferDescriptor {
-                label: Some("denoise uniforms"),
-                size: size as u64,
-                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
-                mapped_at_creation: false,
-            })
-        };
-        let (guides, albedo, frame) = (
-            storage("guides", bytes),
-            storage("albedo", bytes),
-            storage("frame", bytes),
-        );
-        let (history, moments, output) = (
-            storage("history", bytes),
-            storage("moments", bytes),
-            storage("denoised", bytes),
-        );
-        let (ids, prev_guides, prev_ids) = (
-            storage("denoise ids", bytes),
-            storage("previous guides", bytes),
-            storage("previous ids", bytes),
-        );
-        let prev_history = storage("previous history", 2 * bytes);
-        let work = [
-            storage("denoise work a", bytes),
-            storage("denoise work b", bytes),
-        ];
-        let n = self.pass_count();
-        let uniforms: Vec<wgpu::Buffer> = (0..=n)
-            .map(|_| uniform(size_of::<GpuDenoiseUniforms>()))
-            .collect();
-        let reproject_uniforms = uniform(size_of::<GpuReprojectUniforms>());
-        let p = &self.passes;
-        let temporal = group(
-            device,
-            &p.temporal,
-            &TEMPORAL,
-            &[
-                &uniforms[0],
-                &guides,
-                &albedo,
-                &frame,
-                &history,
-                &moments,
-                &reproject_uniforms,
-            ],
-        );
-        let variance = group(
-            device,
-            &p.variance,
-            &VARIANCE,
-            &[&uniforms[0], &guides, &albedo, &history, &moments, &work[0]],
-        );
-        let atrous = (0..n)
-            .map(|k| {
-                let input = &work[k % 2];
-                let out = if k + 1 == n {
-                    &output
-                } else {
-                    &work[(k + 1) % 2]
-                };
-                group(
-                    device,
-                    &p.atrous,
-                    &ATROUS,
-                    &[&uniforms[k + 1], &guides, &albedo, input, out],
-                )
-            })
-            .collect();
-        let motions = Self::motion_buffer(device, 1);
-        let mut sized = Sized {
-            width,
-            height,
-            guides,
-            albedo,
-            frame,
-            history,
-            moments,
-            output,
-            ids,
-            prev_guides,
-            prev_ids,
-            prev_history,
-            uniforms,
-            reproject_uniforms,
-            motions,
-            motion_capacity: 1,
-            reproject: None,
-            temporal,
-            variance,
-            atrous,
-            _work: work,
-        };
-        sized.reproject = Some(self.reproject_group(&sized));
-        self.sized = Some(sized);
-        self.prev = None;
-        self.fresh = true;
-    }
-
-    /// Room for `count` motions (a new buffer and group when it grows).
-    fn ensure_motions(&mut self, count: usize) {
-        let Some(mut s) = self.sized.take() else {
-            return;
-        };
-        if count > s.motion_capacity {
-            s.motion_capacity = count.next_power_of_two();
-            s.motions = Self::motion_buffer(&self.context.device, s.motion_capacity);
-            s.reproject = Some(self.reproject_group(&s));
-        }
-        self.sized = Some(s);
     }
 
     /// Forgets the history (the next frame starts afresh).
