@@ -18,7 +18,7 @@ use glam::{Quat, Vec2, Vec3};
 use hecs::{Entity, World};
 
 use crate::ecs::Transform;
-use crate::sim::physics::{Carrier, CarryRequest, PhysicsWorld};
+use crate::sim::physics::{BodyKind, Carrier, CarryRequest, PhysicsWorld, RigidBody};
 use crate::sim::triggers::Usable;
 
 /// Cosine of the widest angle between the character's heading (or the camera's view) and a
@@ -211,11 +211,14 @@ pub fn nearest_takeable(
     max_mass: f32,
 ) -> Option<Entity> {
     let mut best: Option<(f32, Entity)> = None;
-    for (entity, _) in world
-        .query::<(Entity, &Transform)>()
+    for (entity, body) in world
+        .query::<(Entity, &RigidBody)>()
         .without::<&Usable>()
         .iter()
     {
+        if body.kind != BodyKind::Dynamic {
+            continue;
+        }
         let Some(mass) = physics.dynamic_mass(entity) else {
             continue;
         };
