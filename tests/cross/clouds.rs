@@ -54,6 +54,7 @@ pub(crate) fn cloudy_scene() -> SceneDesc {
             time_rate: 0.0,
         }),
         haze: HAZE_TURBIDITY_3,
+        aerosol: candela::sky::Aerosol::TURBIDITY_3,
         clouds: Some(CloudLayer {
             height_m: 60.0,
             wind_m_s: [7.0, -3.0],

@@ -213,6 +213,7 @@ fn physical_sky_agrees() {
         sun_azimuth_deg: 230.0,
         time: None,
         haze: HAZE_TURBIDITY_3,
+        aerosol: candela::sky::Aerosol::TURBIDITY_3,
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,

@@ -7,6 +7,10 @@
 //! Must not: know about tables or the engine's axes.
 
 use glam::Vec3;
+use serde::{Deserialize, Serialize};
+
+use super::error::SkyError;
+use super::physical::check;
 
 /// Planet radius, km.
 pub const GROUND_RADIUS_KM: f32 = 6360.0;
@@ -17,22 +21,18 @@ pub const VIEW_ALTITUDE_KM: f32 = 0.01;
 
 const RAYLEIGH_SCATTERING: Vec3 = Vec3::new(5.802e-3, 13.558e-3, 33.1e-3);
 const RAYLEIGH_SCALE_HEIGHT_KM: f32 = 8.0;
-const MIE_SCATTERING: f32 = 3.996e-3;
-const MIE_EXTINCTION: f32 = 4.440e-3;
-const MIE_SCALE_HEIGHT_KM: f32 = 1.2;
-/// Cornette–Shanks asymmetry of the aerosols.
-pub const MIE_G: f32 = 0.8;
+/// Wavelengths the three channels are taken at, nm (R, G, B).
+const CHANNEL_NM: [f32; 3] = [680.0, 550.0, 440.0];
 const OZONE_ABSORPTION: Vec3 = Vec3::new(0.650e-3, 1.881e-3, 0.085e-3);
 
 /// Solar spectral irradiance at the top of the atmosphere in linear Rec.709 RGB, in the
 /// CIE-Y-normalised W·m⁻²·nm⁻¹ of Mitsuba's sunsky (radiance then comes out in
-/// W·m⁻²·sr⁻¹·nm⁻¹). Colour: a 5778 K black body (Kim et al.'s Planckian locus: x = 0.3263,
-/// y = 0.3357, in Rec.709: 1.1109, 0.9757, 0.9141 at luminance 1). Level: luminance 1.6836,
-/// calibrated once so that the direct normal irradiance at 60° elevation with
-/// [`super::HAZE_TURBIDITY_3`] matches Mitsuba's turbidity-3 sun (1.2863): 9 % below the
-/// measured solar spectrum near 555 nm (≈ 1.85), the gap between Hosek–Wilkie's sun and a
-/// plane atmosphere (`docs/ACCURACY.md`, "Physical sky").
-pub const SOLAR_IRRADIANCE: Vec3 = Vec3::new(1.8703, 1.6426, 1.5391);
+/// W·m⁻²·sr⁻¹·nm⁻¹). Calibrated once, per channel, so that the direct normal irradiance at
+/// 60° elevation through [`Aerosol::TURBIDITY_3`] with [`super::HAZE_TURBIDITY_3`] is Mitsuba's
+/// turbidity-3 sun in colour and level (Rec.709 (1.4991, 1.2553, 0.9667), luminance 1.2863;
+/// `engine/tests/engine/sky_reference.rs`, `docs/ACCURACY.md` "Physical sky"). Luminance
+/// 1.7370, 6 % below the measured solar spectrum near 555 nm (≈ 1.85).
+pub const SOLAR_IRRADIANCE: Vec3 = Vec3::new(1.7441, 1.7308, 1.8086);
 
 /// The media at one altitude: scattering by molecules and aerosols, and total extinction.
 #[derive(Clone, Copy, Debug)]
@@ -42,7 +42,121 @@ pub struct Medium {
     pub extinction: Vec3,
 }
 
-/// The Earth preset with its two knobs.
+/// The aerosols (Mie scattering) per unit of `haze`: how much they scatter and absorb, how
+/// the scattering depends on the wavelength (Ångström's law, β(λ) = β₅₅₀ (λ / 550 nm)^−α),
+/// how high they reach, and how forward their phase function is (Cornette–Shanks).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Aerosol {
+    /// Scattering coefficient at 550 nm at the ground per unit haze, km⁻¹, 0..=1.
+    pub scattering_per_km: f32,
+    /// Absorption coefficient at the ground per unit haze, km⁻¹ (grey), 0..=1.
+    pub absorption_per_km: f32,
+    /// Ångström exponent α of the scattering, 0..=4 (0: grey, Hillaire's preset).
+    pub angstrom: f32,
+    /// Scale height of the density's exponential fall-off, km, 0.1..=20.
+    pub scale_height_km: f32,
+    /// Cornette–Shanks asymmetry g of the broad lobe, 0..=0.99.
+    pub g: f32,
+    /// Share of the scattering in a second, forward lobe (the coarse particles' circumsolar
+    /// glow), 0..=1 (0: one lobe, Hillaire's preset).
+    pub forward_share: f32,
+    /// Cornette–Shanks asymmetry of the forward lobe, 0..=0.99.
+    pub forward_g: f32,
+}
+
+impl Aerosol {
+    /// Hillaire's (2020) Earth preset: grey aerosols, 1.2 km high, g = 0.8.
+    pub const EARTH: Self = Self {
+        scattering_per_km: 3.996e-3,
+        absorption_per_km: 0.444e-3,
+        angstrom: 0.0,
+        scale_height_km: 1.2,
+        g: 0.8,
+        forward_share: 0.0,
+        forward_g: 0.9,
+    };
+
+    /// Fitted to Mitsuba's Hosek–Wilkie sky at turbidity 3 (with [`super::HAZE_TURBIDITY_3`],
+    /// ground albedo 0.3): fine particles that scatter blue (Ångström α = 3) and do not absorb,
+    /// 6 km high, a nearly isotropic broad lobe (g = 0.05) and 30 % of the scattering in a
+    /// forward lobe (g = 0.75). Chosen over a grid of g, the forward lobe, α, the scale height
+    /// and the absorption by the sky's luminance and zenith colour against the reference
+    /// (`docs/ACCURACY.md`, "Physical sky").
+    pub const TURBIDITY_3: Self = Self {
+        scattering_per_km: 3.996e-3,
+        absorption_per_km: 0.0,
+        angstrom: 3.0,
+        scale_height_km: 6.0,
+        g: 0.05,
+        forward_share: 0.3,
+        forward_g: 0.75,
+    };
+
+    /// Whether this is [`Aerosol::EARTH`] (a level that does not write `aerosol` gets it).
+    pub fn is_earth(&self) -> bool {
+        *self == Self::EARTH
+    }
+
+    /// Checks every field; the error names it (`aerosol.g`, …).
+    pub fn validate(&self) -> Result<(), SkyError> {
+        check(
+            "aerosol.scattering_per_km",
+            self.scattering_per_km,
+            0.0,
+            1.0,
+            "0..=1",
+        )?;
+        check(
+            "aerosol.absorption_per_km",
+            self.absorption_per_km,
+            0.0,
+            1.0,
+            "0..=1",
+        )?;
+        check("aerosol.angstrom", self.angstrom, 0.0, 4.0, "0..=4")?;
+        check(
+            "aerosol.scale_height_km",
+            self.scale_height_km,
+            0.1,
+            20.0,
+            "0.1..=20",
+        )?;
+        check("aerosol.g", self.g, 0.0, 0.99, "0..=0.99")?;
+        check(
+            "aerosol.forward_share",
+            self.forward_share,
+            0.0,
+            1.0,
+            "0..=1",
+        )?;
+        check("aerosol.forward_g", self.forward_g, 0.0, 0.99, "0..=0.99")
+    }
+
+    /// The aerosols' phase function (sr⁻¹) at the cosine of the scattering angle: the broad
+    /// lobe and the forward lobe mixed by `forward_share`.
+    pub fn phase(&self, cos_theta: f32) -> f32 {
+        let broad = mie_phase(cos_theta, self.g);
+        if self.forward_share == 0.0 {
+            return broad;
+        }
+        broad * (1.0 - self.forward_share)
+            + mie_phase(cos_theta, self.forward_g) * self.forward_share
+    }
+
+    /// Scattering coefficient per channel at the ground per unit haze, km⁻¹.
+    pub fn scattering(&self) -> Vec3 {
+        Vec3::from(CHANNEL_NM.map(|nm| self.scattering_per_km * (nm / 550.0).powf(-self.angstrom)))
+    }
+}
+
+impl Default for Aerosol {
+    fn default() -> Self {
+        Self::EARTH
+    }
+}
+
+/// The Earth preset with its knobs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Atmosphere {
     /// Multiplier of the preset's aerosol density (1 = Hillaire's clear sky), ≥ 0.
@@ -51,6 +165,8 @@ pub struct Atmosphere {
     pub ozone: f32,
     /// Lambertian ground reflectance (linear RGB, 0..1).
     pub ground_albedo: Vec3,
+    /// The aerosols per unit haze.
+    pub aerosol: Aerosol,
 }
 
 impl Atmosphere {
@@ -58,7 +174,7 @@ impl Atmosphere {
     pub fn medium(&self, h: f32) -> Medium {
         let h = h.max(0.0);
         let rayleigh = RAYLEIGH_SCATTERING * (-h / RAYLEIGH_SCALE_HEIGHT_KM).exp();
-        let mie_density = self.haze * (-h / MIE_SCALE_HEIGHT_KM).exp();
+        let mie_density = self.haze * (-h / self.aerosol.scale_height_km).exp();
         // Ozone: a tent 30 km wide peaking at 25 km.
         let ozone_density = if h < 25.0 {
             h / 15.0 - 2.0 / 3.0
@@ -66,11 +182,12 @@ impl Atmosphere {
             8.0 / 3.0 - h / 15.0
         };
         let ozone = OZONE_ABSORPTION * (self.ozone * ozone_density.max(0.0));
-        let mie = Vec3::splat(MIE_SCATTERING * mie_density);
+        let mie = self.aerosol.scattering() * mie_density;
+        let mie_absorption = self.aerosol.absorption_per_km * mie_density;
         Medium {
             rayleigh,
             mie,
-            extinction: rayleigh + Vec3::splat(MIE_EXTINCTION * mie_density) + ozone,
+            extinction: rayleigh + mie + Vec3::splat(mie_absorption) + ozone,
         }
     }
 }
@@ -80,9 +197,8 @@ pub fn rayleigh_phase(cos_theta: f32) -> f32 {
     3.0 / (16.0 * std::f32::consts::PI) * (1.0 + cos_theta * cos_theta)
 }
 
-/// Cornette–Shanks phase function (sr⁻¹) with asymmetry [`MIE_G`].
-pub fn mie_phase(cos_theta: f32) -> f32 {
-    let g = MIE_G;
+/// Cornette–Shanks phase function (sr⁻¹) with asymmetry `g`.
+pub fn mie_phase(cos_theta: f32, g: f32) -> f32 {
     let k = 3.0 / (8.0 * std::f32::consts::PI) * (1.0 - g * g) / (2.0 + g * g);
     k * (1.0 + cos_theta * cos_theta) / (1.0 + g * g - 2.0 * g * cos_theta).powf(1.5)
 }

@@ -39,13 +39,24 @@ pub fn table_elevation_deg(elevation_deg: f64) -> f64 {
 }
 
 /// The atmosphere's fields the sun-independent tables are built from.
-type AtmosphereKey = (u32, u32, [u32; 3]);
+type AtmosphereKey = (u32, u32, [u32; 3], [u32; 7]);
 
 fn key(sky: &PhysicalSky) -> AtmosphereKey {
+    let a = &sky.aerosol;
     (
         sky.haze.to_bits(),
         sky.ozone.to_bits(),
         sky.ground_albedo.map(f32::to_bits),
+        [
+            a.scattering_per_km,
+            a.absorption_per_km,
+            a.angstrom,
+            a.scale_height_km,
+            a.g,
+            a.forward_share,
+            a.forward_g,
+        ]
+        .map(f32::to_bits),
     )
 }
 
@@ -228,7 +239,7 @@ impl SkyBaker {
         self.built_elevation_deg
     }
 
-    /// Whether the tables held were built for `sky`'s atmosphere (haze, ozone, ground albedo):
+    /// Whether the tables held were built for `sky`'s atmosphere (haze, ozone, ground albedo, aerosol):
     /// an update for it rebuilds at most the sky-view table.
     pub fn holds_atmosphere_of(&self, sky: &PhysicalSky) -> bool {
         self.luts.as_ref().is_some_and(|l| l.key == key(sky))

@@ -32,6 +32,7 @@ mod sky_view;
 mod solar;
 mod transmittance;
 
+pub use atmosphere::Aerosol;
 pub use baker::{Baked, SkyBaker, TABLE_ELEVATION_STEP_DEG, table_elevation_deg};
 pub use calendar::UtcInstant;
 pub use clouds::{

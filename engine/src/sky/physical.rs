@@ -12,7 +12,9 @@
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
-use super::atmosphere::{Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, VIEW_ALTITUDE_KM};
+use super::atmosphere::{
+    Aerosol, Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, VIEW_ALTITUDE_KM,
+};
 use super::calendar::UtcInstant;
 use super::error::SkyError;
 use super::horizon::{Horizontal, Observer};
@@ -55,9 +57,14 @@ pub struct PhysicalSky {
     #[serde(default)]
     pub time: Option<SkyTime>,
     /// Aerosol density relative to Hillaire's clear preset (1), 0..=100. Mitsuba's
-    /// Hosek–Wilkie turbidity 3 corresponds to [`HAZE_TURBIDITY_3`].
+    /// Hosek–Wilkie turbidity 3 corresponds to [`HAZE_TURBIDITY_3`] with
+    /// [`Aerosol::TURBIDITY_3`].
     #[serde(default = "one")]
     pub haze: f32,
+    /// What the aerosols are (per unit `haze`); the default is Hillaire's Earth preset.
+    /// [`Aerosol::TURBIDITY_3`] with [`HAZE_TURBIDITY_3`] matches Hosek–Wilkie's turbidity 3.
+    #[serde(default, skip_serializing_if = "Aerosol::is_earth")]
+    pub aerosol: Aerosol,
     /// Ozone density relative to the preset, 0..=10.
     #[serde(default = "one")]
     pub ozone: f32,
@@ -77,10 +84,11 @@ pub struct PhysicalSky {
     pub clouds: Option<super::clouds::CloudLayer>,
 }
 
-/// The haze whose diffuse-to-global horizontal ratio at 60° sun elevation matches Mitsuba's
-/// Hosek–Wilkie sky at turbidity 3, albedo 0.3 (0.1894; calibrated once by bisection,
-/// checked by `engine/tests/engine/sky_reference.rs`).
-pub const HAZE_TURBIDITY_3: f32 = 22.05;
+/// The haze that, with [`Aerosol::TURBIDITY_3`], gives the diffuse-to-global horizontal ratio
+/// of Mitsuba's Hosek–Wilkie sky at turbidity 3, albedo 0.3, at 60° sun elevation (0.1894;
+/// calibrated once by bisection, checked by `engine/tests/engine/sky_reference.rs`). With
+/// Hillaire's [`Aerosol::EARTH`] it is only a thicker haze.
+pub const HAZE_TURBIDITY_3: f32 = 5.949;
 
 impl Default for PhysicalSky {
     /// `sky: Physical(())`: a clear sky (Earth preset), the sun 45° high in the north.
@@ -90,6 +98,7 @@ impl Default for PhysicalSky {
             sun_azimuth_deg: 0.0,
             time: None,
             haze: 1.0,
+            aerosol: Aerosol::EARTH,
             ozone: 1.0,
             ground_albedo: default_albedo(),
             sun_scale: 1.0,
@@ -111,7 +120,7 @@ fn default_albedo() -> [f32; 3] {
     [0.3; 3]
 }
 
-fn check(
+pub(super) fn check(
     field: &'static str,
     value: f32,
     lo: f32,
@@ -148,6 +157,7 @@ impl PhysicalSky {
         )?;
         check("haze", self.haze, 0.0, 100.0, "0..=100")?;
         check("ozone", self.ozone, 0.0, 10.0, "0..=10")?;
+        self.aerosol.validate()?;
         check("sun_scale", self.sun_scale, 0.0, 1000.0, "0..=1000")?;
         check("night_sky", self.night_sky, 0.0, 1000.0, "0..=1000")?;
         for a in self.ground_albedo {
@@ -184,6 +194,7 @@ impl PhysicalSky {
             haze: self.haze,
             ozone: self.ozone,
             ground_albedo: Vec3::from(self.ground_albedo),
+            aerosol: self.aerosol,
         }
     }
 

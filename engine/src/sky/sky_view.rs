@@ -14,8 +14,8 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::atmosphere::{
-    Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, mie_phase,
-    ray_sphere, rayleigh_phase,
+    Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, ray_sphere,
+    rayleigh_phase,
 };
 use super::multiscatter::MultiScatteringLut;
 use super::transmittance::TransmittanceLut;
@@ -69,7 +69,10 @@ fn march(
         return Vec3::ZERO;
     };
     let cos_theta = dir.dot(sun);
-    let (phase_r, phase_m) = (rayleigh_phase(cos_theta), mie_phase(cos_theta));
+    let (phase_r, phase_m) = (
+        rayleigh_phase(cos_theta),
+        atmosphere.aerosol.phase(cos_theta),
+    );
     let (mut radiance, mut throughput) = (Vec3::ZERO, Vec3::ONE);
     // Quadratic spacing: short steps near the viewer where the air is dense.
     let mut t_prev = 0.0;

@@ -108,6 +108,7 @@ mod tests {
             haze: 1.0,
             ozone: 1.0,
             ground_albedo: Vec3::splat(0.3),
+            aerosol: Default::default(),
         };
         let lut = TransmittanceLut::build(&atmosphere);
         let r = GROUND_RADIUS_KM + 0.01;

@@ -52,6 +52,7 @@ fn diffuse_floor_under_the_physical_sky_conserves_energy() -> anyhow::Result<()>
         sun_azimuth_deg: 40.0,
         time: None,
         haze: HAZE_TURBIDITY_3,
+        aerosol: candela::sky::Aerosol::TURBIDITY_3,
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 0.0,

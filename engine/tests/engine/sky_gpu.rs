@@ -26,6 +26,7 @@ fn the_gpu_tracer_renders_a_physical_sky_itself() {
         sun_azimuth_deg: 120.0,
         time: None,
         haze: candela::sky::HAZE_TURBIDITY_3,
+        aerosol: candela::sky::Aerosol::TURBIDITY_3,
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,

@@ -1,15 +1,17 @@
-//! The physical sky (`candela::sky`, Hillaire 2020, Earth preset) against Mitsuba 3.9.1's
-//! `sunsky` (Hosek–Wilkie 2012 sky + 2013 sun, turbidity 3, ground albedo 0.3) in
-//! `../shared/external/reference/sky/` (read in place; see its README and scene.md).
+//! The physical sky (`candela::sky`, Hillaire 2020 with the aerosols of
+//! `sky::Aerosol::TURBIDITY_3`) against Mitsuba 3.9.1's `sunsky` (Hosek–Wilkie 2012 sky + 2013
+//! sun, turbidity 3, ground albedo 0.3) in `../shared/external/reference/sky/` (read in place;
+//! see its README and scene.md).
 //!
 //! Calibration, once, at 60° (`sky::HAZE_TURBIDITY_3` and `sky::atmosphere::SOLAR_IRRADIANCE`):
-//! haze from the diffuse-to-global ratio (it does not depend on the solar irradiance's level)
-//! and then the solar irradiance's level from the direct normal irradiance. Checked here: that
-//! the calibration holds at 60° (DNI within 1 %, ratio within 0.003), then at every elevation
-//! the diffuse-to-global horizontal ratio (luminance Y) within ±0.03, the sky's luminance more
-//! than 5° from the sun within a median relative error of 15 % and a 95th percentile of 35 %
-//! (sky.exr's 512 × 128 grid), and the zenith's CIE 1960 chromaticity within Δuv 0.01 where the
-//! zenith is more than 5° from the sun (at 90° it is the sun's centre: printed, not checked).
+//! haze from the diffuse-to-global ratio, then the solar irradiance per channel from the direct
+//! normal irradiance's colour and level. Checked here: that the calibration holds at 60° (DNI
+//! within 1 % per channel, ratio within 0.003), then at every elevation the diffuse-to-global
+//! horizontal ratio (luminance Y) within ±0.03, the zenith's CIE 1960 chromaticity within
+//! Δuv 0.01 where the zenith is more than 5° from the sun (at 90° it is the sun's centre:
+//! printed, not checked), and the sky's luminance more than 5° from the sun within a median
+//! relative error of 15 % and a 95th percentile of 35 % (sky.exr's 512 × 128 grid) at 30°, 60°
+//! and 90°. At 10° the luminance is a known gap (`#[ignore]`d test, docs/ACCURACY.md).
 //! Horizontal irradiance comes from fine quadrature of the sky-view lookup both tracers use.
 //! Figures are recorded in docs/ACCURACY.md ("Physical sky").
 
@@ -36,6 +38,7 @@ fn sky(elevation: u32, haze: f32) -> PhysicalSky {
         sun_azimuth_deg: 0.0,
         time: None,
         haze,
+        aerosol: candela::sky::Aerosol::TURBIDITY_3,
         ozone: 1.0,
         ground_albedo: [0.3; 3],
         sun_scale: 1.0,
@@ -162,11 +165,22 @@ fn percentile(sorted: &[f64], p: f64) -> f64 {
 fn calibration_holds_at_60_degrees() -> anyhow::Result<()> {
     let reference = json(60)?;
     let (_, ours) = figures(60, HAZE_TURBIDITY_3)?;
-    let dni_ref = number(&reference, &["sun", "direct_normal_irradiance_Y"])?;
+    let sin60 = 60f64.to_radians().sin();
+    let dni_ref = rgb(&reference, &["sun_horizontal_irradiance", "rgb"])? / sin60;
     let ratio_ref = number(&reference, &["diffuse_to_global_ratio", "Y"])?;
-    let (dni, r) = (luminance(ours.dni), ratio(&ours, 60));
-    println!("60°: DNI Y {dni:.4} (Mitsuba {dni_ref:.4}), DHI/GHI {r:.4} (Mitsuba {ratio_ref:.4})");
-    assert!((dni / dni_ref - 1.0).abs() < 0.01, "DNI {dni} vs {dni_ref}");
+    let r = ratio(&ours, 60);
+    println!(
+        "60°: DNI {:.4?} (Mitsuba {dni_ref:.4?}), DHI/GHI {r:.4} (Mitsuba {ratio_ref:.4})",
+        ours.dni
+    );
+    for c in 0..3 {
+        assert!(
+            (ours.dni[c] / dni_ref[c] - 1.0).abs() < 0.01,
+            "DNI channel {c}: {} vs {}",
+            ours.dni,
+            dni_ref
+        );
+    }
     assert!((r - ratio_ref).abs() < 0.003, "ratio {r} vs {ratio_ref}");
     Ok(())
 }
@@ -255,17 +269,14 @@ fn diffuse_to_global_ratio_matches_mitsuba() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// Known gap (docs/ACCURACY.md, "Physical sky"): Hillaire's Earth preset with haze 22 puts
-/// about three times Hosek–Wilkie's radiance in the circumsolar region and 0.5–0.7 times
-/// elsewhere (median error 29–41 %), and its zenith is greener (Δuv 0.012–0.027). Run with
-/// `--run-ignored all` to measure; it fails today.
+/// The sky's luminance distribution at 30°, 60° and 90°, and the zenith's colour wherever the
+/// zenith is away from the sun (10°, 30°, 60°).
 #[test]
-#[ignore = "known gap: sky luminance distribution and zenith colour differ from Hosek-Wilkie (docs/ACCURACY.md)"]
 fn sky_luminance_and_zenith_colour_match_mitsuba() -> anyhow::Result<()> {
     let mut failures = Vec::new();
     for elevation in ELEVATIONS {
         let c = compare(elevation)?;
-        if c.luminance_median > 0.15 || c.luminance_p95 > 0.35 {
+        if elevation > 10 && (c.luminance_median > 0.15 || c.luminance_p95 > 0.35) {
             failures.push(format!(
                 "{elevation}°: sky luminance median {:.3} p95 {:.3}",
                 c.luminance_median, c.luminance_p95
@@ -276,5 +287,22 @@ fn sky_luminance_and_zenith_colour_match_mitsuba() -> anyhow::Result<()> {
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");
+    Ok(())
+}
+
+/// Known gap (docs/ACCURACY.md, "Physical sky"): with the sun 10° high our sky near the horizon
+/// is 0.4–0.8 times Hosek–Wilkie's (median error 0.22, p95 0.41), because our sun there is 32 %
+/// dimmer than Hosek–Wilkie's while the energy split matches; one aerosol cannot give both.
+/// Run with `--run-ignored all` to measure; it fails today.
+#[test]
+#[ignore = "known gap: the sky's luminance at 10° sun elevation (docs/ACCURACY.md)"]
+fn sky_luminance_at_a_low_sun_matches_mitsuba() -> anyhow::Result<()> {
+    let c = compare(10)?;
+    assert!(
+        c.luminance_median <= 0.15 && c.luminance_p95 <= 0.35,
+        "10°: sky luminance median {:.3} p95 {:.3}",
+        c.luminance_median,
+        c.luminance_p95
+    );
     Ok(())
 }
