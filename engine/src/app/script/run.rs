@@ -324,7 +324,8 @@ pub fn run_script(
             && script.screenshots.iter().any(|s| s.frame == frame)
             && let Some(ev) = engine.sky_exposure_ev()
         {
-            collector.shot_exposure.insert(frame, ev);
+            let cap = script.render.max_exposure_ev.unwrap_or(f32::INFINITY);
+            collector.shot_exposure.insert(frame, ev.min(cap));
         }
         collector.report.frames.push(FrameTiming {
             frame,
