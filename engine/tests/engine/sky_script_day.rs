@@ -1,6 +1,7 @@
-//! A capture script's time keys move the sun, and `render.max_exposure_ev` caps the sky's
-//! meter — cheap, at 24 × 24 pixels: a floor with a wide block at its centre seen from straight
-//! above (image left = west, −X; right = east, +X), near Petra on 2026-09-26.
+//! A capture script's time keys move the sun, `render.max_exposure_ev` caps the sky's meter
+//! and a screenshot's `exposure_compensation_ev` shifts it — cheap, at 24 × 24 pixels: a floor
+//! with a wide block at its centre seen from straight above (image left = west, −X; right =
+//! east, +X), near Petra on 2026-09-26.
 //!
 //! * Morning (06:00 UTC, sun 31° high in the east-south-east) throws the block's shadow west,
 //!   into the image's left half; afternoon (13:00 UTC, 31° in the west-south-west) throws it
@@ -8,7 +9,7 @@
 //! * The floor at noon (09:30, 58°) is brighter than at dawn (03:51, 4°) in radiance, i.e.
 //!   with the exposure fixed.
 //! * At midnight the meter exposes for the moon (about +16 stops); a cap of +6 stops gives a
-//!   darker PNG than no cap.
+//!   darker PNG than no cap, and so does a shot's exposure compensation of −2 stops.
 
 use std::path::{Path, PathBuf};
 
@@ -42,13 +43,14 @@ fn folder(tag: &str) -> Dir {
     Dir(dir)
 }
 
-/// Runs a script of one shot per `(utc_hours, name)`, two frames of 4 samples each.
-fn run(dir: &Path, render: &str, shots: &[(f64, &str)]) -> ScriptReport {
+/// Runs a script of one shot per `(utc_hours, name)`, two frames of 4 samples each; `shot`
+/// is added to every screenshot entry.
+fn run(dir: &Path, render: &str, shot: &str, shots: &[(f64, &str)]) -> ScriptReport {
     let times: Vec<String> = (shots.iter().enumerate())
         .map(|(i, (h, _))| format!("(frame: {}, utc_hours: {h})", 2 * i))
         .collect();
     let names: Vec<String> = (shots.iter().enumerate())
-        .map(|(i, (_, n))| format!("(frame: {}, name: \"{n}\")", 2 * i + 1))
+        .map(|(i, (_, n))| format!("(frame: {}, name: \"{n}\"{shot})", 2 * i + 1))
         .collect();
     let text = format!(
         "Script(level: (path: \"level.ron\"), frames: {}, seconds_per_frame: 0.05, \
@@ -90,6 +92,7 @@ fn time_keys_move_the_sun_across_the_sky() {
     let report = run(
         &dir.0,
         "auto_exposure: false",
+        "",
         &[
             (3.85, "dawn"),
             (6.0, "morning"),
@@ -117,21 +120,36 @@ fn png_mean(path: &Path) -> f64 {
 }
 
 #[test]
-fn a_cap_on_the_sky_meter_darkens_the_night_shot() {
+fn a_cap_on_the_sky_meter_and_a_compensation_darken_the_night_shot() {
     let dir = folder("cap");
-    run(&dir.0, "auto_exposure: true", &[(21.0, "metered")]);
+    run(&dir.0, "auto_exposure: true", "", &[(21.0, "metered")]);
     run(
         &dir.0,
         "auto_exposure: true, max_exposure_ev: 6",
+        "",
         &[(21.0, "capped")],
     );
-    let (metered, capped) = (
+    run(
+        &dir.0,
+        "auto_exposure: true",
+        ", exposure_compensation_ev: -2",
+        &[(21.0, "compensated")],
+    );
+    let (metered, capped, compensated) = (
         png_mean(&dir.0.join("metered.png")),
         png_mean(&dir.0.join("capped.png")),
+        png_mean(&dir.0.join("compensated.png")),
     );
-    println!("midnight PNG mean: metered {metered:.2}, capped at +6 EV {capped:.2}");
+    println!(
+        "midnight PNG mean: metered {metered:.2}, capped at +6 EV {capped:.2}, \
+         compensated by -2 EV {compensated:.2}"
+    );
     assert!(metered > 20.0, "the metered night should read: {metered}");
     assert!(capped < 0.25 * metered, "capped {capped} vs metered {metered}");
+    assert!(
+        compensated < 0.8 * metered && compensated > 0.1 * metered,
+        "compensated {compensated} vs metered {metered}"
+    );
     // A cap that is not a number is refused, naming the field.
     let bad = "Script(frames: 1, seconds_per_frame: 0.05, render: (max_exposure_ev: NaN))";
     let e = Script::parse(&dir.0.join("bad.ron"), bad).unwrap_err().to_string();

@@ -94,6 +94,9 @@ impl Script {
         for (i, s) in self.screenshots.iter().enumerate() {
             let item = format!("screenshots[{i}]");
             self.check_frame(&item, s.frame)?;
+            if !s.exposure_compensation_ev.is_finite() {
+                return Err(self.invalid(item, "exposure_compensation_ev must be finite"));
+            }
             let stem = s.stem();
             let safe = !stem.is_empty()
                 && !stem.starts_with('.')

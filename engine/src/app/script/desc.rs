@@ -60,7 +60,7 @@
 //! * `screenshots`: at `frame`, the converged film is written as `<name>.png` (tonemapped,
 //!   `render.exposure_ev`, or with `render.auto_exposure: true` the exposure the physical sky's
 //!   horizontal illuminance calls for at that frame, `sky::exposure_ev`, at most
-//!   `render.max_exposure_ev` when set) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
+//!   `render.max_exposure_ev` when set; plus the shot's `exposure_compensation_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
 //!   defaults to `frame_NNNNN`; it may hold only letters, digits, `_`, `-` and `.`.
 
 use std::path::{Path, PathBuf};
@@ -284,6 +284,14 @@ pub struct Screenshot {
     /// Also write linear radiance as OpenEXR.
     #[serde(default)]
     pub exr: bool,
+    /// Stops added to this PNG's exposure, metered or manual (a photographer's exposure
+    /// compensation: −1.5 keeps a dusk sky towards the sun from clipping); finite, default 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub exposure_compensation_ev: f32,
+}
+
+fn is_zero(v: &f32) -> bool {
+    *v == 0.0
 }
 
 impl Screenshot {

@@ -151,7 +151,8 @@ impl Collector<'_> {
                         .shot_exposure
                         .get(&shot.frame)
                         .copied()
-                        .unwrap_or(self.exposure_ev),
+                        .unwrap_or(self.exposure_ev)
+                        + shot.exposure_compensation_ev,
                     ..Default::default()
                 };
                 write_png(&file, film.width, film.height, &film.mean, &tonemap)
