@@ -87,8 +87,9 @@ fn a_negative_or_non_finite_haze_and_a_turbidity_are_refused() {
 
 #[test]
 fn a_cloud_texture_of_zero_size_is_refused() {
-    let clouds =
-        |texels: &str, size: &str| format!("clouds: Some((height_m: 1000.0, texels: {texels}, size_m: {size}, {BLOB}))");
+    let clouds = |texels: &str, size: &str| {
+        format!("clouds: Some((height_m: 1000.0, texels: {texels}, size_m: {size}, {BLOB}))")
+    };
     refused("texels_zero", &clouds("0", "800.0"), "clouds.texels");
     refused("tile_zero", &clouds("64", "0.0"), "clouds.size_m");
     refused("tile_negative", &clouds("64", "-800.0"), "clouds.size_m");
@@ -103,14 +104,34 @@ fn a_cloud_texture_of_zero_size_is_refused() {
 
 #[test]
 fn a_latitude_out_of_range_is_refused() {
-    refused("latitude_north", &time("90.5", "11.6", "12.0"), "time.latitude_deg");
-    refused("latitude_south", &time("-91.0", "11.6", "12.0"), "time.latitude_deg");
-    refused("latitude_nan", &time("NaN", "11.6", "12.0"), "time.latitude_deg");
+    refused(
+        "latitude_north",
+        &time("90.5", "11.6", "12.0"),
+        "time.latitude_deg",
+    );
+    refused(
+        "latitude_south",
+        &time("-91.0", "11.6", "12.0"),
+        "time.latitude_deg",
+    );
+    refused(
+        "latitude_nan",
+        &time("NaN", "11.6", "12.0"),
+        "time.latitude_deg",
+    );
 }
 
 #[test]
 fn a_longitude_or_an_hour_out_of_range_is_refused() {
-    refused("longitude", &time("48.1", "181.0", "12.0"), "time.longitude_deg");
+    refused(
+        "longitude",
+        &time("48.1", "181.0", "12.0"),
+        "time.longitude_deg",
+    );
     refused("hour_24", &time("48.1", "11.6", "24.0"), "time.utc_hours");
-    refused("hour_negative", &time("48.1", "11.6", "-0.5"), "time.utc_hours");
+    refused(
+        "hour_negative",
+        &time("48.1", "11.6", "-0.5"),
+        "time.utc_hours",
+    );
 }

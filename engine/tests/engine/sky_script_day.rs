@@ -102,14 +102,29 @@ fn time_keys_move_the_sun_across_the_sky() {
     );
     // Half-images clear of the block (it spans about columns 11..13).
     let (west, east) = (0..10, 14..24);
-    let morning = (mean(&report, "morning", west.clone()), mean(&report, "morning", east.clone()));
-    let afternoon = (mean(&report, "afternoon", west.clone()), mean(&report, "afternoon", east));
+    let morning = (
+        mean(&report, "morning", west.clone()),
+        mean(&report, "morning", east.clone()),
+    );
+    let afternoon = (
+        mean(&report, "afternoon", west.clone()),
+        mean(&report, "afternoon", east),
+    );
     println!("morning west/east {morning:?}, afternoon west/east {afternoon:?}");
-    assert!(morning.0 < 0.9 * morning.1, "morning: the shadow should lie west: {morning:?}");
-    assert!(afternoon.1 < 0.9 * afternoon.0, "afternoon: the shadow should lie east: {afternoon:?}");
+    assert!(
+        morning.0 < 0.9 * morning.1,
+        "morning: the shadow should lie west: {morning:?}"
+    );
+    assert!(
+        afternoon.1 < 0.9 * afternoon.0,
+        "afternoon: the shadow should lie east: {afternoon:?}"
+    );
     let (dawn, noon) = (mean(&report, "dawn", 0..24), mean(&report, "noon", 0..24));
     println!("floor at dawn {dawn}, at noon {noon}");
-    assert!(noon > 3.0 * dawn, "noon {noon} should be far brighter than dawn {dawn}");
+    assert!(
+        noon > 3.0 * dawn,
+        "noon {noon} should be far brighter than dawn {dawn}"
+    );
 }
 
 /// Mean of a PNG's bytes (a brighter picture has a larger mean).
@@ -145,13 +160,21 @@ fn a_cap_on_the_sky_meter_and_a_compensation_darken_the_night_shot() {
          compensated by -2 EV {compensated:.2}"
     );
     assert!(metered > 20.0, "the metered night should read: {metered}");
-    assert!(capped < 0.25 * metered, "capped {capped} vs metered {metered}");
+    assert!(
+        capped < 0.25 * metered,
+        "capped {capped} vs metered {metered}"
+    );
     assert!(
         compensated < 0.8 * metered && compensated > 0.1 * metered,
         "compensated {compensated} vs metered {metered}"
     );
     // A cap that is not a number is refused, naming the field.
     let bad = "Script(frames: 1, seconds_per_frame: 0.05, render: (max_exposure_ev: NaN))";
-    let e = Script::parse(&dir.0.join("bad.ron"), bad).unwrap_err().to_string();
-    assert!(e.contains("bad.ron") && e.contains("render.max_exposure_ev"), "{e}");
+    let e = Script::parse(&dir.0.join("bad.ron"), bad)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.contains("bad.ron") && e.contains("render.max_exposure_ev"),
+        "{e}"
+    );
 }
