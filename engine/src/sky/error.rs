@@ -7,13 +7,15 @@
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SkyError {
     /// Latitude outside [−90°, 90°] or not finite.
-    #[error("latitude {0}° is outside [-90, 90]")]
+    #[error("time.latitude_deg = {0} is outside [-90, 90] (degrees, north positive)")]
     Latitude(f64),
     /// Longitude outside [−180°, 180°] or not finite.
-    #[error("longitude {0}° is outside [-180, 180]")]
+    #[error("time.longitude_deg = {0} is outside [-180, 180] (degrees, east positive)")]
     Longitude(f64),
     /// A calendar date that does not exist, or a year outside the formulas' range.
-    #[error("date {year}-{month:02}-{day:02} is not a valid date in 1800..=2200")]
+    #[error(
+        "date {year}-{month:02}-{day:02} (time.year, time.month, time.day) is not a valid date in 1800..=2200"
+    )]
     Date { year: i32, month: u32, day: u32 },
     /// A time of day outside 00:00:00 ≤ t < 24:00:00 (UTC).
     #[error("time {hour:02}:{minute:02}:{second} is not a valid UTC time of day")]

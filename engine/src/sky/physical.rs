@@ -210,13 +210,12 @@ impl PhysicalSky {
 
 impl SkyTime {
     pub(super) fn instant(&self) -> Result<UtcInstant, SkyError> {
-        let bad = SkyError::Time {
-            hour: 24,
-            minute: 0,
-            second: self.utc_hours * 3600.0,
-        };
         if !self.utc_hours.is_finite() || !(0.0..24.0).contains(&self.utc_hours) {
-            return Err(bad);
+            return Err(SkyError::Parameter {
+                field: "time.utc_hours",
+                value: self.utc_hours,
+                range: "0 <= h < 24",
+            });
         }
         let seconds = self.utc_hours * 3600.0;
         let (hour, minute) = (

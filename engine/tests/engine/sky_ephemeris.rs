@@ -78,5 +78,5 @@ fn bad_places_and_times_are_typed_errors() {
         })
     ));
     let message = Observer::new(123.0, 0.0).unwrap_err().to_string();
-    assert!(message.contains("latitude 123"), "{message}");
+    assert!(message.contains("time.latitude_deg = 123"), "{message}");
 }

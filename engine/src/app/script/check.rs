@@ -60,6 +60,9 @@ impl Script {
                 "width and height must be in 1..=16384 and spp at least 1",
             ));
         }
+        if r.max_exposure_ev.is_some_and(|ev| !ev.is_finite()) {
+            return Err(self.invalid("render.max_exposure_ev", "must be a finite number of stops"));
+        }
         let frames: Vec<u32> = self.camera.iter().map(|k| k.frame).collect();
         self.check_increasing("camera", &frames)?;
         for (i, k) in self.camera.iter().enumerate() {
@@ -91,6 +94,9 @@ impl Script {
         for (i, s) in self.screenshots.iter().enumerate() {
             let item = format!("screenshots[{i}]");
             self.check_frame(&item, s.frame)?;
+            if !s.exposure_compensation_ev.is_finite() {
+                return Err(self.invalid(item, "exposure_compensation_ev must be finite"));
+            }
             let stem = s.stem();
             let safe = !stem.is_empty()
                 && !stem.starts_with('.')

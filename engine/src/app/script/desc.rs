@@ -59,7 +59,8 @@
 //!   order. Between keys the day flows at the sky's `time_rate` (0: it stands still).
 //! * `screenshots`: at `frame`, the converged film is written as `<name>.png` (tonemapped,
 //!   `render.exposure_ev`, or with `render.auto_exposure: true` the exposure the physical sky's
-//!   horizontal illuminance calls for at that frame, `sky::exposure_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
+//!   horizontal illuminance calls for at that frame, `sky::exposure_ev`, at most
+//!   `render.max_exposure_ev` when set; plus the shot's `exposure_compensation_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
 //!   defaults to `frame_NNNNN`; it may hold only letters, digits, `_`, `-` and `.`.
 
 use std::path::{Path, PathBuf};
@@ -132,6 +133,11 @@ pub struct ScriptRender {
     /// Expose the PNG screenshots for the physical sky's horizontal illuminance at their frame
     /// instead (`Engine::sky_exposure_ev`; `exposure_ev` for other skies).
     pub auto_exposure: bool,
+    /// With `auto_exposure`: the most stops the sky's meter may set, stops (`None`: no cap).
+    /// The meter reads the sky alone, so after dusk it exposes for moonlight or starlight and
+    /// would blow out a scene lit by torches (`WindowedPlay::max_exposure_ev` alike).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_exposure_ev: Option<f32>,
 }
 
 impl Default for ScriptRender {
@@ -144,6 +150,7 @@ impl Default for ScriptRender {
             seed: 0,
             exposure_ev: 0.0,
             auto_exposure: false,
+            max_exposure_ev: None,
         }
     }
 }
@@ -277,6 +284,14 @@ pub struct Screenshot {
     /// Also write linear radiance as OpenEXR.
     #[serde(default)]
     pub exr: bool,
+    /// Stops added to this PNG's exposure, metered or manual (a photographer's exposure
+    /// compensation: −1.5 keeps a dusk sky towards the sun from clipping); finite, default 0.
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub exposure_compensation_ev: f32,
+}
+
+fn is_zero(v: &f32) -> bool {
+    *v == 0.0
 }
 
 impl Screenshot {

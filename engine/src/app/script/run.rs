@@ -151,7 +151,8 @@ impl Collector<'_> {
                         .shot_exposure
                         .get(&shot.frame)
                         .copied()
-                        .unwrap_or(self.exposure_ev),
+                        .unwrap_or(self.exposure_ev)
+                        + shot.exposure_compensation_ev,
                     ..Default::default()
                 };
                 write_png(&file, film.width, film.height, &film.mean, &tonemap)
@@ -324,7 +325,8 @@ pub fn run_script(
             && script.screenshots.iter().any(|s| s.frame == frame)
             && let Some(ev) = engine.sky_exposure_ev()
         {
-            collector.shot_exposure.insert(frame, ev);
+            let cap = script.render.max_exposure_ev.unwrap_or(f32::INFINITY);
+            collector.shot_exposure.insert(frame, ev.min(cap));
         }
         collector.report.frames.push(FrameTiming {
             frame,
