@@ -1,6 +1,6 @@
 //! [`EditorState`]: one level being edited — its file, its document, the history, the
-//! selection, the snapping in effect, whether there are unsaved changes and the problems of
-//! the last save that was refused — and the operations the UI's keys and panels call
+//! selection, the snapping in effect, the palette, whether there are unsaved changes and the
+//! problems of the last save that was refused — and the operations the UI's keys and panels call
 //! (apply, undo, redo, drags, duplicate, delete and move the selection, save, autosave).
 //!
 //! Main thread. Must not: touch the world (the runner follows the returned [`Touch`]) or the
@@ -16,6 +16,7 @@ use super::check::Problem;
 use super::command::{Edit, EditError, InstanceField, Touch};
 use super::document::{Document, DocumentError};
 use super::history::History;
+use super::place::Palette;
 use super::recovery::write_recovery;
 use super::save::{SaveError, SaveReport, save_document, write_document};
 use super::selection::Selection;
@@ -30,6 +31,8 @@ pub struct EditorState {
     pub history: History,
     pub selection: Selection,
     pub snap: Snap,
+    /// The palette's model files and its current piece (`place`).
+    pub palette: Palette,
     /// Problems that refused the last save (empty after a save succeeds).
     pub problems: Vec<Problem>,
     /// `History::state_id` when the document last matched its file.
@@ -50,6 +53,7 @@ impl EditorState {
             history: History::default(),
             selection: Selection::default(),
             snap: Snap::default(),
+            palette: Palette::default(),
             problems: Vec::new(),
             saved_state: 0,
         }
