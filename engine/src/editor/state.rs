@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
-use crate::assets::AssetRoot;
+use crate::assets::{AssetRoot, Level};
 
 use super::check::Problem;
 use super::command::{Edit, EditError, InstanceField, Touch};
@@ -33,6 +33,10 @@ pub struct EditorState {
     pub snap: Snap,
     /// The palette's model files and its current piece (`place`).
     pub palette: Palette,
+    /// The base file of a composed world (Reflect's `common.ron`), read-only: its models and
+    /// materials are offered to the edited file, which does not save them. `None`: the file
+    /// is a level on its own.
+    pub base: Option<Level>,
     /// Problems that refused the last save (empty after a save succeeds).
     pub problems: Vec<Problem>,
     /// `History::state_id` when the document last matched its file.
@@ -54,6 +58,7 @@ impl EditorState {
             selection: Selection::default(),
             snap: Snap::default(),
             palette: Palette::default(),
+            base: None,
             problems: Vec::new(),
             saved_state: 0,
         }

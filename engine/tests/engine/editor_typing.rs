@@ -2,11 +2,15 @@
 //! harness (`editor_common::input`, issues 32 and 33): pointer clicks at the places the widgets
 //! were painted and typed text, through egui's own input. Typing a number into the
 //! translation's X field moves the instance to exactly that value, as one undoable command;
-//! picking a material from the material combo box gives the instance that override.
+//! picking a material from the material combo box gives the instance that override; in a
+//! composed world (a Reflect chamber over `common.ron`) the base file's models are in the
+//! palette and its materials in the combo box.
 
 use crate::editor_common;
 
-use candela::editor::{EditorState, SelectMode};
+use candela::assets::Level;
+use candela::editor::ui::PanelOutput;
+use candela::editor::{EditorState, PaletteItem, SelectMode};
 use editor_common::input::Panels;
 use editor_common::platform_with_laser;
 
@@ -57,6 +61,44 @@ fn a_material_picked_from_the_combo_box_overrides_the_instances() -> anyhow::Res
     assert!(
         ui.painted.has_prefix("Material \"lift\""),
         "override fields shown"
+    );
+    Ok(())
+}
+
+#[test]
+fn a_composed_worlds_base_offers_its_models_and_materials() -> anyhow::Result<()> {
+    let base = Level::parse(
+        std::path::Path::new("common.ron"),
+        r#"Level(
+            materials: [(name: "wall_white", kind: Diffuse, base_color: (0.8, 0.8, 0.8))],
+            boxes: [(name: "kit_crate", size: (1, 1, 1), material: "wall_white")],
+            camera: (position: (0, 1, 5), look_at: (0, 1, 0), vertical_fov_deg: 50),
+        )"#,
+    )?;
+    let mut state = EditorState::new(std::path::Path::new("x.ron"), platform_with_laser()?);
+    state.selection.click(Some(0), SelectMode::Replace);
+    state.base = Some(base);
+    // A chamber defines few materials of its own (a long list scrolls in the popup).
+    state.doc.level.materials.truncate(2);
+    let mut ui = Panels::new(state);
+    // The palette lists the base's model (found through its search field, the list scrolls);
+    // a click asks the runner to place it.
+    let search = ui.painted.find("search pieces")?;
+    ui.type_into(search, "kit")?;
+    ui.click_text("kit_crate (base)")?;
+    let asked: Vec<&PanelOutput> = ui.outputs.iter().filter(|o| o.place.is_some()).collect();
+    assert_eq!(asked.len(), 1);
+    assert_eq!(asked[0].place, Some(PaletteItem::Model("kit_crate".into())));
+    // The material combo box offers the base's material.
+    ui.choose("(the model's own)", "wall_white")?;
+    assert_eq!(
+        ui.state.doc.level.instances[0].material.as_deref(),
+        Some("wall_white")
+    );
+    ui.pass(Vec::new());
+    assert!(
+        ui.painted
+            .has_prefix("Material \"wall_white\" (Diffuse) is the base file's")
     );
     Ok(())
 }

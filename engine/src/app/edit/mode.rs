@@ -69,6 +69,7 @@ impl EditMode {
         let mut state = EditorState::open(&target.path)?;
         let folder = super::place::palette_folder(&target.path);
         state.palette.files = crate::editor::model_files(target.root.path(), &folder);
+        state.base = target.base.as_deref().cloned();
         let recovery = find_recovery(&target.path);
         Ok(Self {
             state,

@@ -4,7 +4,8 @@
 //! material override, dynamic flag, light group, body (`bodies`) — and the fields of its
 //! override material (`materials`). When the outliner or the problems panel put another item
 //! in focus (`Selection::item`: a material, volume, laser, clip or rule), the inspector shows
-//! that item's widgets instead.
+//! that item's widgets instead. In a composed world the base file's models and materials are
+//! offered too (`EditorState::base`); a base material's fields are the base file's to edit.
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
@@ -62,6 +63,14 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     {
         ui.separator();
         materials::fields(ui, m, &level.materials[m], p);
+    } else if let Some(name) = entry.material.as_deref()
+        && let Some(m) = (state.base.iter().flat_map(|b| &b.materials)).find(|m| m.name == name)
+    {
+        ui.separator();
+        ui.label(format!(
+            "Material {name:?} ({:?}) is the base file's: edit it there.",
+            m.kind
+        ));
     }
 }
 
@@ -92,7 +101,9 @@ fn fields(
 ) {
     let level = &state.doc.level;
     let set = |p: &mut Pending, field| p.edits.push(Edit::Instance { index, field });
-    let models = model_names(level);
+    let base = state.base.as_ref();
+    let mut models = model_names(level);
+    models.extend(base.iter().flat_map(|b| model_names(b)));
     egui::ComboBox::from_label("model")
         .selected_text(e.model.as_str())
         .show_ui(ui, |ui| {
@@ -112,7 +123,11 @@ fn fields(
             {
                 set(p, InstanceField::Material(None));
             }
-            for m in &level.materials {
+            for m in level
+                .materials
+                .iter()
+                .chain(base.iter().flat_map(|b| &b.materials))
+            {
                 let chosen = e.material.as_deref() == Some(m.name.as_str());
                 if ui.selectable_label(chosen, m.name.as_str()).clicked() && !chosen {
                     set(p, InstanceField::Material(Some(m.name.clone())));

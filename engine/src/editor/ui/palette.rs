@@ -1,6 +1,7 @@
 //! The palette: every model the level can place — its own models (files, grids, boxes,
 //! terrains, cities: `editor::model_names`), then the model files of its asset folder it does
-//! not list yet (`EditorState::palette`, found when the editor opens) — with a search field.
+//! not list yet (`EditorState::palette`, found when the editor opens), and in a composed
+//! world the base file's models (`name (base)`) — with a search field.
 //! Clicking a piece asks the runner to place it in front of the camera, where the view's
 //! centre ray hits (`PanelOutput::place`), and makes it the current piece, which P places
 //! under the pointer over the view (`app::edit`). Pieces are listed by name; thumbnails are
@@ -26,10 +27,20 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     ui.data_mut(|d| d.insert_temp(id, search.clone()));
     let needle = search.to_lowercase();
     let level = &state.doc.level;
-    let listed: Vec<&str> = level.models.iter().map(|m| m.path.as_str()).collect();
+    let listed: Vec<&str> = (level.models.iter())
+        .chain(state.base.iter().flat_map(|b| b.models.iter()))
+        .map(|m| m.path.as_str())
+        .collect();
     let own = model_names(level)
         .into_iter()
         .map(|name| (name.to_string(), PaletteItem::Model(name.to_string())));
+    let base = (state.base.iter()).flat_map(model_names).map(|name| {
+        (
+            format!("{name} (base)"),
+            PaletteItem::Model(name.to_string()),
+        )
+    });
+    let own = own.chain(base);
     let files = (state.palette.files.iter())
         .filter(|f| !listed.contains(&f.as_str()))
         .map(|f| (format!("{f} (file)"), PaletteItem::File(f.clone())));
