@@ -12,6 +12,7 @@ use crate::assets::{ConditionEntry, InstanceEntry, Level};
 use super::comments::Anchored;
 use super::document::Document;
 pub use super::fields::{InstanceField, LaserField, MaterialField, VolumeField};
+pub use super::list_edit::ListEdit;
 
 /// The instance list's key in [`super::Comments`] (comments follow inserted and deleted
 /// instances).
@@ -48,6 +49,8 @@ pub enum Edit {
         from: String,
         to: String,
     },
+    /// An edit of another list of the level (models, a clip, lights off, autoplay).
+    List(ListEdit),
     /// Several edits as one (a group of instances moved together); applied in order.
     Batch(Vec<Edit>),
 }
@@ -187,6 +190,7 @@ impl Edit {
                     when: std::mem::replace(&mut rule.when, when),
                 }
             }
+            Edit::List(edit) => Edit::List(edit.apply(level)?),
             Edit::Batch(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for edit in edits {
@@ -248,6 +252,7 @@ impl Edit {
             Edit::RewireRule { index, from, to } => {
                 format!("Rewire {} from {from:?} to {to:?}", rule(*index))
             }
+            Edit::List(edit) => edit.describe(level),
             Edit::Batch(edits) => match edits.first() {
                 Some(first) if edits.len() == 1 => first.describe(level),
                 Some(first) => format!("{} (and {} more)", first.describe(level), edits.len() - 1),
@@ -266,6 +271,7 @@ impl Edit {
             Edit::Laser { index, field } => one("laser", index, field.name()),
             Edit::Volume { index, field } => one("volume", index, field.name()),
             Edit::RuleCondition { index, .. } => one("rule", index, "condition"),
+            Edit::List(edit) => edit.merge_part().map(|part| MergeKey(vec![part])),
             Edit::Batch(edits) if !edits.is_empty() => {
                 let mut keys = Vec::new();
                 for edit in edits {

@@ -1,10 +1,14 @@
 //! [`Selection`]: the instances the editor's tools act on, by index into the level's
 //! instance list, in the order they were selected (the last is the primary one, whose fields
-//! the inspector shows). Follows inserted and removed instances ([`Shift`]).
+//! the inspector shows), and the one other item in focus — a material, volume, laser, clip,
+//! rule or light group chosen in the outliner or the problems panel, which the inspector
+//! shows instead ([`Selection::item`]; a click on an instance drops it). Follows inserted and
+//! removed instances ([`Shift`]).
 //!
 //! Main thread. Must not: read the level (indices are checked by whoever uses them).
 
 use super::command::Shift;
+use crate::level::ItemRef;
 
 /// How a click changes the selection (plain click, Shift, Ctrl).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,11 +25,13 @@ pub enum SelectMode {
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Selection {
     instances: Vec<usize>,
+    item: Option<ItemRef>,
 }
 
 impl Selection {
     /// Applies a click on `instance` (`None`: on nothing) with `mode`.
     pub fn click(&mut self, instance: Option<usize>, mode: SelectMode) {
+        self.item = None;
         match (mode, instance) {
             (SelectMode::Replace, None) => self.instances.clear(),
             (SelectMode::Replace, Some(i)) => self.instances = vec![i],
@@ -47,6 +53,7 @@ impl Selection {
     /// Applies a box select of `instances` with `mode`: `Replace` selects exactly them (an
     /// empty box clears), `Add` adds them, `Toggle` flips each.
     pub fn boxed(&mut self, instances: &[usize], mode: SelectMode) {
+        self.item = None;
         if mode == SelectMode::Replace {
             self.instances.clear();
         }
@@ -72,6 +79,17 @@ impl Selection {
 
     pub fn clear(&mut self) {
         self.instances.clear();
+        self.item = None;
+    }
+
+    /// Puts `item` in focus (the inspector shows it); the instances stay selected.
+    pub fn focus(&mut self, item: Option<ItemRef>) {
+        self.item = item;
+    }
+
+    /// The item in focus other than the selected instances, if any (see the module doc).
+    pub fn item(&self) -> Option<ItemRef> {
+        self.item
     }
 
     pub fn contains(&self, instance: usize) -> bool {

@@ -1,6 +1,6 @@
 //! [`EditorState`]: one level being edited — its file, its document, the history, the
-//! selection, the snapping in effect, whether there are unsaved changes and the problems of
-//! the last save that was refused — and the operations the UI's keys and panels call
+//! selection, the snapping in effect, the palette, whether there are unsaved changes and the
+//! problems of the last save that was refused — and the operations the UI's keys and panels call
 //! (apply, undo, redo, drags, duplicate, delete and move the selection, save, autosave).
 //!
 //! Main thread. Must not: touch the world (the runner follows the returned [`Touch`]) or the
@@ -10,12 +10,13 @@ use std::path::{Path, PathBuf};
 
 use glam::Vec3;
 
-use crate::assets::AssetRoot;
+use crate::assets::{AssetRoot, Level};
 
 use super::check::Problem;
 use super::command::{Edit, EditError, InstanceField, Touch};
 use super::document::{Document, DocumentError};
 use super::history::History;
+use super::place::Palette;
 use super::recovery::write_recovery;
 use super::save::{SaveError, SaveReport, save_document, write_document};
 use super::selection::Selection;
@@ -30,6 +31,12 @@ pub struct EditorState {
     pub history: History,
     pub selection: Selection,
     pub snap: Snap,
+    /// The palette's model files and its current piece (`place`).
+    pub palette: Palette,
+    /// The base file of a composed world (Reflect's `common.ron`), read-only: its models and
+    /// materials are offered to the edited file, which does not save them. `None`: the file
+    /// is a level on its own.
+    pub base: Option<Level>,
     /// Problems that refused the last save (empty after a save succeeds).
     pub problems: Vec<Problem>,
     /// `History::state_id` when the document last matched its file.
@@ -50,6 +57,8 @@ impl EditorState {
             history: History::default(),
             selection: Selection::default(),
             snap: Snap::default(),
+            palette: Palette::default(),
+            base: None,
             problems: Vec::new(),
             saved_state: 0,
         }

@@ -1,171 +1,104 @@
-//! The editor's inspector driven as a designer drives it, headless: pointer clicks at the
-//! places the widgets were painted and typed text, through egui's own input (issue 32, weak
-//! test 6). Typing a number into the translation's X field moves the instance to exactly that
-//! value, as one undoable command; picking a material from the material combo box gives the
-//! instance that override. Widgets are found by the text they paint (the frame's shapes), so a
-//! test breaks when the inspector stops answering its input, not when a widget moves.
+//! The editor's inspector driven as a designer drives it, headless, through the synthetic-input
+//! harness (`editor_common::input`, issues 32 and 33): pointer clicks at the places the widgets
+//! were painted and typed text, through egui's own input. Typing a number into the
+//! translation's X field moves the instance to exactly that value, as one undoable command;
+//! picking a material from the material combo box gives the instance that override; in a
+//! composed world (a Reflect chamber over `common.ron`) the base file's models are in the
+//! palette and its materials in the combo box.
 
 use crate::editor_common;
 
-use candela::editor::ui::panels;
-use candela::editor::{EditorState, SelectMode};
+use candela::assets::Level;
+use candela::editor::ui::PanelOutput;
+use candela::editor::{EditorState, PaletteItem, SelectMode};
+use editor_common::input::Panels;
 use editor_common::platform_with_laser;
-use egui::epaint::{ClippedShape, Shape};
-use egui::{Pos2, Rect};
 
-const SCREEN: egui::Vec2 = egui::vec2(1280.0, 720.0);
-
-/// One egui pass of the panels with `events`; the painted text pieces, in paint order.
-fn pass(
-    ctx: &egui::Context,
-    state: &mut EditorState,
-    events: Vec<egui::Event>,
-) -> Vec<(String, Rect)> {
-    let input = egui::RawInput {
-        screen_rect: Some(Rect::from_min_size(Pos2::ZERO, SCREEN)),
-        events,
-        ..Default::default()
-    };
-    let out = ctx.run_pass(input, |ctx| {
-        let _ = panels(ctx, state);
-    });
-    let mut texts = Vec::new();
-    for ClippedShape { shape, .. } in &out.shapes {
-        collect_text(shape, &mut texts);
-    }
-    texts
-}
-
-fn collect_text(shape: &Shape, out: &mut Vec<(String, Rect)>) {
-    match shape {
-        Shape::Text(t) => out.push((t.galley.text().to_string(), t.visual_bounding_rect())),
-        Shape::Vec(shapes) => shapes.iter().for_each(|s| collect_text(s, out)),
-        _ => {}
-    }
-}
-
-/// A press and a release of the primary button at `at` (two events; egui sees a click).
-fn click(at: Pos2) -> Vec<egui::Event> {
-    let button = |pressed| egui::Event::PointerButton {
-        pos: at,
-        button: egui::PointerButton::Primary,
-        pressed,
-        modifiers: egui::Modifiers::NONE,
-    };
-    vec![egui::Event::PointerMoved(at), button(true), button(false)]
-}
-
-fn key(key: egui::Key, modifiers: egui::Modifiers) -> egui::Event {
-    egui::Event::Key {
-        key,
-        physical_key: None,
-        pressed: true,
-        repeat: false,
-        modifiers,
-    }
-}
-
-/// The rect of the last painted text equal to `text`.
-fn find(texts: &[(String, Rect)], text: &str) -> anyhow::Result<Rect> {
-    texts
-        .iter()
-        .rev()
-        .find(|(t, _)| t == text)
-        .map(|(_, r)| *r)
-        .ok_or_else(|| anyhow::anyhow!("no {text:?} painted"))
-}
-
-/// The editor with instance `index` of the platform level selected, after a first pass.
-fn editor_at(index: usize) -> anyhow::Result<(egui::Context, EditorState)> {
+/// The editor with instance `index` of the platform level selected.
+fn editor_at(index: usize) -> anyhow::Result<Panels> {
     let mut state = EditorState::new(std::path::Path::new("x.ron"), platform_with_laser()?);
     state.selection.click(Some(index), SelectMode::Replace);
-    let ctx = egui::Context::default();
-    pass(&ctx, &mut state, Vec::new());
-    Ok((ctx, state))
+    Ok(Panels::new(state))
 }
 
 #[test]
 fn a_number_typed_into_the_translation_moves_the_instance_as_one_command() -> anyhow::Result<()> {
     // Instance 1: the west wall at x = −5.1.
-    let (ctx, mut state) = editor_at(1)?;
-    let before = state.doc.level.instances[1].transform;
+    let mut ui = editor_at(1)?;
+    let before = ui.state.doc.level.instances[1].transform;
     assert_eq!(before.translation[0], -5.1);
-    let texts = pass(&ctx, &mut state, Vec::new());
-    let label = find(&texts, "translation (m)")?;
-    // The X field: the first number painted right of the label, on its row.
-    let x_field = texts
-        .iter()
-        .filter(|(t, r)| {
-            t.parse::<f32>().is_ok()
-                && r.left() > label.right()
-                && (r.center().y - label.center().y).abs() < 4.0
-        })
-        .min_by(|a, b| a.1.left().total_cmp(&b.1.left()))
-        .map(|(_, r)| *r)
-        .ok_or_else(|| anyhow::anyhow!("no X field beside the label"))?;
-    // A click turns the drag value into a text field; select all, type, Enter.
-    pass(&ctx, &mut state, click(x_field.center()));
-    pass(&ctx, &mut state, Vec::new());
-    assert!(
-        ctx.egui_wants_keyboard_input(),
-        "the X field took the keyboard"
-    );
-    pass(
-        &ctx,
-        &mut state,
-        vec![
-            key(egui::Key::A, egui::Modifiers::COMMAND),
-            egui::Event::Text("2.75".into()),
-            key(egui::Key::Enter, egui::Modifiers::NONE),
-        ],
-    );
-    pass(&ctx, &mut state, Vec::new());
-    let after = state.doc.level.instances[1].transform;
+    // The X field: the first number right of the label; click, select all, type, Enter.
+    ui.type_beside("translation (m)", 0, "3.5")?;
+    let after = ui.state.doc.level.instances[1].transform;
     assert_eq!(
         after.translation,
-        [2.75, before.translation[1], before.translation[2]]
+        [3.5, before.translation[1], before.translation[2]]
     );
     assert_eq!(after.rotation_deg, before.rotation_deg);
     assert_eq!(
-        state.history.undo_len(),
+        ui.state.history.undo_len(),
         1,
         "one command for the typed value"
     );
-    assert!(state.undo()?.is_some(), "it undoes");
-    assert_eq!(state.doc.level.instances[1].transform, before);
+    assert!(ui.state.undo()?.is_some(), "it undoes");
+    assert_eq!(ui.state.doc.level.instances[1].transform, before);
     Ok(())
 }
 
 #[test]
 fn a_material_picked_from_the_combo_box_overrides_the_instances() -> anyhow::Result<()> {
     // Instance 0: the floor, drawn with its model's own material.
-    let (ctx, mut state) = editor_at(0)?;
-    assert_eq!(state.doc.level.instances[0].material, None);
-    let texts = pass(&ctx, &mut state, Vec::new());
-    let combo = find(&texts, "(the model's own)")?;
-    pass(&ctx, &mut state, click(combo.center()));
-    let texts = pass(&ctx, &mut state, Vec::new());
-    // The popup lists the level's materials below the combo box.
-    let choice = texts
-        .iter()
-        .rev()
-        .find(|(t, r)| t == "lift" && r.top() > combo.bottom())
-        .map(|(_, r)| *r)
-        .ok_or_else(|| anyhow::anyhow!("the material list did not open"))?;
-    pass(&ctx, &mut state, click(choice.center()));
-    pass(&ctx, &mut state, Vec::new());
+    let mut ui = editor_at(0)?;
+    assert_eq!(ui.state.doc.level.instances[0].material, None);
+    ui.choose("(the model's own)", "lift")?;
     assert_eq!(
-        state.doc.level.instances[0].material.as_deref(),
+        ui.state.doc.level.instances[0].material.as_deref(),
         Some("lift")
     );
-    assert_eq!(state.history.undo_len(), 1);
-    // The inspector now shows the override's fields (its metallic slider among them).
-    let texts = pass(&ctx, &mut state, Vec::new());
+    assert_eq!(ui.state.history.undo_len(), 1);
+    // The inspector now shows the override's fields.
+    ui.pass(Vec::new());
     assert!(
-        texts
-            .iter()
-            .any(|(t, _)| t.starts_with("Material \"lift\"")),
+        ui.painted.has_prefix("Material \"lift\""),
         "override fields shown"
+    );
+    Ok(())
+}
+
+#[test]
+fn a_composed_worlds_base_offers_its_models_and_materials() -> anyhow::Result<()> {
+    let base = Level::parse(
+        std::path::Path::new("common.ron"),
+        r#"Level(
+            materials: [(name: "wall_white", kind: Diffuse, base_color: (0.8, 0.8, 0.8))],
+            boxes: [(name: "kit_crate", size: (1, 1, 1), material: "wall_white")],
+            camera: (position: (0, 1, 5), look_at: (0, 1, 0), vertical_fov_deg: 50),
+        )"#,
+    )?;
+    let mut state = EditorState::new(std::path::Path::new("x.ron"), platform_with_laser()?);
+    state.selection.click(Some(0), SelectMode::Replace);
+    state.base = Some(base);
+    // A chamber defines few materials of its own (a long list scrolls in the popup).
+    state.doc.level.materials.truncate(2);
+    let mut ui = Panels::new(state);
+    // The palette lists the base's model (found through its search field, the list scrolls);
+    // a click asks the runner to place it.
+    let search = ui.painted.find("search pieces")?;
+    ui.type_into(search, "kit")?;
+    ui.click_text("kit_crate (base)")?;
+    let asked: Vec<&PanelOutput> = ui.outputs.iter().filter(|o| o.place.is_some()).collect();
+    assert_eq!(asked.len(), 1);
+    assert_eq!(asked[0].place, Some(PaletteItem::Model("kit_crate".into())));
+    // The material combo box offers the base's material.
+    ui.choose("(the model's own)", "wall_white")?;
+    assert_eq!(
+        ui.state.doc.level.instances[0].material.as_deref(),
+        Some("wall_white")
+    );
+    ui.pass(Vec::new());
+    assert!(
+        ui.painted
+            .has_prefix("Material \"wall_white\" (Diffuse) is the base file's")
     );
     Ok(())
 }

@@ -10,7 +10,9 @@
 //! game, a layer below, implements them) and are re-exported here.
 //!
 //! One file per job: `world` (the world in step),
-//! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass), `recover` (the recovery file), `view_input` (pointer and keys
+//! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass),
+//! `place` (the palette's pieces put where the view's ray hits), `recover` (the recovery
+//! file), `view_input` (pointer and keys
 //! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
 //! game's hooks (the runner holds the game while editing); may use only `input`, `persist`,
 //! `replay`, `runner`, `script` and `play` of `app` (the layers before it).
@@ -20,6 +22,7 @@ mod camera;
 mod draw;
 mod gizmo;
 mod mode;
+mod place;
 mod recover;
 mod view_input;
 mod world;
@@ -33,5 +36,6 @@ pub use gizmo::{
     rotation_of,
 };
 pub use mode::{EditFrame, EditMode};
+pub use place::{PLACE_DISTANCE_METRES, palette_folder};
 pub use recover::older_recovery_path;
 pub use world::{Bounds, EditWorld, Followed};

@@ -66,7 +66,10 @@ pub struct EditMode {
 impl EditMode {
     /// Opens `target`'s level file for editing over the world the game spawned (`spawned`).
     pub fn open(target: EditTarget, spawned: SpawnedLevel) -> Result<Self, DocumentError> {
-        let state = EditorState::open(&target.path)?;
+        let mut state = EditorState::open(&target.path)?;
+        let folder = super::place::palette_folder(&target.path);
+        state.palette.files = crate::editor::model_files(target.root.path(), &folder);
+        state.base = target.base.as_deref().cloned();
         let recovery = find_recovery(&target.path);
         Ok(Self {
             state,
@@ -198,6 +201,9 @@ impl EditMode {
             self.say(e.clone());
         }
         let mut touched = out.touched;
+        if let Some(item) = &out.place {
+            touched.extend(self.place(ctx, engine, item, None));
+        }
         let mut save = out.save;
         save |= self.toolbar(ctx);
         touched.extend(self.view_input(ctx, engine));

@@ -6,7 +6,8 @@
 //! - Left drag on a gizmo handle: move, rotate or scale the selection (one command); elsewhere:
 //!   box select (`box_select.rs`), with the same Shift and Ctrl.
 //! - Keys, unless a text field has the keyboard or the right button flies: W, E, R pick the
-//!   tool, X switches world/local, F frames the selection.
+//!   tool, X switches world/local, F frames the selection, P places the palette's current
+//!   piece under the pointer (`place.rs`).
 //!
 //! Main thread, inside the editor's egui pass. Must not: touch the world except the camera's
 //! pose (edits go through `EditorState`; the mode follows their touches).
@@ -82,6 +83,15 @@ impl EditMode {
             self.tool_keys(ctx, &mut camera);
         }
         self.camera = Some(camera);
+        let place_key = !flying
+            && !ctx.egui_wants_keyboard_input()
+            && ctx.input_mut(|i| i.consume_key(egui::Modifiers::NONE, egui::Key::P));
+        if place_key
+            && let Some(p) = response.hover_pos()
+            && let Some(item) = self.state.palette.current.clone()
+        {
+            touched.extend(self.place(ctx, engine, &item, Some(v2(p))));
+        }
         let desc = camera.desc();
         let level = &self.state.doc.level;
         let handles = self

@@ -50,6 +50,10 @@ pub struct EditTarget {
     pub build: BuildWorld,
     /// How a save is checked: `None`, the file on its own (`editor::save_document`).
     pub check: Option<CheckWorld>,
+    /// The base file of a composed world (Reflect's `common.ron`), as read when the target
+    /// was made: the edited part may use its models and materials (the editor offers them,
+    /// read-only). `None` for a level of one file.
+    pub base: Option<Rc<Level>>,
 }
 
 impl std::fmt::Debug for EditTarget {
@@ -75,6 +79,7 @@ impl EditTarget {
                 playable_from_level(&level_path, level, &build_root)
             }),
             check: None,
+            base: None,
         }
     }
 
@@ -104,6 +109,7 @@ impl EditTarget {
                 .iter()
                 .map(|(_, l)| l.instances.len())
                 .sum::<usize>();
+        let base_level = Rc::new(base.clone());
         let merged = Rc::new((base_path.to_path_buf(), base, parts));
         let with_part = {
             let merged = Rc::clone(&merged);
@@ -151,6 +157,7 @@ impl EditTarget {
             first_instance,
             build,
             check: Some(check),
+            base: Some(base_level),
         })
     }
 }

@@ -1,17 +1,22 @@
 //! The inspector: headed by the primary selected instance's name (its model and index only
 //! when it has no name, `outliner::instance_label`), typed fields for it — transform
 //! (translation in metres, rotation in degrees, scale, snapped when snapping is on), model,
-//! material override, dynamic flag, light group — and the fields of its override material
-//! (base colour, emission, roughness, metallic, IOR). Bodies are shown, not yet edited.
+//! material override, dynamic flag, light group, body (`bodies`) — and the fields of its
+//! override material (`materials`). When the outliner or the problems panel put another item
+//! in focus (`Selection::item`: a material, volume, laser, clip or rule), the inspector shows
+//! that item's widgets instead. In a composed world the base file's models and materials are
+//! offered too (`EditorState::base`); a base material's fields are the base file's to edit.
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
-use crate::assets::{InstanceEntry, LevelMaterial, TransformDesc};
+use crate::assets::{InstanceEntry, TransformDesc};
+use crate::level::ItemRef;
 
-use super::super::command::{Edit, InstanceField, MaterialField};
+use super::super::command::{Edit, InstanceField};
+use super::super::place::model_names;
 use super::super::state::EditorState;
-use super::Pending;
 use super::outliner::instance_label;
+use super::{Pending, bodies, clips, gameplay, materials};
 
 /// Three drag values in a row; whether any changed.
 pub(super) fn vec3(ui: &mut egui::Ui, label: &str, v: &mut [f32; 3], speed: f64) -> bool {
@@ -27,6 +32,11 @@ pub(super) fn vec3(ui: &mut egui::Ui, label: &str, v: &mut [f32; 3], speed: f64)
 
 pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     let level = &state.doc.level;
+    if let Some(item) = state.selection.item()
+        && focused(ui, state, item, p)
+    {
+        return;
+    }
     let Some(index) = state.selection.primary() else {
         ui.label("Nothing selected: click an instance in the view or the outliner.");
         return;
@@ -52,8 +62,34 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
         .and_then(|name| level.materials.iter().position(|m| m.name == name))
     {
         ui.separator();
-        material(ui, m, &level.materials[m], p);
+        materials::fields(ui, m, &level.materials[m], p);
+    } else if let Some(name) = entry.material.as_deref()
+        && let Some(m) = (state.base.iter().flat_map(|b| &b.materials)).find(|m| m.name == name)
+    {
+        ui.separator();
+        ui.label(format!(
+            "Material {name:?} ({:?}) is the base file's: edit it there.",
+            m.kind
+        ));
     }
+}
+
+/// The widgets of the item in focus; `false` for a kind the inspector has none for.
+fn focused(ui: &mut egui::Ui, state: &EditorState, item: ItemRef, p: &mut Pending) -> bool {
+    let level = &state.doc.level;
+    match item {
+        ItemRef::Material(i) => match level.materials.get(i) {
+            Some(m) => materials::fields(ui, i, m, p),
+            None => return false,
+        },
+        ItemRef::Volume(i) => gameplay::volume(ui, state, i, p),
+        ItemRef::Laser(i) => gameplay::laser(ui, state, i, p),
+        ItemRef::Rule(i) => gameplay::rule(ui, state, i, p),
+        ItemRef::Clip(i) => clips::show(ui, state, i, p),
+        ItemRef::LightsOff(_) => gameplay::light_groups(ui, state, p),
+        _ => return false,
+    }
+    true
 }
 
 fn fields(
@@ -65,15 +101,9 @@ fn fields(
 ) {
     let level = &state.doc.level;
     let set = |p: &mut Pending, field| p.edits.push(Edit::Instance { index, field });
-    let models: Vec<&str> = level
-        .models
-        .iter()
-        .map(|m| m.name.as_str())
-        .chain(level.grids.iter().map(|g| g.name.as_str()))
-        .chain(level.boxes.iter().map(|b| b.name.as_str()))
-        .chain(level.terrains.iter().map(|t| t.name.as_str()))
-        .chain(level.cities.iter().map(|c| c.name.as_str()))
-        .collect();
+    let base = state.base.as_ref();
+    let mut models = model_names(level);
+    models.extend(base.iter().flat_map(|b| model_names(b)));
     egui::ComboBox::from_label("model")
         .selected_text(e.model.as_str())
         .show_ui(ui, |ui| {
@@ -93,7 +123,11 @@ fn fields(
             {
                 set(p, InstanceField::Material(None));
             }
-            for m in &level.materials {
+            for m in level
+                .materials
+                .iter()
+                .chain(base.iter().flat_map(|b| &b.materials))
+            {
                 let chosen = e.material.as_deref() == Some(m.name.as_str());
                 if ui.selectable_label(chosen, m.name.as_str()).clicked() && !chosen {
                     set(p, InstanceField::Material(Some(m.name.clone())));
@@ -112,51 +146,9 @@ fn fields(
         if toggled || moved {
             set(p, InstanceField::LightGroup(lit.then_some(group)));
         }
-    });
-    let body = match &e.body {
-        Some(b) => format!("{b:?}"),
-        None => "none".into(),
-    };
-    ui.label(format!("body: {body}"));
-}
-
-fn material(ui: &mut egui::Ui, index: usize, m: &LevelMaterial, p: &mut Pending) {
-    let set = |p: &mut Pending, field| p.edits.push(Edit::Material { index, field });
-    ui.label(egui::RichText::new(format!("Material {:?} ({:?})", m.name, m.kind)).strong());
-    ui.horizontal(|ui| {
-        let mut c = m.base_color;
-        ui.label("base colour");
-        if ui.color_edit_button_rgb(&mut c).changed() {
-            set(p, MaterialField::BaseColor(c));
+        if let Some(group) = e.light_group {
+            gameplay::starts_off(ui, &level.gameplay.lights_off, group, "starts off", p);
         }
     });
-    let mut emission = m.emission;
-    if vec3(ui, "emission (W·sr⁻¹·m⁻²)", &mut emission, 0.05) {
-        set(p, MaterialField::Emission(emission.map(|v| v.max(0.0))));
-    }
-    let mut slider =
-        |ui: &mut egui::Ui, label: &str, v: f32, range, field: fn(f32) -> MaterialField| {
-            let mut v = v;
-            if ui
-                .add(egui::Slider::new(&mut v, range).text(label))
-                .changed()
-            {
-                set(p, field(v));
-            }
-        };
-    slider(
-        ui,
-        "roughness",
-        m.roughness,
-        0.0..=1.0,
-        MaterialField::Roughness,
-    );
-    slider(
-        ui,
-        "metallic",
-        m.metallic,
-        0.0..=1.0,
-        MaterialField::Metallic,
-    );
-    slider(ui, "IOR", m.ior, 1.0..=3.0, MaterialField::Ior);
+    bodies::show(ui, index, e.body.as_ref(), p);
 }

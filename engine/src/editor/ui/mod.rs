@@ -1,25 +1,33 @@
-//! The editor's first egui panels: an outliner of the level's instances and gameplay items
-//! (with search), an inspector with typed fields for the primary selected instance and its
-//! material, gameplay widgets (volumes' instances, lasers' origin and direction, rewiring a
-//! rule from one volume to another), the history with undo and redo, and the problems of the
-//! last refused save; plus the editor's keys (Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y, Ctrl+D,
-//! Delete, Ctrl+S), which are ignored while a text field has the keyboard.
+//! The editor's egui panels: an outliner of every item of the level (with search), a palette
+//! of pieces to place, an inspector with typed fields for the primary selected instance (its
+//! transform, model, material, body, …) or for the item in focus (a material, volume, laser,
+//! clip or rule), the level's materials, gameplay widgets, the history with undo and redo, and
+//! the problems of the last refused save (a click selects the item a problem names); plus the
+//! editor's keys (Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y, Ctrl+D, Delete, Ctrl+S), which are ignored
+//! while a text field has the keyboard.
 //!
 //! [`panels`] is called once per egui pass by `app::edit::EditMode`. Widgets only
 //! collect `Pending` edits; they are applied through [`EditorState`] after the pass draws, so
 //! every change is a command. A change made while the primary pointer button is held (a
 //! `DragValue` drag, a slider, a colour picker) belongs to one drag: one command.
 //! Main thread. Must not: touch the world or the renderer (the runner follows the returned
-//! [`Touch`]es) or save by itself (Ctrl+S is reported in [`PanelOutput::save`]).
+//! [`Touch`]es), save by itself (Ctrl+S is reported in [`PanelOutput::save`]) or pick (a
+//! piece to place is reported in [`PanelOutput::place`]).
 
+mod bodies;
+pub mod clips;
 mod gameplay;
 mod inspector;
+mod materials;
 pub mod outliner;
+pub mod palette;
 
 use super::check::instance_to_select;
 use super::command::{Edit, Touch};
+use super::place::PaletteItem;
 pub use super::selection::SelectMode;
 use super::state::EditorState;
+use crate::level::ItemRef;
 
 /// What the panels did this pass, for the runner.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -30,6 +38,9 @@ pub struct PanelOutput {
     pub errors: Vec<String>,
     /// Ctrl+S was pressed: the runner saves (`EditorState::save`) with its asset root.
     pub save: bool,
+    /// A palette piece was clicked: the runner places it in front of the camera
+    /// (`editor::place_edit`, one command). It is also the palette's current piece now.
+    pub place: Option<PaletteItem>,
 }
 
 /// What the widgets asked for during a pass.
@@ -37,6 +48,11 @@ pub struct PanelOutput {
 pub(super) struct Pending {
     pub edits: Vec<Edit>,
     pub select: Option<(Option<usize>, SelectMode)>,
+    /// Select exactly these instances (a light group's).
+    pub select_set: Option<Vec<usize>>,
+    /// Put this item in focus (after any selection of this pass).
+    pub focus: Option<ItemRef>,
+    pub place: Option<PaletteItem>,
     pub undo: bool,
     pub redo: bool,
 }
@@ -71,12 +87,28 @@ pub fn panels(ctx: &egui::Context, state: &mut EditorState) -> PanelOutput {
         // Down to the history window, docked under it.
         .default_height((view.height() - 260.0).max(160.0))
         .show(ctx, |ui| outliner::show(ui, state, &mut pending));
+    egui::Window::new("Palette")
+        .default_pos([left + 280.0, top])
+        .default_width(220.0)
+        .default_open(true)
+        .show(ctx, |ui| palette::show(ui, state, &mut pending));
+    egui::Window::new("Materials")
+        .default_pos([right - INSPECTOR_WIDTH - 16.0, view.center().y])
+        .default_width(INSPECTOR_WIDTH)
+        .default_open(false)
+        .show(ctx, |ui| materials::show(ui, state, &mut pending));
     egui::Window::new("Inspector")
         .default_pos([right - INSPECTOR_WIDTH - 16.0, top])
         .default_width(INSPECTOR_WIDTH)
         .show(ctx, |ui| {
-            inspector::show(ui, state, &mut pending);
-            ui.collapsing("Gameplay", |ui| gameplay::show(ui, state, &mut pending));
+            // Long items (a clip's keys, the gameplay lists) scroll inside the window.
+            egui::ScrollArea::vertical()
+                .id_salt("editor_inspector_scroll")
+                .max_height((view.height() - 120.0).max(200.0))
+                .show(ui, |ui| {
+                    inspector::show(ui, state, &mut pending);
+                    ui.collapsing("Gameplay", |ui| gameplay::show(ui, state, &mut pending));
+                });
         });
     egui::Window::new("History")
         .anchor(egui::Align2::LEFT_BOTTOM, [8.0, -8.0])
@@ -163,8 +195,14 @@ fn problems(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     ui.label("The level was not saved:");
     for problem in &state.problems {
         let clicked = ui.selectable_label(false, problem.to_string()).clicked();
-        if clicked && let Some(i) = instance_to_select(problem, &state.doc.level) {
-            p.select = Some((Some(i), SelectMode::Replace));
+        if !clicked {
+            continue;
+        }
+        // The instance it is in or sits on, if any; any other item goes in focus too.
+        let instance = instance_to_select(problem, &state.doc.level);
+        p.select = Some((instance, SelectMode::Replace));
+        if !matches!(problem.item, ItemRef::Instance(_) | ItemRef::Level) {
+            p.focus = Some(problem.item);
         }
     }
 }
@@ -178,6 +216,17 @@ fn apply(ctx: &egui::Context, state: &mut EditorState, p: Pending, out: &mut Pan
     }
     if let Some((instance, mode)) = p.select {
         state.selection.click(instance, mode);
+    }
+    if let Some(instances) = p.select_set {
+        state.selection.set(instances);
+        state.selection.focus(None);
+    }
+    if let Some(item) = p.focus {
+        state.selection.focus(Some(item));
+    }
+    if let Some(item) = p.place {
+        state.palette.current = Some(item.clone());
+        out.place = Some(item);
     }
     let mut results = Vec::new();
     if p.undo {

@@ -1,13 +1,15 @@
 //! The outliner: every instance (by its name first, then its model; by model and index only
 //! when it has no name: [`instance_label`]) with a search field, then the
-//! light groups, trigger volumes, lasers, clips and rules. Clicking an instance selects it
-//! (Shift adds, Ctrl toggles).
+//! materials, light groups, trigger volumes, lasers, clips and rules. Clicking an instance
+//! selects it (Shift adds, Ctrl toggles); clicking a light group selects its instances;
+//! clicking any other item puts it in focus (`Selection::item`), and the inspector shows it.
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
 use std::collections::BTreeSet;
 
 use crate::assets::InstanceEntry;
+use crate::level::ItemRef;
 
 use super::super::state::EditorState;
 use super::{Pending, mode_of};
@@ -44,41 +46,59 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
                 }
             }
             let g = &level.gameplay;
+            let focus = state.selection.item();
+            let mut section = |ui: &mut egui::Ui, title: &str, items: Vec<(String, ItemRef)>| {
+                let items: Vec<_> = (items.into_iter())
+                    .filter(|(s, _)| needle.is_empty() || s.to_lowercase().contains(&needle))
+                    .collect();
+                if items.is_empty() {
+                    return;
+                }
+                ui.label(egui::RichText::new(title).strong());
+                for (label, item) in items {
+                    if ui.selectable_label(focus == Some(item), label).clicked() {
+                        p.focus = Some(item);
+                    }
+                }
+            };
+            let listed = |names: Vec<String>, item: fn(usize) -> ItemRef| {
+                (names.into_iter().enumerate())
+                    .map(|(i, n)| (n, item(i)))
+                    .collect::<Vec<_>>()
+            };
+            let names = level.materials.iter().map(|m| m.name.clone()).collect();
+            section(ui, "Materials", listed(names, ItemRef::Material));
+            let names = g
+                .volumes
+                .iter()
+                .map(|v| format!("{} on {}", v.name, v.instance));
+            section(ui, "Volumes", listed(names.collect(), ItemRef::Volume));
+            let names =
+                (g.lasers.iter().enumerate()).map(|(i, l)| format!("laser {i} on {}", l.instance));
+            section(ui, "Lasers", listed(names.collect(), ItemRef::Laser));
+            let names = g.animations.iter().map(|a| a.name.clone()).collect();
+            section(ui, "Clips", listed(names, ItemRef::Clip));
+            let names = g.rules.iter().map(|r| r.name.clone()).collect();
+            section(ui, "Rules", listed(names, ItemRef::Rule));
             let groups: BTreeSet<u32> = level
                 .instances
                 .iter()
                 .filter_map(|i| i.light_group)
                 .collect();
-            section(
-                ui,
-                "Light groups",
-                groups.iter().map(|g| format!("group {g}")),
-                &needle,
-            );
-            section(
-                ui,
-                "Volumes",
-                g.volumes
-                    .iter()
-                    .map(|v| format!("{} on {}", v.name, v.instance)),
-                &needle,
-            );
-            section(
-                ui,
-                "Lasers",
-                g.lasers
-                    .iter()
-                    .enumerate()
-                    .map(|(i, l)| format!("laser {i} on {}", l.instance)),
-                &needle,
-            );
-            section(
-                ui,
-                "Clips",
-                g.animations.iter().map(|a| a.name.clone()),
-                &needle,
-            );
-            section(ui, "Rules", g.rules.iter().map(|r| r.name.clone()), &needle);
+            if !groups.is_empty() {
+                ui.label(egui::RichText::new("Light groups").strong());
+            }
+            for group in groups {
+                if ui
+                    .selectable_label(false, format!("group {group}"))
+                    .clicked()
+                {
+                    let members = (level.instances.iter().enumerate())
+                        .filter(|(_, e)| e.light_group == Some(group))
+                        .map(|(i, _)| i);
+                    p.select_set = Some(members.collect());
+                }
+            }
         });
 }
 
@@ -89,18 +109,5 @@ pub fn instance_label(index: usize, entry: &InstanceEntry) -> String {
     match &entry.name {
         Some(name) => format!("{name}  ({})", entry.model),
         None => format!("{} #{index}", entry.model),
-    }
-}
-
-fn section(ui: &mut egui::Ui, title: &str, items: impl Iterator<Item = String>, needle: &str) {
-    let items: Vec<String> = items
-        .filter(|s| needle.is_empty() || s.to_lowercase().contains(needle))
-        .collect();
-    if items.is_empty() {
-        return;
-    }
-    ui.label(egui::RichText::new(title).strong());
-    for item in items {
-        ui.label(item);
     }
 }

@@ -3,6 +3,7 @@
 
 #![allow(dead_code)]
 
+pub mod input;
 pub mod mode_run;
 
 use std::path::{Path, PathBuf};

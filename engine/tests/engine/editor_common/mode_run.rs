@@ -13,6 +13,7 @@ use candela::render::RenderConfig;
 use glam::{Vec2, Vec3};
 
 use super::Scratch;
+use super::input::Painted;
 
 pub const LEVEL: &str = r#"Level(
     materials: [(name: "grey", kind: Diffuse)],
@@ -80,6 +81,11 @@ pub fn start_with(
 
 /// One egui pass of the editor with `events`, then one engine frame.
 pub fn pass(run: &mut Run, events: Vec<egui::Event>) -> anyhow::Result<()> {
+    pass_painted(run, events).map(|_| ())
+}
+
+/// [`pass`], returning the text the pass painted (`input::Painted`).
+pub fn pass_painted(run: &mut Run, events: Vec<egui::Event>) -> anyhow::Result<Painted> {
     run.time += 1.0 / 30.0;
     let input = egui::RawInput {
         screen_rect: Some(egui::Rect::from_min_size(
@@ -93,12 +99,12 @@ pub fn pass(run: &mut Run, events: Vec<egui::Event>) -> anyhow::Result<()> {
         ..Default::default()
     };
     let (mode, engine) = (&mut run.mode, &mut run.engine);
-    let _ = run.ctx.run_pass(input, |ctx| {
+    let out = run.ctx.run_pass(input, |ctx| {
         mode.ui(ctx, engine);
     });
     run.engine.frame(1.0 / 60.0, &mut |_: &mut Step<'_>| {})?;
     let _ = run.engine.rendered();
-    Ok(())
+    Ok(Painted::of(&out))
 }
 
 pub fn moved_to(p: Vec2) -> egui::Event {
