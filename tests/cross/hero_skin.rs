@@ -42,7 +42,11 @@ fn influences(model: &AnimatedModel) -> Vec<Influence> {
 /// The model with every vertex bound to its strongest joint alone.
 fn one_weight(model: &AnimatedModel) -> AnimatedModel {
     let mut rigid = model.clone();
-    for primitive in rigid.meshes.iter_mut().flat_map(|m| m.primitives.iter_mut()) {
+    for primitive in rigid
+        .meshes
+        .iter_mut()
+        .flat_map(|m| m.primitives.iter_mut())
+    {
         for influence in primitive.influences.iter_mut().flatten() {
             let strongest = (0..4)
                 .max_by(|&a, &b| influence.weights[a].total_cmp(&influence.weights[b]))
@@ -65,7 +69,10 @@ fn widest_tear(model: &AnimatedModel, joint: &str, turn: Quat) -> anyhow::Result
     let mut bent = rest.clone();
     bent.rotation[node] = turn * bent.rotation[node];
     let (before, after) = (world_positions(model, &rest), world_positions(model, &bent));
-    anyhow::ensure!(before.len() == after.len() && !before.is_empty(), "vertices");
+    anyhow::ensure!(
+        before.len() == after.len() && !before.is_empty(),
+        "vertices"
+    );
     let near: Vec<usize> = (0..before.len())
         .filter(|&i| before[i].distance(centre) < NEAR_JOINT_M)
         .collect();
@@ -87,7 +94,14 @@ fn the_hero_has_about_20_joints_and_four_weights_at_the_junctions() -> anyhow::R
     let joints = model.skins[0].joints.len();
     assert!(joints >= 20, "{joints} joints");
     for name in [
-        "hips", "spine", "chest", "clavicle_l", "clavicle_r", "hand_r", "toes_l", "toes_r",
+        "hips",
+        "spine",
+        "chest",
+        "clavicle_l",
+        "clavicle_r",
+        "hand_r",
+        "toes_l",
+        "toes_r",
     ] {
         model.find_joint(name)?;
     }
@@ -143,7 +157,10 @@ fn a_raised_arm_keeps_the_shoulder_round() -> anyhow::Result<()> {
     let centre = model.world_matrices(&rest)[node].w_axis.truncate();
     let mut bent = rest.clone();
     bent.rotation[node] = Quat::from_rotation_z(FRAC_PI_2) * bent.rotation[node];
-    let (before, after) = (world_positions(&model, &rest), world_positions(&model, &bent));
+    let (before, after) = (
+        world_positions(&model, &rest),
+        world_positions(&model, &bent),
+    );
     let mut worst = f32::INFINITY;
     for (b, a) in before.iter().zip(&after) {
         let d = b.distance(centre);

@@ -126,10 +126,16 @@ fn legs_walk_arms_lift(rig: &Rig, tolerance: f32) -> anyhow::Result<()> {
     let walk = rig.model.find_clip("walk")?;
     let lift = rig.model.find_clip("pick_up")?;
     let pose = rig.pose();
-    let now = rig.player.current().ok_or_else(|| anyhow::anyhow!("nothing plays"))?;
+    let now = rig
+        .player
+        .current()
+        .ok_or_else(|| anyhow::anyhow!("nothing plays"))?;
     anyhow::ensure!(now.clip == walk, "the legs play clip {}", now.clip);
     let walking = rig.model.pose_at(walk, now.time_seconds);
-    let layer = rig.player.layer().ok_or_else(|| anyhow::anyhow!("no layer"))?;
+    let layer = rig
+        .player
+        .layer()
+        .ok_or_else(|| anyhow::anyhow!("no layer"))?;
     anyhow::ensure!(layer.playback.clip == lift && layer.weight == 1.0);
     let lifting = rig.model.pose_at(lift, layer.playback.time_seconds);
     for name in LEGS {
@@ -156,8 +162,13 @@ fn a_lift_gives_the_legs_back_to_the_walk_as_soon_as_the_hero_moves() -> anyhow:
     }
     assert_eq!(rig.action.playing().map(|a| a.clip), Some(lift));
     let crouched = rig.pose();
-    let lifting = rig.model.pose_at(lift, rig.player.current().map_or(0.0, |p| p.time_seconds));
-    assert!(rig.apart(&crouched, &lifting, "upper_leg_l")? < 2e-3, "standing: legs lift too");
+    let lifting = rig
+        .model
+        .pose_at(lift, rig.player.current().map_or(0.0, |p| p.time_seconds));
+    assert!(
+        rig.apart(&crouched, &lifting, "upper_leg_l")? < 2e-3,
+        "standing: legs lift too"
+    );
     // Sets off: one step hands the lift to the upper body, the arms do not jump.
     rig.step(WALK_MPS);
     assert_eq!(rig.action.playing(), None, "the legs are the walk's again");
@@ -188,7 +199,11 @@ fn a_lift_gives_the_legs_back_to_the_walk_as_soon_as_the_hero_moves() -> anyhow:
         rig.step(WALK_MPS);
     }
     assert!(!rig.upper.playing_once());
-    assert_eq!(rig.upper.playing(), Some(push), "the carry follows the lift");
+    assert_eq!(
+        rig.upper.playing(),
+        Some(push),
+        "the carry follows the lift"
+    );
     Ok(())
 }
 

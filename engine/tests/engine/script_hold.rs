@@ -50,7 +50,11 @@ fn after_the_hold_nothing_is_refitted() -> anyhow::Result<()> {
 fn a_hold_past_the_last_frame_is_refused() -> anyhow::Result<()> {
     let mut script = script()?;
     script.hold_from_frame = Some(script.frames);
-    let error = script.validate().err().map(|e| e.to_string()).unwrap_or_default();
+    let error = script
+        .validate()
+        .err()
+        .map(|e| e.to_string())
+        .unwrap_or_default();
     assert!(
         error.contains("hold_from_frame") && error.contains("wading_script.ron"),
         "{error}"

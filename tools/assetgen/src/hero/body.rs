@@ -60,7 +60,14 @@ impl Body {
     }
 
     /// A bevelled box from `min` to `max` (metres), bound by `bind`.
-    fn bound_block(&mut self, material: usize, min: [f32; 3], max: [f32; 3], radius: f32, bind: Bind) {
+    fn bound_block(
+        &mut self,
+        material: usize,
+        min: [f32; 3],
+        max: [f32; 3],
+        radius: f32,
+        bind: Bind,
+    ) {
         self.add(material, Vec3::ZERO, bind, |b| {
             b.bevel_box(0, Vec3::from(min), Vec3::from(max), radius, Uv::Unit);
         });

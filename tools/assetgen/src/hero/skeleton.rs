@@ -61,7 +61,11 @@ const TABLE: [(&str, Option<usize>, [f32; 3]); JOINT_COUNT] = [
     ("chest", Some(1), [0.0, 0.20, 0.0]),
     ("neck", Some(2), [0.0, 0.24, 0.0]),
     ("head", Some(3), [0.0, 0.08, 0.0]),
-    ("clavicle_l", Some(2), [CLAVICLE.0, CLAVICLE.1 - CHEST_Y, 0.0]),
+    (
+        "clavicle_l",
+        Some(2),
+        [CLAVICLE.0, CLAVICLE.1 - CHEST_Y, 0.0],
+    ),
     (
         "upper_arm_l",
         Some(5),
@@ -69,7 +73,11 @@ const TABLE: [(&str, Option<usize>, [f32; 3]); JOINT_COUNT] = [
     ),
     ("lower_arm_l", Some(6), [0.0, ELBOW_Y - SHOULDER.1, 0.0]),
     ("hand_l", Some(7), [0.0, WRIST_Y - ELBOW_Y, 0.0]),
-    ("clavicle_r", Some(2), [-CLAVICLE.0, CLAVICLE.1 - CHEST_Y, 0.0]),
+    (
+        "clavicle_r",
+        Some(2),
+        [-CLAVICLE.0, CLAVICLE.1 - CHEST_Y, 0.0],
+    ),
     (
         "upper_arm_r",
         Some(9),
