@@ -1,6 +1,6 @@
 //! The hero (`assets/common/hero/hero.glb`): the committed file is exactly what
 //! `tools/assetgen` makes, and it loads through the engine's glTF loader and animation as a
-//! character: one skinned mesh on a 17-joint skin, the eight clips (the third-person level's
+//! character: one skinned mesh on a 21-joint skin, the eight clips (the third-person level's
 //! states and the explorer's actions), about 1.8 m tall with its feet at y = 0, and a walk that moves its feet.
 
 use std::path::{Path, PathBuf};
@@ -63,7 +63,7 @@ fn committed_hero_is_what_assetgen_makes() -> anyhow::Result<()> {
 fn the_hero_loads_as_a_skinned_character() -> anyhow::Result<()> {
     let (model, animated) = load()?;
     assert_eq!(animated.skins.len(), 1);
-    assert_eq!(animated.skins[0].joints.len(), 17, "joints");
+    assert_eq!(animated.skins[0].joints.len(), 21, "joints");
     let clips: Vec<&str> = animated.clips.iter().map(|c| c.name.as_str()).collect();
     assert_eq!(
         clips,

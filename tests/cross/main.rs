@@ -19,6 +19,7 @@ mod furnace;
 mod gpu_matches_cpu;
 mod headless;
 mod hero;
+mod hero_skin;
 mod layout;
 mod many_lights;
 mod mips;

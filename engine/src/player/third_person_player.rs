@@ -9,7 +9,8 @@
 //! lever seen past the character's own shoulder is usable as soon as the character stands at it.
 //! A use press with no usable in front lifts the light body in front, or puts the held one down;
 //! the primary action throws it (`third_person_hands`). The character plays its model's
-//! `pick_up` clip as it lifts or puts down, its `push` clip while it leans into a body, and the
+//! `pick_up` clip as it lifts or puts down (on the whole body while it stands, on the upper
+//! body while it walks), its `push` clip while it leans into a body, and the
 //! push clip's upper body over its walk while it carries (`sim::animation::upper_body`).
 //!
 //! Main thread, in the game's fixed step, before physics. Must not: read devices (its input is
@@ -26,8 +27,8 @@ use super::third_person_hands::{Hands, HandsAct};
 use crate::ecs::{CameraRig, Transform};
 use crate::extract::RenderCamera;
 use crate::sim::animation::{
-    ActionKind, AnimResult, CharacterAnimation, heading_direction, request_action,
-    request_upper_body,
+    ActionKind, ActionRequest, AnimResult, CharacterAnimation, SkinnedAnimator, heading_direction,
+    request_action, request_upper_body,
 };
 use crate::sim::physics::{CharacterState, PhysicsWorld};
 use crate::sim::triggers::Usable;
@@ -208,9 +209,10 @@ impl ThirdPersonPlayer {
             input.use_pressed && used.is_none(),
             input.primary_pressed,
         );
-        // A model without the clip just goes on walking.
+        // A model without the clip just goes on walking. The lift holds the whole body while
+        // the character stands, and only its arms once it walks (`sim::animation::action`).
         if matches!(hands, HandsAct::Take(_) | HandsAct::PutDown) {
-            let _ = self.request_action(world, "pick_up", ActionKind::Once);
+            let _ = request_yielding_action(world, self.body, "pick_up");
         }
         // Carrying: the arms hold the body out in front (the push clip's upper body) while
         // the legs walk.
@@ -235,6 +237,20 @@ impl ThirdPersonPlayer {
             pushing: self.pushing,
         }
     }
+}
+
+/// Asks the character `body` for its model's one-shot `clip`, its legs given back to
+/// locomotion while it moves ([`ActionRequest::yielding_legs`]); whether it is a character.
+fn request_yielding_action(world: &mut World, body: Entity, clip: &str) -> AnimResult<bool> {
+    let Ok(mut anim) = world.get::<&mut CharacterAnimation>(body) else {
+        return Ok(false);
+    };
+    let Ok(animator) = world.get::<&SkinnedAnimator>(anim.visual) else {
+        return Ok(false);
+    };
+    let index = animator.model.find_clip(clip)?;
+    anim.request_action(ActionRequest::new(index, ActionKind::Once).yielding_legs());
+    Ok(true)
 }
 
 /// The usable whose origin is nearest `centre` within `reach` metres horizontally and within

@@ -57,7 +57,7 @@ fn the_courtyard_loads_its_hero_with_resolved_states() -> anyhow::Result<()> {
     }
     assert_eq!(hero.model_path, "common/hero/hero.glb");
     assert_eq!((hero.scale, hero.height, hero.radius), (1.0, 1.8, 0.3));
-    assert_eq!(hero.animated.skins[0].joints.len(), 17);
+    assert_eq!(hero.animated.skins[0].joints.len(), 21);
     assert_eq!(hero.controller.walk_speed, 2.0);
     assert_eq!(hero.controller.run_speed, 5.0);
     assert_eq!(

@@ -2,8 +2,9 @@
 //! CPU tracer, in the courtyard (`assets/test_scenes/platform/third_person.ron`) with a 5 kg
 //! crate or a 60 kg block 1.1 m in front of the hero (spawned at z = 6, facing −Z):
 //! - E lifts the crate to the chest; it goes where the hero walks; E puts it down in front of
-//!   the feet; the prompt says what E does at each stage; the hero plays its `pick_up` clip,
-//!   and while it carries, the push clip's upper body over its walk;
+//!   the feet; the prompt says what E does at each stage; the hero plays its `pick_up` clip
+//!   (on its upper body only once it walks: its legs walk), and while it carries, the push
+//!   clip's upper body over its walk;
 //! - the left mouse button throws it ahead;
 //! - the block is too heavy to lift: E does nothing, and walking into it pushes it, with the
 //!   `push` clip playing while the hero leans into it;
@@ -195,19 +196,26 @@ fn e_lifts_the_crate_carries_it_and_puts_it_down() -> anyhow::Result<()> {
     // Carried along: the hero walked about 2 m along −Z and the crate stayed in its hands.
     let walked = &seen[125];
     assert!(walked.carrying, "still carried after the walk");
-    // Its arms held the push clip's upper body while its legs walked.
+    // The one-shot pick_up (1.4 s from step 31) holds the whole body while the hero stands;
+    // once it walks (step 60), its legs walk and its arms finish the lift,
+    let pick_up = clip("pick_up")?;
+    assert!(
+        seen[75..110]
+            .iter()
+            .all(|s| s.state.as_deref() == Some("walk") && s.action.is_none()),
+        "the legs walk: {:?} {:?}",
+        seen[75].state,
+        seen[75].action
+    );
+    assert!(
+        seen[75..110].iter().all(|s| s.upper == Some(pick_up)),
+        "the arms finish the lift while the legs walk"
+    );
+    // then the arms hold the push clip's upper body while it carries.
     let push = clip("push")?;
     assert!(
-        seen[70..120].iter().all(|s| s.upper == Some(push)),
-        "the upper body carries while it walks"
-    );
-    // The one-shot pick_up (1.4 s from step 31) holds the whole body; then the legs walk.
-    assert!(
-        seen[117..120]
-            .iter()
-            .all(|s| s.state.as_deref() == Some("walk")),
-        "{:?}",
-        seen[117].state
+        seen[135..150].iter().all(|s| s.upper == Some(push)),
+        "the upper body carries after the lift"
     );
     assert!(
         held.hero.z - walked.hero.z > 1.5,

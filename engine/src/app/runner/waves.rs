@@ -23,6 +23,10 @@ pub struct Waves {
     /// The mesh was last written still (no swell, simulated water still): nothing to rewrite
     /// or refit until the water moves again.
     pub written_still: bool,
+    /// The time (seconds) and the simulated water's step count the mesh was last written at:
+    /// a frame with neither changed (the engine paused, or no fixed step since) rewrites and
+    /// refits nothing.
+    pub written_at: Option<(f32, u64)>,
 }
 
 impl Waves {
@@ -31,6 +35,7 @@ impl Waves {
             desc,
             base,
             written_still: false,
+            written_at: None,
         }
     }
 
@@ -63,6 +68,11 @@ pub fn waves_system(world: &mut World, t: f64) {
         if still && waves.written_still {
             continue;
         }
+        let at = (t, sim.map_or(0, |s| s.field.steps()));
+        if waves.written_at == Some(at) {
+            continue;
+        }
+        waves.written_at = Some(at);
         waves.written_still = still;
         let normals = match sim {
             Some(sim) => simulated(waves, &mut deformable.positions, sim, t),

@@ -53,6 +53,9 @@ impl Script {
         if !(self.seconds_per_frame.is_finite() && self.seconds_per_frame > 0.0) {
             return Err(self.invalid("seconds_per_frame", "must be a positive number"));
         }
+        if let Some(frame) = self.hold_from_frame {
+            self.check_frame("hold_from_frame", frame)?;
+        }
         let r = &self.render;
         if r.width == 0 || r.height == 0 || r.spp == 0 || r.width > 16384 || r.height > 16384 {
             return Err(self.invalid(

@@ -33,6 +33,7 @@
 //!     lights: [(frame: 30, group: 2, on: false)],
 //!     times: [(frame: 0, utc_hours: 5.5), (frame: 60, utc_hours: 12)],
 //!     screenshots: [(frame: 59, name: "overview"), (frame: 119, exr: true)],
+//!     hold_from_frame: None,                 // Some(n): the world stands still from frame n
 //! )
 //! ```
 //!
@@ -62,6 +63,9 @@
 //!   horizontal illuminance calls for at that frame, `sky::exposure_ev`, at most
 //!   `render.max_exposure_ev` when set; plus the shot's `exposure_compensation_ev`) and, with `exr: true`, `<name>.exr` (linear radiance). `name`
 //!   defaults to `frame_NNNNN`; it may hold only letters, digits, `_`, `-` and `.`.
+//! * `hold_from_frame`: from that frame on (it must be below `frames`) the engine is paused:
+//!   no fixed steps, so physics, characters, water ripples and the day stand still, and a
+//!   screenshot taken later is that moment converged (keep the camera and motions still too).
 
 use std::path::{Path, PathBuf};
 
@@ -92,6 +96,11 @@ pub struct Script {
     pub times: Vec<TimeKey>,
     #[serde(default)]
     pub screenshots: Vec<Screenshot>,
+    /// From this frame on the world's clock stands still (the engine is paused: no fixed
+    /// steps, no game time; the camera and motions still follow their keys): a moment of
+    /// moving things — water rippling round a wader — held while the film converges on it.
+    #[serde(default)]
+    pub hold_from_frame: Option<u32>,
     /// The file the script was read from (for messages and relative paths); not in the file.
     #[serde(skip)]
     pub source: PathBuf,

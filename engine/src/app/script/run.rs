@@ -309,6 +309,9 @@ pub fn run_script(
         if script.screenshots.iter().any(|s| s.frame == frame) {
             engine.capture_next();
         }
+        if script.hold_from_frame == Some(frame) {
+            engine.set_paused(true);
+        }
         let script_seconds = update_started.elapsed().as_secs_f64();
         let report: FrameReport = match engine.frame(spf, &mut |_: &mut Step<'_>| {}) {
             Ok(r) => r,

@@ -9,12 +9,23 @@
 //! fixed step; `animate_characters` later in the same step calls [`ActionSlot::update`], which
 //! crossfades the player into the action and, when the action ends, has the state machine
 //! crossfade back ([`StateMachine::resume_with_fade`]). While an action plays the machine does not
-//! choose states. Deterministic: only the fixed step's requests and `dt` decide.
+//! choose states. A one-shot asked for with [`ActionRequest::yield_legs_when_moving`] (the
+//! third-person lift) gives its legs back as soon as the character moves over the ground
+//! ([`YIELD_SPEED_MPS`]): the rest of the clip plays on the upper body
+//! ([`UpperBodySlot::play_once`]) while the machine crossfades the legs into the walk, so a
+//! character never slides along crouched. Deterministic: only the fixed step's requests, the
+//! locomotion and `dt` decide.
 //! Main thread, once per fixed step. Must not: touch the ECS, physics or vertices.
 //! Units: seconds.
 
+use super::model::AnimatedModel;
 use super::player::{AnimationPlayer, PlayMode, Playback};
 use super::state_machine::{Locomotion, StateChange, StateMachine};
+use super::upper_body::UpperBodySlot;
+
+/// Ground speed (smoothed, m/s) above which a yielding one-shot hands its legs back to
+/// locomotion: half the slowest walk, so standing still or shuffling keeps the whole clip.
+pub const YIELD_SPEED_MPS: f32 = 0.5;
 
 /// How an action plays.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,6 +44,9 @@ pub struct ActionRequest {
     pub kind: ActionKind,
     /// Crossfade into the action, and back to locomotion when it ends, seconds.
     pub fade_seconds: f64,
+    /// A one-shot that plays on the upper body only while the character moves (asked for
+    /// while moving, or once it starts moving), so its legs walk.
+    pub yield_legs_when_moving: bool,
 }
 
 impl ActionRequest {
@@ -45,6 +59,16 @@ impl ActionRequest {
             clip,
             kind,
             fade_seconds: Self::DEFAULT_FADE_SECONDS,
+            yield_legs_when_moving: false,
+        }
+    }
+
+    /// The same request, its legs given back to locomotion while the character moves (a
+    /// one-shot only: a held action keeps the whole body).
+    pub fn yielding_legs(self) -> Self {
+        Self {
+            yield_legs_when_moving: self.kind == ActionKind::Once,
+            ..self
         }
     }
 }
@@ -94,7 +118,47 @@ impl ActionSlot {
         m: &Locomotion,
         dt_seconds: f64,
     ) -> Option<StateChange> {
-        let requested = self.requested.take();
+        self.update_layered(machine, player, m, dt_seconds, None)
+    }
+
+    /// [`ActionSlot::update`] for a character whose model `upper.0` has an upper-body slot
+    /// `upper.1`: a yielding one-shot moves there while the character moves.
+    pub fn update_layered(
+        &mut self,
+        machine: &mut StateMachine,
+        player: &mut AnimationPlayer,
+        m: &Locomotion,
+        dt_seconds: f64,
+        upper: Option<(&AnimatedModel, &mut UpperBodySlot)>,
+    ) -> Option<StateChange> {
+        let mut requested = self.requested.take();
+        let moving = m.grounded && m.horizontal_speed_mps > YIELD_SPEED_MPS;
+        if moving && let Some((model, slot)) = upper {
+            // Asked for while moving: the arms only, faded in from the walk's.
+            if let Some(request) = requested
+                && request.yield_legs_when_moving
+                && self.playing.map(|p| p.clip) != Some(request.clip)
+                && slot.play_once(model, player, request.clip, 0.0, true).is_ok()
+            {
+                requested = None;
+            }
+            // Playing on the whole body when the character sets off: the rest of the clip
+            // goes on over the arms, at full weight (the pose does not jump), and the legs
+            // crossfade into the walk.
+            let handed = self.playing.filter(|p| p.yield_legs_when_moving).and_then(|p| {
+                let time = player
+                    .current()
+                    .filter(|c| c.clip == p.clip && !c.finished)?
+                    .time_seconds;
+                slot.play_once(model, player, p.clip, time, false).ok()?;
+                Some(p)
+            });
+            if let Some(handed) = handed {
+                self.playing = None;
+                self.seconds = 0.0;
+                machine.resume_with_fade(handed.fade_seconds);
+            }
+        }
         if let Some(request) = requested
             && self.playing.map(|p| p.clip) != Some(request.clip)
         {

@@ -6,7 +6,8 @@
 //! (once per fixed step, after physics and before `tick_skinned`): it reads each body's
 //! [`CharacterState`], updates the state machine on the visual entity's
 //! [`SkinnedAnimator`] player (crossfades, rates) — or plays the action game code asked for
-//! ([`request_action`], `action`) — and turns the visual entity to the heading.
+//! ([`request_action`], `action`; a one-shot that yields its legs moves to the upper body,
+//! `upper_body`, when the character sets off) — and turns the visual entity to the heading.
 //! The visual entity is a child ([`crate::ecs::Parent`]) of the body: its local `Transform`
 //! puts the feet at the capsule's bottom and holds the model's scale. Main thread.
 //! Must not: move bodies (the controller does) or read input (game rules set the heading).
@@ -171,12 +172,14 @@ pub fn animate_characters(world: &mut World, dt_seconds: f64) {
         let change = match world.get::<&mut SkinnedAnimator>(visual) {
             Ok(mut animator) => {
                 let anim = &mut *anim;
+                let animator = &mut *animator;
                 anim.upper.update(&mut animator.player, dt_seconds);
-                anim.action.update(
+                anim.action.update_layered(
                     &mut anim.machine,
                     &mut animator.player,
                     &locomotion,
                     dt_seconds,
+                    Some((&animator.model, &mut anim.upper)),
                 )
             }
             Err(_) => None,

@@ -37,7 +37,7 @@ mod state_machine;
 mod upper_body;
 
 pub use crate::assets::{AuthoredClip, AuthoredClipSet, AuthoredKey, AuthoredTrack};
-pub use action::{ActionKind, ActionRequest, ActionSlot};
+pub use action::{ActionKind, ActionRequest, ActionSlot, YIELD_SPEED_MPS};
 pub use character_anim::{
     CharacterAnimation, animate_characters, heading_direction, request_action, request_upper_body,
 };

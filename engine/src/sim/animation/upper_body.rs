@@ -6,6 +6,9 @@
 //! [`UpperLayer`] (what the [`AnimationPlayer`] blends over its pose). The layer is held: game
 //! code asks for it every step it should go on ([`request_upper_body`](super::request_upper_body));
 //! it fades in over [`UPPER_FADE_SECONDS`] while asked for and out as long once it is not.
+//! A one-shot can play there too ([`UpperBodySlot::play_once`]: the rest of a lift handed over
+//! by the action slot when the character sets off): it plays to its end whatever is asked for,
+//! then fades out, and only then does a held clip fade in.
 //! Deterministic: only the fixed step's requests and `dt` decide.
 //! Main thread, once per fixed step. Must not: touch the ECS, physics or vertices.
 //! Units: seconds.
@@ -54,6 +57,8 @@ pub struct UpperBodySlot {
     requested: Option<usize>,
     playing: Option<usize>,
     mask: Option<Arc<[f32]>>,
+    /// The clip playing is a one-shot (`play_once`).
+    once: bool,
 }
 
 impl UpperBodySlot {
@@ -66,6 +71,43 @@ impl UpperBodySlot {
         }
         self.requested = Some(clip);
         Ok(())
+    }
+
+    /// Plays clip `clip` of `model` once on the upper body of `player`, from `time_seconds`,
+    /// fading in from nothing when `fade_in`, else at full weight at once (the whole body
+    /// showed that clip until now). It replaces whatever the layer played. A model without
+    /// [`UPPER_BODY_JOINT`] is [`AnimError::NoSuchJoint`](super::AnimError).
+    pub fn play_once(
+        &mut self,
+        model: &AnimatedModel,
+        player: &mut AnimationPlayer,
+        clip: usize,
+        time_seconds: f64,
+        fade_in: bool,
+    ) -> AnimResult<()> {
+        let mask = match self.mask.clone() {
+            Some(mask) => mask,
+            None => {
+                let mask = subtree_mask(model, model.find_joint(UPPER_BODY_JOINT)?);
+                self.mask = Some(mask.clone());
+                mask
+            }
+        };
+        let mut playback = Playback::new(clip, PlayMode::Once);
+        playback.time_seconds = time_seconds;
+        player.set_layer(Some(UpperLayer {
+            playback,
+            mask,
+            weight: if fade_in { 0.0 } else { 1.0 },
+        }));
+        self.playing = Some(clip);
+        self.once = true;
+        Ok(())
+    }
+
+    /// Whether the clip on the upper body is a one-shot ([`UpperBodySlot::play_once`]).
+    pub fn playing_once(&self) -> bool {
+        self.once && self.playing.is_some()
     }
 
     /// The clip on the upper body, if any (fading in, held or fading out).
@@ -96,6 +138,29 @@ impl UpperBodySlot {
         } else {
             0.0
         };
+        if self.once {
+            match player.layer_mut() {
+                // A one-shot plays to its end whatever is asked for,
+                Some(layer) if !layer.playback.finished => {
+                    layer.weight = (layer.weight + step).min(1.0);
+                    return;
+                }
+                // then fades out (held at its last key) before anything else plays.
+                Some(layer) => {
+                    layer.weight = (layer.weight - step).max(0.0);
+                    if layer.weight > 0.0 {
+                        return;
+                    }
+                    player.set_layer(None);
+                }
+                None => {}
+            }
+            self.once = false;
+            self.playing = None;
+            if requested.is_none() {
+                return;
+            }
+        }
         match (requested, self.mask.clone()) {
             (Some(clip), Some(mask)) => {
                 if self.playing != Some(clip) || player.layer().is_none() {

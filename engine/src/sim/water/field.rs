@@ -84,6 +84,9 @@ pub struct HeightField {
     pushed: Vec<f32>,
     /// No step has run yet (see [`WaterSimDesc::start_at_rest`]).
     unstarted: bool,
+    /// How many times the heights were changed (steps and raises): a mesh written at this
+    /// count is still up to date.
+    changes: u64,
 }
 
 impl HeightField {
@@ -97,6 +100,7 @@ impl HeightField {
             v: vec![0.0; n],
             pushed: vec![0.0; n],
             unstarted: true,
+            changes: 0,
         }
     }
 
@@ -117,8 +121,15 @@ impl HeightField {
             && self.v.iter().all(|v| v.abs() < STILL_METRES_PER_SECOND)
     }
 
+    /// How many times the heights were changed ([`Self::step`], [`Self::raise`]) since
+    /// [`Self::new`]: equal counts, equal heights.
+    pub fn steps(&self) -> u64 {
+        self.changes
+    }
+
     /// Raises vertex `(ix, iz)` by `metres` (an interior vertex; edges stay 0).
     pub fn raise(&mut self, ix: usize, iz: usize, metres: f32) {
+        self.changes += 1;
         let (c, r) = (self.layout.columns, self.layout.rows);
         if (1..c - 1).contains(&ix) && (1..r - 1).contains(&iz) {
             self.h[ix + iz * c] += metres;
@@ -143,6 +154,7 @@ impl HeightField {
     /// [`WaterSimDesc::start_at_rest`], the first step's push is the rest state: remembered,
     /// the surface left where it is.
     pub fn step(&mut self, step_seconds: f32, push: &[f32]) {
+        self.changes += 1;
         if std::mem::take(&mut self.unstarted) && self.desc.start_at_rest {
             self.rest_under(push);
         }

@@ -51,6 +51,9 @@ pub(super) fn push(a: f64) -> Pose {
     // The arms hang from the leaning chest: `lean` already swings them back.
     let give = 0.06 * (2.0 * a).sin();
     let reach = -FRAC_PI_2 - lean + 0.08 + give;
+    // The shoulders reach forward with the arms (the clavicles turn about +Y).
+    pose.set(CLAVICLE_L, 0.0, -0.15, 0.0);
+    pose.set(CLAVICLE_R, 0.0, 0.15, 0.0);
     pose.set(UPPER_ARM_L, reach, 0.0, -0.12);
     pose.set(UPPER_ARM_R, reach, 0.0, 0.12);
     pose.set(LOWER_ARM_L, -0.3 - give, 0.0, 0.0);

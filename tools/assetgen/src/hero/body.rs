@@ -1,6 +1,6 @@
 //! The hero's mesh: a stylised low-poly body of bevelled boxes and cylinders, one shape per
-//! body part, each bound to its joint — rigidly, or (limb cylinders) blended between the two
-//! joints either side of an elbow, knee or ankle by height. Metres, bind pose = rest pose
+//! body part, each bound to its joint — rigidly, or blended (`weights`: across elbows, knees
+//! and ankles by height, over shoulders and hips with up to four joints). Metres, bind pose = rest pose
 //! (`skeleton`): feet at y = 0, head top at 1.8 m, facing +Z, left = +X.
 //!
 //! Shapes come from the Reflect kit's `Builder` (positions and normals rounded to 10 µm, so
@@ -9,6 +9,7 @@
 use glam::{Affine3A, Vec3};
 
 use super::skeleton::{ANKLE_Y, ELBOW_Y, HIP, KNEE_Y, SHOULDER, WRIST_Y, joint};
+use super::weights::{Bind, Limb};
 use crate::gltf_skin::SkinnedPart;
 use crate::reflect_kit::mesh::{Builder, Uv};
 
@@ -21,46 +22,8 @@ pub mod material {
     pub const COUNT: usize = 4;
 }
 
-/// Half the height over which a limb blends between two joints, metres.
-const BLEND_HALF_M: f32 = 0.05;
 /// Sides of every cylinder.
 const SEGMENTS: u32 = 12;
-
-/// How a shape's vertices are bound.
-#[derive(Clone, Copy)]
-enum Bind {
-    /// Wholly to one joint.
-    Rigid(u16),
-    /// Down a vertical chain `(upper, middle, lower)` whose joints start at heights
-    /// `(y_middle, y_lower)`: blended across each joint by height.
-    Chain([u16; 3], [f32; 2]),
-}
-
-impl Bind {
-    fn influence(self, p: Vec3) -> ([u16; 4], [f32; 4]) {
-        match self {
-            Bind::Rigid(j) => ([j, 0, 0, 0], [1.0, 0.0, 0.0, 0.0]),
-            Bind::Chain([upper, middle, lower], [y_middle, y_lower]) => {
-                let mid = 0.5 * (y_middle + y_lower);
-                let (above, below, y) = if p.y > mid {
-                    (upper, middle, y_middle)
-                } else {
-                    (middle, lower, y_lower)
-                };
-                let t = ((y + BLEND_HALF_M - p.y) / (2.0 * BLEND_HALF_M)).clamp(0.0, 1.0);
-                // Quarter steps: exact in binary, so the weights sum to exactly 1.
-                let t = (t * 4.0).round() / 4.0;
-                if t <= 0.0 {
-                    ([above, 0, 0, 0], [1.0, 0.0, 0.0, 0.0])
-                } else if t >= 1.0 {
-                    ([below, 0, 0, 0], [1.0, 0.0, 0.0, 0.0])
-                } else {
-                    ([above, below, 0, 0], [1.0 - t, t, 0.0, 0.0])
-                }
-            }
-        }
-    }
-}
 
 /// Collects the parts, one per material.
 struct Body {
@@ -93,7 +56,19 @@ impl Body {
 
     /// A bevelled box from `min` to `max` (metres) on one joint.
     fn block(&mut self, material: usize, min: [f32; 3], max: [f32; 3], radius: f32, j: u16) {
-        self.add(material, Vec3::ZERO, Bind::Rigid(j), |b| {
+        self.bound_block(material, min, max, radius, Bind::Rigid(j));
+    }
+
+    /// A bevelled box from `min` to `max` (metres), bound by `bind`.
+    fn bound_block(
+        &mut self,
+        material: usize,
+        min: [f32; 3],
+        max: [f32; 3],
+        radius: f32,
+        bind: Bind,
+    ) {
+        self.add(material, Vec3::ZERO, bind, |b| {
             b.bevel_box(0, Vec3::from(min), Vec3::from(max), radius, Uv::Unit);
         });
     }
@@ -135,12 +110,12 @@ pub fn parts() -> Vec<SkinnedPart> {
     body.block(skin, [-0.018, 1.63, 0.10], [0.018, 1.67, 0.135], 0.01, HEAD);
     body.limb(skin, 0.0, 0.045, [1.47, 1.60], Bind::Rigid(NECK));
     // Torso: jacket over chest and belly, belt, trousers' seat.
-    body.block(
+    body.bound_block(
         jacket,
         [-0.20, 1.22, -0.12],
         [0.20, 1.50, 0.12],
         0.05,
-        CHEST,
+        Bind::Chest,
     );
     body.block(
         jacket,
@@ -156,41 +131,34 @@ pub fn parts() -> Vec<SkinnedPart> {
         0.015,
         HIPS,
     );
-    body.block(cloth, [-0.17, 0.84, -0.10], [0.17, 0.98, 0.10], 0.04, HIPS);
-    for (side, [upper_arm, lower_arm, hand, upper_leg, lower_leg, foot]) in [
+    body.bound_block(
+        cloth,
+        [-0.17, 0.84, -0.10],
+        [0.17, 0.98, 0.10],
+        0.04,
+        Bind::Seat,
+    );
+    for (side, [clavicle, upper_arm, lower_arm, hand], [upper_leg, lower_leg, foot, toes]) in [
         (
             1.0,
-            [
-                UPPER_ARM_L,
-                LOWER_ARM_L,
-                HAND_L,
-                UPPER_LEG_L,
-                LOWER_LEG_L,
-                FOOT_L,
-            ],
+            [CLAVICLE_L, UPPER_ARM_L, LOWER_ARM_L, HAND_L],
+            [UPPER_LEG_L, LOWER_LEG_L, FOOT_L, TOES_L],
         ),
         (
             -1.0,
-            [
-                UPPER_ARM_R,
-                LOWER_ARM_R,
-                HAND_R,
-                UPPER_LEG_R,
-                LOWER_LEG_R,
-                FOOT_R,
-            ],
+            [CLAVICLE_R, UPPER_ARM_R, LOWER_ARM_R, HAND_R],
+            [UPPER_LEG_R, LOWER_LEG_R, FOOT_R, TOES_R],
         ),
     ] {
         let x = side * SHOULDER.0;
-        let arm = Bind::Chain([upper_arm, lower_arm, hand], [ELBOW_Y, WRIST_Y]);
+        let arm = Bind::Arm(Limb {
+            chain: [upper_arm, lower_arm, hand],
+            joint_y: [ELBOW_Y, WRIST_Y],
+            root: clavicle,
+            side,
+        });
         let (x0, x1) = sorted(x - side * 0.055, x + side * 0.055);
-        body.block(
-            jacket,
-            [x0, 1.36, -0.065],
-            [x1, 1.50, 0.065],
-            0.05,
-            upper_arm,
-        );
+        body.bound_block(jacket, [x0, 1.36, -0.065], [x1, 1.50, 0.065], 0.05, arm);
         body.limb(jacket, x, 0.055, [ELBOW_Y - 0.02, 1.42], arm);
         body.limb(jacket, x, 0.047, [WRIST_Y + 0.02, ELBOW_Y + 0.02], arm);
         body.block(
@@ -201,16 +169,21 @@ pub fn parts() -> Vec<SkinnedPart> {
             hand,
         );
         let x = side * HIP.0;
-        let leg = Bind::Chain([upper_leg, lower_leg, foot], [KNEE_Y, ANKLE_Y]);
+        let leg = Bind::Leg(Limb {
+            chain: [upper_leg, lower_leg, foot],
+            joint_y: [KNEE_Y, ANKLE_Y],
+            root: HIPS,
+            side,
+        });
         body.limb(cloth, x, 0.075, [KNEE_Y - 0.02, 0.92], leg);
         body.limb(cloth, x, 0.062, [ANKLE_Y + 0.02, KNEE_Y + 0.02], leg);
         body.limb(leather, x, 0.068, [ANKLE_Y, 0.26], leg);
-        body.block(
+        body.bound_block(
             leather,
             [x - 0.062, 0.0, -0.075],
             [x + 0.062, 0.13, 0.17],
             0.03,
-            foot,
+            Bind::Boot(foot, toes),
         );
     }
     body.parts

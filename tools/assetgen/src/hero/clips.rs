@@ -2,7 +2,7 @@
 //! `jump` (tucked, arms up) and `fall` (arms and legs flailing), and the explorer's actions
 //! (`actions`): `push`, `pick_up` and `celebrate`. Each is one cycle: keys every 1/30 s over
 //! the clip's period, the last key equal to the first (a loop is seamless, a one-shot starts
-//! and ends at rest). Every clip animates the hips' translation and all 17 joints' rotations.
+//! and ends at rest). Every clip animates the hips' translation and all 21 joints' rotations.
 //!
 //! Conventions (`skeleton`): rest rotations are the identity and limbs hang down, so a
 //! positive rotation about X swings a limb's end backwards (−Z) and a positive one about Z
@@ -44,20 +44,31 @@ impl Pose {
     }
 }
 
+/// How much of an arm's raise beyond [`SHRUG_FROM_RAD`] the clavicle takes (the shoulder
+/// rises as the arm goes up), the rest being the shoulder joint's.
+const SHRUG_SHARE: f64 = 0.25;
+/// The raise (radians away from the body) below which the clavicle stays at rest.
+const SHRUG_FROM_RAD: f64 = 0.3;
+
 /// Sets both arms: `swing` about X for the left arm (the right one gets `-swing` when
-/// `mirror_swing`), `out` radians away from the body, elbows bent forward by `elbow`.
+/// `mirror_swing`), `out` radians away from the body (the clavicles take a share of a large
+/// raise), elbows bent forward by `elbow`.
 pub(super) fn arms(pose: &mut Pose, swing: f64, mirror_swing: bool, out: f64, elbow: f64) {
     use joint::*;
     let right_swing = if mirror_swing { -swing } else { swing };
-    pose.set(UPPER_ARM_L, swing, 0.0, out);
-    pose.set(UPPER_ARM_R, right_swing, 0.0, -out);
+    let shrug = SHRUG_SHARE * (out - SHRUG_FROM_RAD).max(0.0);
+    pose.set(CLAVICLE_L, 0.0, 0.0, shrug);
+    pose.set(CLAVICLE_R, 0.0, 0.0, -shrug);
+    pose.set(UPPER_ARM_L, swing, 0.0, out - shrug);
+    pose.set(UPPER_ARM_R, right_swing, 0.0, shrug - out);
     pose.set(LOWER_ARM_L, -elbow, 0.0, 0.0);
     pose.set(LOWER_ARM_R, -elbow, 0.0, 0.0);
 }
 
 /// A gait: legs swing `leg` radians each way, knees bend `knee_min + knee` during the swing
 /// forward, arms swing `arm` opposite, elbows bent `elbow`, the body leans `lean` forward
-/// and bobs `bob` metres twice per cycle. `a`: the cycle's angle, radians.
+/// and bobs `bob` metres twice per cycle; the toes bend up as a leg pushes off behind.
+/// `a`: the cycle's angle, radians.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn gait(
     a: f64,
@@ -78,9 +89,9 @@ pub(super) fn gait(
     pose.set(CHEST, lean * 0.4, -0.14 * swing, 0.0);
     pose.set(NECK, -lean * 0.5, 0.0, 0.0);
     pose.set(HEAD, -lean * 0.3, 0.06 * swing, 0.0);
-    for (phase, [upper, lower, foot]) in [
-        (0.0, [UPPER_LEG_L, LOWER_LEG_L, FOOT_L]),
-        (PI, [UPPER_LEG_R, LOWER_LEG_R, FOOT_R]),
+    for (phase, [upper, lower, foot, toes]) in [
+        (0.0, [UPPER_LEG_L, LOWER_LEG_L, FOOT_L, TOES_L]),
+        (PI, [UPPER_LEG_R, LOWER_LEG_R, FOOT_R, TOES_R]),
     ] {
         let b = a + phase;
         let thigh = -leg * b.sin();
@@ -88,6 +99,7 @@ pub(super) fn gait(
         pose.set(upper, thigh, 0.0, 0.0);
         pose.set(lower, bend, 0.0, 0.0);
         pose.set(foot, -0.5 * (thigh + bend), 0.0, 0.0);
+        pose.set(toes, -0.8 * thigh.max(0.0), 0.0, 0.0);
     }
     arms(&mut pose, arm * swing, true, 0.06, elbow);
     pose
@@ -145,8 +157,10 @@ fn fall(a: f64) -> Pose {
         pose.set(upper, -0.3 + 0.3 * k * s, 0.0, 0.0);
         pose.set(lower, 0.5 + 0.25 * k * (a + 1.0).cos(), 0.0, 0.0);
     }
-    pose.set(UPPER_ARM_L, 0.35 * s, 0.0, 1.0 + 0.35 * s);
-    pose.set(UPPER_ARM_R, -0.35 * s, 0.0, -1.0 + 0.35 * s);
+    pose.set(CLAVICLE_L, 0.0, 0.0, 0.15);
+    pose.set(CLAVICLE_R, 0.0, 0.0, -0.15);
+    pose.set(UPPER_ARM_L, 0.35 * s, 0.0, 0.85 + 0.35 * s);
+    pose.set(UPPER_ARM_R, -0.35 * s, 0.0, -0.85 + 0.35 * s);
     pose.set(LOWER_ARM_L, -0.4, 0.0, 0.0);
     pose.set(LOWER_ARM_R, -0.4, 0.0, 0.0);
     pose

@@ -1,5 +1,5 @@
 //! The hero of It's About Time (../shared/games/ITS_ABOUT_TIME.md), made by code: a stylised
-//! low-poly humanoid about 1.8 m tall (`body`) on a 17-joint skeleton (`skeleton`) with eight
+//! low-poly humanoid about 1.8 m tall (`body`) on a 21-joint skeleton (`skeleton`) with eight
 //! clips (`clips`: `idle`, `walk`, `run`, `jump`, `fall`; `actions`: `push`, `pick_up`,
 //! `celebrate`), written by `assetgen hero`
 //! as one skinned glTF binary, `assets/common/hero/hero.glb`.
@@ -13,6 +13,7 @@ mod actions;
 mod body;
 mod clips;
 pub mod skeleton;
+mod weights;
 
 use crate::gltf_skin::write_skinned_glb;
 use crate::gltf_writer::MaterialSpec;
