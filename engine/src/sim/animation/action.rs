@@ -138,21 +138,26 @@ impl ActionSlot {
             if let Some(request) = requested
                 && request.yield_legs_when_moving
                 && self.playing.map(|p| p.clip) != Some(request.clip)
-                && slot.play_once(model, player, request.clip, 0.0, true).is_ok()
+                && slot
+                    .play_once(model, player, request.clip, 0.0, true)
+                    .is_ok()
             {
                 requested = None;
             }
             // Playing on the whole body when the character sets off: the rest of the clip
             // goes on over the arms, at full weight (the pose does not jump), and the legs
             // crossfade into the walk.
-            let handed = self.playing.filter(|p| p.yield_legs_when_moving).and_then(|p| {
-                let time = player
-                    .current()
-                    .filter(|c| c.clip == p.clip && !c.finished)?
-                    .time_seconds;
-                slot.play_once(model, player, p.clip, time, false).ok()?;
-                Some(p)
-            });
+            let handed = self
+                .playing
+                .filter(|p| p.yield_legs_when_moving)
+                .and_then(|p| {
+                    let time = player
+                        .current()
+                        .filter(|c| c.clip == p.clip && !c.finished)?
+                        .time_seconds;
+                    slot.play_once(model, player, p.clip, time, false).ok()?;
+                    Some(p)
+                });
             if let Some(handed) = handed {
                 self.playing = None;
                 self.seconds = 0.0;
