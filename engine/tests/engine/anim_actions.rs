@@ -23,13 +23,13 @@ fn repo() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-fn hero() -> anyhow::Result<AnimatedModel> {
+pub(crate) fn hero() -> anyhow::Result<AnimatedModel> {
     Ok(load_animation_file(
         &repo().join("assets/common/hero/hero.glb"),
     )?)
 }
 
-fn state(name: &str, clip: usize, speeds: (f32, f32)) -> AnimState {
+pub(crate) fn state(name: &str, clip: usize, speeds: (f32, f32)) -> AnimState {
     AnimState {
         name: name.into(),
         clip,

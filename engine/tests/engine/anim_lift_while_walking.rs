@@ -7,39 +7,23 @@
 //! held clip asked for meanwhile (the carry) fades in. Before this, the one-shot held the whole
 //! body for its 1.4 s and the hero slid along crouched.
 
-use std::path::{Path, PathBuf};
-
 use candela::sim::animation::{
-    ActionKind, ActionRequest, ActionSlot, AnimState, AnimatedModel, AnimationPlayer, Contact,
-    Locomotion, PlayMode, Pose, StateCondition, StateMachine, UPPER_FADE_SECONDS, UpperBodySlot,
-    YIELD_SPEED_MPS, load_animation_file,
+    ActionKind, ActionRequest, ActionSlot, AnimState, AnimatedModel, AnimationPlayer, Locomotion,
+    Pose, StateMachine, UPPER_FADE_SECONDS, UpperBodySlot, YIELD_SPEED_MPS,
 };
+
+use super::anim_actions::hero;
 
 const DT: f64 = 1.0 / 60.0;
 const WALK_MPS: f32 = 2.0;
 
-fn hero() -> anyhow::Result<AnimatedModel> {
-    let repo: PathBuf = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    Ok(load_animation_file(
-        &repo.join("assets/common/hero/hero.glb"),
-    )?)
-}
-
+/// `anim_actions`' locomotion state at a fixed rate of 1 (the legs then follow the walk clip
+/// exactly, which the tests compare against).
 fn state(name: &str, clip: usize, speeds: (f32, f32)) -> AnimState {
     AnimState {
-        name: name.into(),
-        clip,
-        mode: PlayMode::Loop,
-        when: StateCondition {
-            contact: Contact::Grounded,
-            min_speed_mps: speeds.0,
-            max_speed_mps: speeds.1,
-        },
-        reference_speed_mps: None,
         min_rate: 1.0,
         max_rate: 1.0,
-        fade_in_seconds: 0.2,
-        blend: None,
+        ..super::anim_actions::state(name, clip, speeds)
     }
 }
 

@@ -257,3 +257,17 @@ fn apply(ctx: &egui::Context, state: &mut EditorState, p: Pending, out: &mut Pan
         }
     }
 }
+
+/// A one-line search field whose text egui keeps under `egui::Id::unique(id_salt)` between
+/// passes; returns the text lower-cased, to match labels against (empty: everything matches).
+fn search_field(ui: &mut egui::Ui, id_salt: &str, hint: &str) -> String {
+    let id = egui::Id::unique(id_salt);
+    let mut search: String = ui.data_mut(|d| d.get_temp(id)).unwrap_or_default();
+    ui.add(
+        egui::TextEdit::singleline(&mut search)
+            .id(id)
+            .hint_text(hint),
+    );
+    ui.data_mut(|d| d.insert_temp(id, search.clone()));
+    search.to_lowercase()
+}

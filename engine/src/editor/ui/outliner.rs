@@ -18,15 +18,7 @@ use super::{Pending, mode_of};
 pub const SEARCH_ID: &str = "editor_outliner_search";
 
 pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
-    let id = egui::Id::unique(SEARCH_ID);
-    let mut search: String = ui.data_mut(|d| d.get_temp(id)).unwrap_or_default();
-    ui.add(
-        egui::TextEdit::singleline(&mut search)
-            .id(id)
-            .hint_text("search"),
-    );
-    ui.data_mut(|d| d.insert_temp(id, search.clone()));
-    let needle = search.to_lowercase();
+    let needle = super::search_field(ui, SEARCH_ID, "search");
     let level = &state.doc.level;
     let modifiers = ui.input(|i| i.modifiers);
     egui::ScrollArea::vertical()

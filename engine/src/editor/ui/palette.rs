@@ -17,15 +17,7 @@ use super::Pending;
 pub const SEARCH_ID: &str = "editor_palette_search";
 
 pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
-    let id = egui::Id::unique(SEARCH_ID);
-    let mut search: String = ui.data_mut(|d| d.get_temp(id)).unwrap_or_default();
-    ui.add(
-        egui::TextEdit::singleline(&mut search)
-            .id(id)
-            .hint_text("search pieces"),
-    );
-    ui.data_mut(|d| d.insert_temp(id, search.clone()));
-    let needle = search.to_lowercase();
+    let needle = super::search_field(ui, SEARCH_ID, "search pieces");
     let level = &state.doc.level;
     let listed: Vec<&str> = (level.models.iter())
         .chain(state.base.iter().flat_map(|b| b.models.iter()))
