@@ -1,7 +1,8 @@
 //! Issue 34's bad input, each case through the level loader from a level text: a sun below
 //! −90° (or above 90°), a negative or non-finite haze (and `turbidity`, which this sky does not
-//! have: Hosek–Wilkie's turbidity 3 is `haze: 22.05`), a cloud texture of 0 size (0 texels, a
-//! 0 m tile, more texels than the cap, a cloud of 0 radius), a latitude out of range (north,
+//! have: Hosek–Wilkie's turbidity 3 is `haze: 5.949` with the aerosols of
+//! `Aerosol::TURBIDITY_3`), aerosols out of range, a cloud texture of 0 size (0 texels, a 0 m
+//! tile, more texels than the cap, a cloud of 0 radius), a latitude out of range (north,
 //! south, not finite), and beside them a longitude and an hour out of range. Each is an
 //! `AssetError` whose message names the level file and the field.
 //!
@@ -133,5 +134,45 @@ fn a_longitude_or_an_hour_out_of_range_is_refused() {
         "hour_negative",
         &time("48.1", "11.6", "-0.5"),
         "time.utc_hours",
+    );
+}
+
+#[test]
+fn aerosols_out_of_range_are_refused() {
+    refused("aerosol_g", "aerosol: (g: 1.2)", "aerosol.g");
+    refused(
+        "aerosol_forward",
+        "aerosol: (forward_share: -0.1)",
+        "aerosol.forward_share",
+    );
+    refused(
+        "aerosol_angstrom",
+        "aerosol: (angstrom: NaN)",
+        "aerosol.angstrom",
+    );
+    refused(
+        "aerosol_height",
+        "aerosol: (scale_height_km: 0)",
+        "aerosol.scale_height_km",
+    );
+    refused(
+        "aerosol_absorbs",
+        "aerosol: (absorption_per_km: -1e-3)",
+        "aerosol.absorption_per_km",
+    );
+    // A partial aerosol takes the Earth preset's other fields and loads.
+    let dir = std::env::temp_dir().join(format!("candela_sky_aerosol_ok_{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let d = Dir(dir);
+    let path = d.0.join("aerosol_ok.ron");
+    let text = "Level(models: [], instances: [], camera: (position: (0, 1, 3), look_at: (0, 0, 0), \
+                vertical_fov_deg: 40), sky: Physical((aerosol: (g: 0.5, angstrom: 1.3))))";
+    std::fs::write(&path, text).expect("write level");
+    let loaded = load_scene(&path, &AssetRoot::new(&d.0).expect("root"));
+    assert!(
+        loaded.is_ok(),
+        "a partial aerosol is refused: {:?}",
+        loaded.err()
     );
 }
