@@ -144,6 +144,10 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             }
             break;
         }
+        // The last hit only adds the light it emits: one that cannot emit ends the path here.
+        if (bounce >= frame.max_bounces && !hit_can_emit(hit)) {
+            break;
+        }
         let surface = resolve_surface(hit, ray.direction);
         cone.width += cone.spread * max(hit.t, 0.0);
         var lod_random = 0.0;

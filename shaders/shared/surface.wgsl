@@ -47,6 +47,20 @@ fn v3(a: array<f32, 3>) -> vec3<f32> {
     return vec3<f32>(a[0], a[1], a[2]);
 }
 
+// Twin of `scene::surface::can_emit`: the hit's material (after the instance's override) has a
+// non-zero emission factor and the instance's light group is on.
+fn hit_can_emit(hit: Hit) -> bool {
+    let inst = instances[hit.instance];
+    if ((inst.flags & INSTANCE_FLAG_EMISSION_OFF) != 0u) {
+        return false;
+    }
+    var material = triangles[inst.triangle_base + hit.triangle].material;
+    if (inst.material_override != INVALID) {
+        material = inst.material_override;
+    }
+    return any(materials[material].emission.xyz != vec3<f32>(0.0));
+}
+
 fn resolve_surface(hit: Hit, direction: vec3<f32>) -> Surface {
     let inst = instances[hit.instance];
     let tri = triangles[inst.triangle_base + hit.triangle];

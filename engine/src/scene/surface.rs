@@ -54,6 +54,24 @@ fn world_normal(i: &GpuInstance, n: Vec3) -> Vec3 {
     )
 }
 
+/// Whether the surface `hit` lies on can emit at all: its material (after the instance's
+/// override) has a non-zero emission factor and the instance's light group is on. When it
+/// cannot, [`resolve`] and shading would find zero emission; a path's last hit, which only adds
+/// emission, then ends without resolving the hit (`render/cpu/integrator.rs`).
+pub fn can_emit(scene: &RenderScene, hit: &Hit) -> bool {
+    let inst = &scene.instances[hit.instance as usize];
+    if inst.flags & INSTANCE_FLAG_EMISSION_OFF != 0 {
+        return false;
+    }
+    let material = if inst.material_override != INVALID {
+        inst.material_override
+    } else {
+        scene.triangles[(inst.triangle_base + hit.triangle) as usize].material
+    };
+    let e = &scene.materials[material as usize].emission;
+    e[0] != 0.0 || e[1] != 0.0 || e[2] != 0.0
+}
+
 /// Resolves `hit` of a ray with direction `direction`.
 pub fn resolve(scene: &RenderScene, hit: &Hit, direction: Vec3) -> Surface {
     let inst = &scene.instances[hit.instance as usize];

@@ -26,7 +26,7 @@ use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
 use super::sampling::{basis, concentric_disc, to_local, to_world};
-use super::surface::{offset_origin, reads_levels, resolve, shade};
+use super::surface::{can_emit, offset_origin, reads_levels, resolve, shade};
 use crate::layout::{
     GpuFrameUniforms, GpuLine, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, SKY_GRADIENT,
     SKY_PHYSICAL,
@@ -180,6 +180,11 @@ pub fn radiance(
             }
             break;
         };
+        // The last hit only adds the light it emits: one that cannot emit ends the path here,
+        // unresolved and unshaded (the estimate is the same, bit for bit).
+        if bounce >= u.max_bounces && !can_emit(scene, &hit) {
+            break;
+        }
         let surface = resolve(scene, &hit, ray.direction);
         cone.travel(hit.t);
         let lod_random = if reads_levels(&scene.materials[surface.material as usize]) {

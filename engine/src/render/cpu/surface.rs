@@ -11,7 +11,7 @@ use super::bsdf::Bsdf;
 use super::texture::{self, Lod};
 use crate::layout::{GpuMaterial, INVALID, MATERIAL_DIELECTRIC, MATERIAL_METAL_ROUGH};
 use crate::scene::RenderScene;
-pub use crate::scene::surface::{Surface, resolve};
+pub use crate::scene::surface::{Surface, can_emit, resolve};
 
 /// The material at a surface: its BSDF, emitted radiance, and the shading normal after
 /// normal mapping (unchanged without a normal texture or tangent frame).
