@@ -11,12 +11,18 @@
 //! relative MSE; the bias column holds about twice that floor besides the bias²). A still view
 //! converges to the cap's converged render, so its bias is what a player sees when standing.
 //!
+//! Beside the caps, `--roulette-starts` and `--light-sampling` measure the other render settings
+//! a level declares (when Russian roulette may start ending paths; power table or light tree)
+//! in every combination, so each chamber's settings are chosen at equal time.
+//!
 //! The caps are measured interleaved (frame by frame) so that load on a shared machine falls
 //! on all of them alike.
 //!
 //! Owns: [`run`]. Main thread (the rayon pool renders). Must not: change the game or the tracer.
 
-use candela::layout::GpuFrameUniforms;
+use candela::assets::LightSampling;
+use candela::layout::{GpuFrameUniforms, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER};
+use candela::render::method_of;
 use candela::render::Tracer;
 use candela::render::cpu::CpuTracer;
 use candela::scene::RenderScene;
@@ -35,6 +41,14 @@ pub struct BounceBudgetArgs {
     /// Bounce caps to compare, comma-separated.
     #[arg(long, value_delimiter = ',', default_value = "2,3")]
     pub bounces: Vec<u32>,
+    /// Scattering events before Russian roulette may end a path, comma-separated, each measured
+    /// with every cap (empty: the level's own `render.roulette_start`).
+    #[arg(long, value_delimiter = ',')]
+    pub roulette_starts: Vec<u32>,
+    /// How next-event estimation picks an emissive triangle (`power`, `tree`), comma-separated,
+    /// each measured with every cap and roulette start (empty: the level's own).
+    #[arg(long, value_delimiter = ',', value_parser = parse_sampling)]
+    pub light_sampling: Vec<LightSampling>,
     /// Traced width in pixels.
     #[arg(long, default_value_t = 160)]
     pub width: u32,
@@ -52,8 +66,17 @@ pub struct BounceBudgetArgs {
     pub reference_bounces: u32,
 }
 
-/// Mean radiance of `spp` samples per pixel of `u`'s view at `max_bounces`, rendered in chunks
-/// of 16 samples from sample base `base`.
+/// `power` or `tree`.
+fn parse_sampling(s: &str) -> Result<LightSampling, String> {
+    match s {
+        "power" => Ok(LightSampling::Power),
+        "tree" => Ok(LightSampling::Tree),
+        other => Err(format!("unknown light sampling {other:?} (power, tree)")),
+    }
+}
+
+/// Mean radiance of `spp` samples per pixel of `u`'s view at `max_bounces` (and `u`'s
+/// roulette), rendered in chunks of 16 samples from sample base `base`.
 fn converged(
     tracer: &mut CpuTracer,
     scene: &RenderScene,
@@ -89,7 +112,7 @@ pub fn run(args: &BounceBudgetArgs) -> anyhow::Result<()> {
         args.width, args.height, args.frames, args.reference_spp, args.reference_bounces
     );
     println!(
-        "| chamber | max bounces | roulette from | ms per frame (median) | rel. MSE, 1 frame | rel. MSE × ms | rel. MSE, mean of {} frames | rel. MSE converged (bias² + noise) | reference noise floor |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+        "| chamber | max bounces | roulette from | lights | ms per frame (median) | rel. MSE, 1 frame | rel. MSE × ms | rel. MSE, mean of {} frames | rel. MSE converged (bias² + noise) | reference noise floor |\n|---|---:|---:|---|---:|---:|---:|---:|---:|---:|",
         args.frames
     );
     let mut tracer = CpuTracer::new();
@@ -110,16 +133,40 @@ pub fn run(args: &BounceBudgetArgs) -> anyhow::Result<()> {
         let (a, b) = (a?, b?);
         let floor = rel_mse(&a, &b) / 4.0;
         let reference: Vec<Vec3> = a.iter().zip(&b).map(|(x, y)| (*x + *y) * 0.5).collect();
-        let caps = args.bounces.len();
+        let starts = if args.roulette_starts.is_empty() {
+            vec![u.roulette_start]
+        } else {
+            args.roulette_starts.clone()
+        };
+        // The level's own light sampling keeps its other method bits (a level's view).
+        let samplings: Vec<(&str, u32)> = if args.light_sampling.is_empty() {
+            vec![("level", u.method)]
+        } else {
+            let others = u.method & !(METHOD_LIGHT_TREE | METHOD_LIGHTS_BY_POWER);
+            args.light_sampling
+                .iter()
+                .map(|&l| (l.name(), others | method_of(l)))
+                .collect()
+        };
+        // Every (cap, roulette start, light sampling), measured interleaved.
+        let configs: Vec<(u32, u32, &str, u32)> = args
+            .bounces
+            .iter()
+            .flat_map(|&b| starts.iter().map(move |&s| (b, s)))
+            .flat_map(|(b, s)| samplings.iter().map(move |&(name, m)| (b, s, name, m)))
+            .collect();
+        let caps = configs.len();
         let mut ms = vec![Vec::new(); caps];
         let mut errors = vec![Vec::new(); caps];
         let mut sums = vec![vec![Vec3::ZERO; reference.len()]; caps];
         for f in 0..args.frames {
-            for (i, &bounces) in args.bounces.iter().enumerate() {
+            for (i, &(bounces, roulette_start, _, method)) in configs.iter().enumerate() {
                 let frame = GpuFrameUniforms {
                     sample_base: f * u.spp.max(1),
                     film_blend: 1.0,
                     max_bounces: bounces,
+                    roulette_start,
+                    method,
                     ..u
                 };
                 tracer.clear();
@@ -132,17 +179,21 @@ pub fn run(args: &BounceBudgetArgs) -> anyhow::Result<()> {
                 }
             }
         }
-        for (i, &bounces) in args.bounces.iter().enumerate() {
+        for (i, &(bounces, roulette_start, sampling, method)) in configs.iter().enumerate() {
             let mean: Vec<Vec3> = sums[i]
                 .iter()
                 .map(|s| *s / args.frames.max(1) as f32)
                 .collect();
             let frame_ms = median(&ms[i]);
             let error = errors[i].iter().sum::<f64>() / errors[i].len().max(1) as f64;
-            let still = converged(&mut tracer, &scene, &u, bounces, 2 * half, 1 << 22)?;
+            let with = GpuFrameUniforms {
+                roulette_start,
+                method,
+                ..u
+            };
+            let still = converged(&mut tracer, &scene, &with, bounces, 2 * half, 1 << 22)?;
             println!(
-                "| {chamber} | {bounces} | {} | {frame_ms:.2} | {error:.4} | {:.3} | {:.4} | {:.4} | {floor:.4} |",
-                u.roulette_start,
+                "| {chamber} | {bounces} | {roulette_start} | {sampling} | {frame_ms:.2} | {error:.4} | {:.3} | {:.4} | {:.4} | {floor:.4} |",
                 error * frame_ms,
                 rel_mse(&mean, &reference),
                 rel_mse(&still, &reference)

@@ -7,7 +7,9 @@
 //! engine's [`CpuTracer`] renders that frame `--frames` times (sample bases 0, 1, …) and every
 //! render is timed. The printed film hash is a function of the traced paths only, so two
 //! binaries whose traversal differs only in speed print the same hash: run two builds one after
-//! the other, interleaved (`--rounds`, or a shell loop over two binaries), for an A/B.
+//! the other, interleaved (`--rounds`, or a shell loop over two binaries), for an A/B. After
+//! each render the denoiser's guide pass (`cpu::guides`) traces the same view, timed apart
+//! (wall clock, outside the CPU seconds of the rays).
 //!
 //! Owns: [`run`]. Main thread; the render thread only while the chamber warms up, the rayon
 //! pool (`--threads`) for the timed renders. Must not: change the game or the tracer.
@@ -19,6 +21,7 @@ use candela::app::{Engine, Game};
 use candela::assets::Level;
 use candela::layout::GpuFrameUniforms;
 use candela::render::cpu::CpuTracer;
+use candela::render::cpu::guides::trace_guides;
 use candela::render::{FilmView, OpenTracer, RenderConfig, RenderError, RenderStats, Tracer};
 use candela::scene::RenderScene;
 use clap::Parser;
@@ -164,11 +167,12 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
         mib(scene.texels.len() * 8)
     );
     println!(
-        "| round | renders | rays | camera | shadow | bounce | ms per render (median) | Mrays/s (wall) | Mrays per CPU second | film hash |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+        "| round | renders | rays | camera | shadow | bounce | ms per render (median) | Mrays/s (wall) | Mrays per CPU second | film hash | guide pass ms (median) |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
     );
     let mut tracer = CpuTracer::new();
     for round in 0..args.rounds {
         let (mut ms, mut rays, mut seconds) = (Vec::new(), [0u64; 3], 0.0);
+        let mut guide_ms = Vec::new();
         let mut cpu_total = 0.0;
         let mut hasher = DefaultHasher::new();
         for f in 0..args.frames {
@@ -189,10 +193,15 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
             for p in &tracer.film()?.mean {
                 p.to_array().map(f32::to_bits).hash(&mut hasher);
             }
+            // The denoiser's guide pass over the same view, as the game runs it beside the trace.
+            let start = std::time::Instant::now();
+            let guides = pool.install(|| trace_guides(&scene, &frame));
+            guide_ms.push(start.elapsed().as_secs_f64() * 1e3);
+            std::hint::black_box(&guides);
         }
         let total: u64 = rays.iter().sum();
         println!(
-            "| {} | {} | {} | {} | {} | {} | {:.2} | {:.3} | {:.3} | {:016x} |",
+            "| {} | {} | {} | {} | {} | {} | {:.2} | {:.3} | {:.3} | {:016x} | {:.2} |",
             round + 1,
             args.frames,
             total,
@@ -202,7 +211,8 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
             median(&ms),
             total as f64 / seconds.max(1e-9) / 1e6,
             total as f64 / cpu_total.max(1e-9) / 1e6,
-            hasher.finish()
+            hasher.finish(),
+            median(&guide_ms)
         );
     }
     Ok(())
