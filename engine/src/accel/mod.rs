@@ -76,7 +76,9 @@ mod upkeep_report;
 pub use crate::scene::Aabb;
 pub use blas::{Blas, BlasParams, build_blas, build_blas_with, build_blas_with_params};
 pub use bvh2::BuildQuality;
-pub use refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
+pub use refit::{
+    Refit, rebuild_bound, refit_blas, refit_blas_measured, sah_cost, triangle_area_ratio,
+};
 pub use tlas::build_tlas;
 pub use upkeep::{REBUILD_RATIO, Upkeep, UpkeepStats};
 pub use upkeep_report::MeshCost;

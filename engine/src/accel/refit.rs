@@ -3,7 +3,9 @@
 //! Input: a [`Blas`] built for a mesh and the mesh's new object-space positions (same vertex and
 //! triangle count, same topology). Output: the blocks' triangles re-read, every node's child
 //! boxes recomputed bottom-up, the per-octant child orders recomputed, and the tree's SAH cost
-//! ([`sah_cost`]) so that the upkeep policy can tell when a rebuild is due.
+//! ([`sah_cost`]) and triangle area ratio ([`triangle_area_ratio`], from the same pass that
+//! re-reads the triangles: [`refit_blas_measured`]) so that the upkeep policy can tell when a
+//! rebuild is due.
 //! Main thread (the `accel` phase); O(nodes + triangles). Must not: change the tree's shape
 //! (that is a rebuild).
 
@@ -11,7 +13,7 @@ use glam::Vec3;
 
 use super::blas::{Blas, BlasParams};
 use super::octant_order::octant_orders;
-use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT};
+use crate::layout::{GpuBvh8Node, GpuTri4, INVALID, LEAF_BIT, LEAF_COUNT_SHIFT, LEAF_INDEX_MASK};
 use crate::scene::Aabb;
 use crate::trace::leaf_blocks;
 use crate::trace::triangle::tri_lane;
@@ -25,13 +27,6 @@ fn lane_bounds(block: &GpuTri4, lane: usize) -> Option<Aabb> {
     let e1 = Vec3::new(block.e1_x[lane], block.e1_y[lane], block.e1_z[lane]);
     let e2 = Vec3::new(block.e2_x[lane], block.e2_y[lane], block.e2_z[lane]);
     Some(Aabb::EMPTY.grow(v0).grow(v0 + e1).grow(v0 + e2))
-}
-
-/// Bounds of the valid lanes of a block.
-fn block_bounds(block: &GpuTri4) -> Aabb {
-    (0..4)
-        .filter_map(|lane| lane_bounds(block, lane))
-        .fold(Aabb::EMPTY, Aabb::union)
 }
 
 fn slot_bounds(node: &GpuBvh8Node, slot: usize) -> Aabb {
@@ -79,11 +74,38 @@ fn post_order(nodes: &[GpuBvh8Node]) -> Vec<usize> {
     order
 }
 
+/// What a refit measured of the refitted tree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Refit {
+    /// [`sah_cost`] of the refitted tree.
+    pub cost: f32,
+    /// [`triangle_area_ratio`] of the refitted tree, bit for bit.
+    pub area_ratio: f32,
+}
+
+/// The indices of a BLAS leaf payload's blocks within `count` blocks (the encoding of
+/// [`LEAF_COUNT_SHIFT`], as the tracers read it); empty when out of range.
+fn leaf_range(payload: u32, count: usize) -> std::ops::Range<usize> {
+    let first = (payload & LEAF_INDEX_MASK) as usize;
+    let end = first + (payload >> LEAF_COUNT_SHIFT & 3) as usize + 1;
+    if end <= count { first..end } else { 0..0 }
+}
+
 /// Refits `blas` to `positions` (the mesh's new vertex positions; `triangles` unchanged) and
 /// returns its new [`sah_cost`]. Lanes whose triangle now has a non-finite or out-of-range
 /// vertex become degenerate (zero edges at the origin), so they are never hit.
 pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -> f32 {
+    refit_blas_measured(blas, positions, triangles).cost
+}
+
+/// [`refit_blas`], also measuring the refitted tree's [`triangle_area_ratio`] on the way: each
+/// lane's box is computed once, for its block's box and for the ratio (instead of a second pass
+/// over the blocks afterwards).
+pub fn refit_blas_measured(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -> Refit {
+    let mut block_boxes = Vec::with_capacity(blas.blocks.len());
+    let mut lane_area = 0.0f64;
     for block in &mut blas.blocks {
+        let mut block_box = Aabb::EMPTY;
         for lane in 0..4 {
             let prim = block.prim[lane];
             if prim == INVALID {
@@ -100,7 +122,13 @@ pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -
             (block.v0_x[lane], block.v0_y[lane], block.v0_z[lane]) = (v0.x, v0.y, v0.z);
             (block.e1_x[lane], block.e1_y[lane], block.e1_z[lane]) = (e1.x, e1.y, e1.z);
             (block.e2_x[lane], block.e2_y[lane], block.e2_z[lane]) = (e2.x, e2.y, e2.z);
+            // As `triangle_area_ratio` and `block_bounds` read the lane back.
+            if let Some(b) = lane_bounds(block, lane) {
+                lane_area += b.surface_area() as f64;
+                block_box = block_box.union(b);
+            }
         }
+        block_boxes.push(block_box);
     }
     let mut subtree = vec![Aabb::EMPTY; blas.nodes.len()];
     for n in post_order(&blas.nodes) {
@@ -111,9 +139,9 @@ pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -
                 continue;
             }
             let b = if child & LEAF_BIT != 0 {
-                leaf_blocks(&blas.blocks, child & !LEAF_BIT)
+                block_boxes[leaf_range(child & !LEAF_BIT, block_boxes.len())]
                     .iter()
-                    .fold(Aabb::EMPTY, |acc, b| acc.union(block_bounds(b)))
+                    .fold(Aabb::EMPTY, |acc, b| acc.union(*b))
             } else {
                 subtree.get(child as usize).copied().unwrap_or(Aabb::EMPTY)
             };
@@ -125,7 +153,15 @@ pub fn refit_blas(blas: &mut Blas, positions: &[Vec3], triangles: &[[u32; 3]]) -
     }
     blas.bounds = subtree.first().copied().unwrap_or(Aabb::EMPTY);
     blas.sah_cost = sah_cost(&blas.nodes, &blas.blocks);
-    blas.sah_cost
+    let root = blas.bounds.surface_area();
+    Refit {
+        cost: blas.sah_cost,
+        area_ratio: if root > 0.0 && root.is_finite() {
+            (lane_area / root as f64) as f32
+        } else {
+            0.0
+        },
+    }
 }
 
 /// SAH cost of a tree with the default [`BlasParams`] costs, the same sum the build reports in
@@ -264,6 +300,47 @@ mod tests {
         let fresh = build_blas(&last, &triangles);
         let fresh_cost = sah_cost(&fresh.nodes, &fresh.blocks);
         assert!(blas.sah_cost >= 0.95 * fresh_cost && blas.sah_cost < 3.0 * fresh_cost);
+    }
+
+    /// The area ratio measured during the refit is the separate pass's, bit for bit, and every
+    /// leaf's box is the union of its blocks' triangle boxes as read back from the blocks.
+    #[test]
+    fn the_area_measured_in_the_refit_is_the_separate_pass_bit_for_bit() {
+        let (start, triangles) = grid(24, 0.0);
+        let mut blas = build_blas(&start, &triangles);
+        for step in 1..=6 {
+            let (mut moved, _) = grid(24, step as f32 * 0.7);
+            // A stretched corner and a vertex gone bad, as a refit may meet.
+            moved[0] *= 1.0 + step as f32;
+            moved[7] = Vec3::NAN;
+            let refit = refit_blas_measured(&mut blas, &moved, &triangles);
+            assert_eq!(
+                refit.cost,
+                sah_cost(&blas.nodes, &blas.blocks),
+                "step {step}"
+            );
+            assert_eq!(
+                refit.area_ratio.to_bits(),
+                triangle_area_ratio(&blas).to_bits(),
+                "step {step}"
+            );
+            assert!(refit.area_ratio > 0.0);
+            let mut leaves = 0;
+            for node in &blas.nodes {
+                for slot in
+                    (0..8).filter(|&s| node.child[s] != INVALID && node.child[s] & LEAF_BIT != 0)
+                {
+                    let range = leaf_range(node.child[slot] & !LEAF_BIT, blas.blocks.len());
+                    let expected = blas.blocks[range]
+                        .iter()
+                        .flat_map(|b| (0..4).filter_map(|lane| lane_bounds(b, lane)))
+                        .fold(Aabb::EMPTY, Aabb::union);
+                    assert_eq!(slot_bounds(node, slot), expected, "step {step}");
+                    leaves += 1;
+                }
+            }
+            assert!(leaves > 100, "{leaves} leaves");
+        }
     }
 
     #[test]

@@ -8,7 +8,7 @@
 use glam::Vec3;
 
 use super::blas::{Blas, build_blas_with_params};
-use super::refit::{rebuild_bound, refit_blas, sah_cost, triangle_area_ratio};
+use super::refit::{rebuild_bound, refit_blas_measured, sah_cost, triangle_area_ratio};
 use super::upkeep::{MeshSlot, REBUILD_RATIO, Upkeep};
 use crate::ecs::ModelHandle;
 use crate::scene::{Aabb, SceneWrite};
@@ -54,9 +54,14 @@ impl Upkeep {
             data: vertices,
         });
         puffin::profile_scope!("BLAS refit/rebuild");
-        let cost = refit_blas(&mut slot.blas, positions, &slot.triangles);
-        let area = triangle_area_ratio(&slot.blas);
-        if cost > rebuild_bound(REBUILD_RATIO, slot.built_cost, slot.built_area, area) {
+        let refit = refit_blas_measured(&mut slot.blas, positions, &slot.triangles);
+        let bound = rebuild_bound(
+            REBUILD_RATIO,
+            slot.built_cost,
+            slot.built_area,
+            refit.area_ratio,
+        );
+        if refit.cost > bound {
             slot.blas = build_blas_with_params(positions, &slot.triangles, self.blas_params);
             slot.built_cost = sah_cost(&slot.blas.nodes, &slot.blas.blocks);
             slot.built_area = triangle_area_ratio(&slot.blas);

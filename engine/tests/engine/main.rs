@@ -88,6 +88,7 @@ mod gameplay_memory;
 mod gameplay_plate_door;
 mod gameplay_rules;
 mod gameplay_sun_lit;
+mod gameplay_sun_lit_shadow;
 mod ghosting;
 mod level_bad_input;
 mod level_character;

@@ -17,7 +17,8 @@
 //!   of `docs/ACCURACY.md` (partial runs write under `target/bench-chart/`).
 //! * `bench pipeline` — the frame pipeline on the demo level: BVH upkeep per frame against full
 //!   rebuilds, commit bytes, the refit/rebuild threshold, ray-query throughput, and the overlap
-//!   of game update and render (CSV files beside the tables).
+//!   of game update and render; and upkeep and commit bytes on the wading test level, the water
+//!   rippling under the walking explorer (`--only wading`; CSV files beside the tables).
 //! * `bench balance [--record]` — Brigade's workload balancers (§4.3, Table 1, Figure 9) and
 //!   ours, replayed on recorded per-unit costs of the demo city on simulated tracers
 //!   (`tools/bench/data/balance/`, tables in `docs/PERFORMANCE.md`, charts in `docs/charts/`).
@@ -72,6 +73,7 @@ mod pipeline;
 mod pipeline_overlap;
 mod pipeline_queries;
 mod pipeline_refit;
+mod pipeline_wading;
 mod plot;
 mod present;
 mod present_overlay_reference;

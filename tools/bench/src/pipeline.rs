@@ -9,6 +9,8 @@
 //! * **queries** — `Upkeep::queries()` throughput on the demo (`pipeline_queries.rs`).
 //! * **overlap** — frame time against max(update, render) and their sum with both loaded
 //!   (`pipeline_overlap.rs`).
+//! * **wading** — the same upkeep against rebuild and commit bytes on the wading test level,
+//!   the water rippling under the walking explorer, with movers (`pipeline_wading.rs`).
 //!
 //! Machine noise: the figures that are compared (upkeep against full rebuild, policies against
 //! each other) are taken in the same run, interleaved where it matters; medians of `--reps`.
@@ -33,6 +35,7 @@ pub enum Part {
     Refit,
     Queries,
     Overlap,
+    Wading,
 }
 
 #[derive(Args, Debug)]
@@ -58,6 +61,12 @@ pub struct PipelineArgs {
     /// Overlap: load the game update with busy work instead of sleep.
     #[arg(long)]
     pub busy: bool,
+    /// Wading: quads per side of the water grid, one row each (0: the level's own 80 × 80).
+    #[arg(long, value_delimiter = ',', default_values_t = [96, 0])]
+    pub water_divisions: Vec<u32>,
+    /// Wading: frames of 1/60 s to run (the first 60 are not measured).
+    #[arg(long, default_value_t = 660)]
+    pub wading_frames: u32,
 }
 
 pub fn run(args: &PipelineArgs) -> anyhow::Result<()> {
@@ -68,12 +77,18 @@ pub fn run(args: &PipelineArgs) -> anyhow::Result<()> {
             .context("cannot size the rayon pool")?;
     }
     println!("rayon threads: {}\n", rayon::current_num_threads());
-    let script = Script::read(&args.script)?;
-    let level = script.load_level()?;
-    let desc = &level.scene;
     std::fs::create_dir_all(&args.out_dir)
         .with_context(|| format!("cannot create {}", args.out_dir.display()))?;
     let wants = |p| args.only.is_empty() || args.only.contains(&p);
+    if wants(Part::Wading) {
+        crate::pipeline_wading::run(args)?;
+    }
+    if args.only == [Part::Wading] {
+        return Ok(());
+    }
+    let script = Script::read(&args.script)?;
+    let level = script.load_level()?;
+    let desc = &level.scene;
     if wants(Part::Upkeep) {
         upkeep(&script, &level, args)?;
     }

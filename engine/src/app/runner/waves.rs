@@ -189,4 +189,71 @@ mod tests {
             .positions[3 + 3 * 8];
         assert!((p.y - 0.05).abs() < 1e-6, "{p}");
     }
+
+    /// On a simulated water the analytic swell stays the base: each vertex is its rest
+    /// position raised by the swell plus the ripple, and the normals are the central
+    /// differences of that total height (one-sided on the edges), not the swell's analytic
+    /// normals.
+    #[test]
+    fn ripples_ride_on_the_swell_with_central_difference_normals() {
+        let n = 8;
+        let base = grid(n);
+        let sim_desc = WaterSimDesc {
+            wave_speed: 1.0,
+            damping: 0.5,
+            substeps: 1,
+            push: 0.1,
+            start_at_rest: false,
+        };
+        let desc = WaveDesc {
+            amplitude: 0.02,
+            wavelength: 0.7,
+            speed: 0.5,
+            simulate: Some(sim_desc),
+        };
+        let mut sim = WaterSim::on_grid(&base, sim_desc).expect("a grid");
+        sim.field.raise(3, 4, 0.05);
+        let ripples = sim.field.heights().to_vec();
+        let waves = Waves::new(desc, base.clone());
+        let deformable = Deformable {
+            mesh: 0,
+            positions: base.clone(),
+            normals: None,
+            dirty: false,
+        };
+        let mut world = World::new();
+        let e = world.spawn((waves.clone(), deformable, sim));
+        let t = 0.37;
+        waves_system(&mut world, f64::from(t));
+        let d = world.get::<&Deformable>(e).expect("deformable");
+        let normals = d.normals.as_ref().expect("normals written");
+        let total = |ix: usize, iz: usize| {
+            let i = ix + iz * n;
+            waves.height(base[i], t).0 + ripples[i]
+        };
+        for (i, p) in d.positions.iter().enumerate() {
+            let expected = base[i].y + total(i % n, i / n);
+            assert!(
+                (p.y - expected).abs() < 1e-6,
+                "vertex {i}: {p} vs {expected}"
+            );
+            assert_eq!(
+                (p.x, p.z),
+                (base[i].x, base[i].z),
+                "vertex {i} moved sideways"
+            );
+        }
+        // An interior vertex beside the ripple, and a corner (one-sided).
+        let h = 0.1;
+        for (ix, iz, x0, x1, z0, z1) in [(2, 4, 1, 3, 3, 5), (0, 0, 0, 1, 0, 1)] {
+            let slope_x = (total(x1, iz) - total(x0, iz)) / ((x1 - x0) as f32 * h);
+            let slope_z = (total(ix, z1) - total(ix, z0)) / ((z1 - z0) as f32 * h);
+            let expected = Vec3::new(-slope_x, 1.0, -slope_z).normalize();
+            let got = normals[ix + iz * n];
+            assert!(
+                got.abs_diff_eq(expected, 1e-5),
+                "normal at ({ix}, {iz}): {got} vs {expected}"
+            );
+        }
+    }
 }
