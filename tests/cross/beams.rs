@@ -44,7 +44,7 @@ fn floor(y: f32, h: f32) -> Mesh {
 
 /// A beam from (−1.5, 0, 0) to (1.5, 0, 0) seen from 4 m, over a mirror floor 1 m below,
 /// under a dim sky.
-fn beam_scene() -> SceneDesc {
+pub fn beam_scene() -> SceneDesc {
     let mirror = single_mesh_model(
         floor(-1.0, 6.0),
         Material {
