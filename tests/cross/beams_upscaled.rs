@@ -73,7 +73,10 @@ fn upscaled() -> Vec<Vec3> {
             }
         }
     }
-    assert!(count.iter().all(|&n| n > 0), "every displayed pixel got a sample");
+    assert!(
+        count.iter().all(|&n| n > 0),
+        "every displayed pixel got a sample"
+    );
     sum.iter()
         .zip(&count)
         .map(|(s, &n)| *s / n as f32)
@@ -96,7 +99,10 @@ fn row_profile(image: &[Vec3]) -> Vec<f32> {
 /// background (the window's dimmest row) taken off.
 fn spread(profile: &[f32], peak: usize) -> (f32, f32, f32) {
     let rows = peak.saturating_sub(4)..(peak + 5).min(profile.len());
-    let background = rows.clone().map(|y| profile[y]).fold(f32::INFINITY, f32::min);
+    let background = rows
+        .clone()
+        .map(|y| profile[y])
+        .fold(f32::INFINITY, f32::min);
     let weight = |y: usize| profile[y] - background;
     let energy: f32 = rows.clone().map(weight).sum();
     let centre = rows.clone().map(|y| y as f32 * weight(y)).sum::<f32>() / energy;

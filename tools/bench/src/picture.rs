@@ -12,7 +12,9 @@
 //! sRGB picture, beside the reference's own noise; then the temporal stability
 //! (`picture_stability.rs`). Prints Markdown tables and writes `picture.csv` into `--out-dir`
 //! (`picture_report.rs`) and the chart (`picture_plot.rs`). `--quick` runs the same code at a
-//! tiny size in seconds.
+//! tiny size in seconds; `--denoised-only` runs the game's (denoised) rows, `--frames` compares
+//! chosen frames, `--worst` and `--dump-dir` show where an error comes from
+//! (`picture_outliers.rs`).
 //!
 //! Owns: the plan and the measurement loop. Main thread. Must not: draw or format.
 
@@ -252,7 +254,11 @@ pub fn measure(
         let frames = if args.frames.is_empty() {
             sampled_frames(length, args.every, args.per_chamber)
         } else {
-            args.frames.iter().copied().filter(|&f| f <= length).collect()
+            args.frames
+                .iter()
+                .copied()
+                .filter(|&f| f <= length)
+                .collect()
         };
         plans.push((c, replay, frames));
     }

@@ -63,7 +63,8 @@ pub fn worst_pixels(shown: &[Vec3], reference: &[Vec3], width: u32, n: usize) ->
 
 /// The outliers as lines of text, under a heading naming the frame.
 pub fn describe(heading: &str, outliers: &[Outlier]) -> String {
-    let mut text = format!("{heading}: worst pixels (x, y: shown / reference, share of rel. MSE)\n");
+    let mut text =
+        format!("{heading}: worst pixels (x, y: shown / reference, share of rel. MSE)\n");
     for o in outliers {
         text += &format!(
             "  {:4}, {:4}: ({:.3}, {:.3}, {:.3}) / ({:.3}, {:.3}, {:.3}), {:.1} %\n",
