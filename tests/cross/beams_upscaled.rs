@@ -13,8 +13,8 @@
 //! Checked on the beam scene of `beams.rs` at 64×36 (traced 32×18): the beam accumulated over
 //! the jitter's 16 frames, as the upscaler's splat accumulates a still view, against a
 //! 64-spp render at 64×36: the same energy across the beam (within 10 %) and the same spread
-//! (RMS width within 0.25 displayed pixels: 0.59 against 0.63; 1.21 with the old footprint). And the
-//! GPU tracer draws the jittered frame as the CPU tracer does.
+//! (RMS width within 0.25 displayed pixels: 0.59 against 0.63; 1.21 with the old footprint).
+//! And the GPU tracer draws the jittered frame as the CPU tracer does.
 
 use candela::render::jitter::{JITTER_FRAMES, frame_jitter, pack};
 use candela::render::{FrameSettings, frame_uniforms};
