@@ -89,7 +89,7 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var travelled = 0.0;
     // Absorption (1/m) of the medium the path travels in (twin of `medium` in integrator.rs).
     var medium = vec3<f32>(0.0);
-    let pixel_angle = LINE_FOOTPRINT_PIXELS * 2.0 * length(frame.camera_up) / f32(max(frame.height, 1u));
+    let pixel_angle = line_pixel_angle();
     var crossings = 0u;
     loop {
         var current = next_ray;

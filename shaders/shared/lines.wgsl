@@ -5,10 +5,22 @@
 
 // Width of the prefilter's footprint in pixels (lines.rs LINE_FOOTPRINT_PIXELS).
 const LINE_FOOTPRINT_PIXELS: f32 = 2.0;
+// Width in traced pixels when every sample of the frame sits at one fixed offset (temporal
+// upscaling: frame.pixel_jitter's bit 31; lines.rs LINE_FOOTPRINT_FIXED_OFFSET).
+const LINE_FOOTPRINT_FIXED_OFFSET: f32 = 1.0;
 // Line prisms a camera ray passes through before shading the prism as it is.
 const MAX_LINE_CROSSINGS: u32 = 8u;
 // Rays beyond this distance (metres) are cut there when measuring their distance to a line.
 const LINE_FAR: f32 = 1.0e4;
+
+// The footprint's angle across at the image's centre (radians; lines.rs pixel_angle).
+fn line_pixel_angle() -> f32 {
+    var pixels = LINE_FOOTPRINT_PIXELS;
+    if ((frame.pixel_jitter & 0x80000000u) != 0u) {
+        pixels = LINE_FOOTPRINT_FIXED_OFFSET;
+    }
+    return pixels * 2.0 * length(frame.camera_up) / f32(max(frame.height, 1u));
+}
 
 // Whether `hit` is on a line emitter's triangle.
 fn is_line(hit: Hit) -> bool {

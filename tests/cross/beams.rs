@@ -14,7 +14,7 @@
 
 use candela::assets::{Material, MaterialKind, Mesh, Model, SceneDesc, SceneInstance, SkyDesc};
 use candela::layout::MATERIAL_FLAG_LINE;
-use candela::render::cpu::lines::LINE_FOOTPRINT_PIXELS;
+use candela::render::cpu::lines::{LINE_FOOTPRINT_FIXED_OFFSET, LINE_FOOTPRINT_PIXELS};
 use candela::scene::RenderScene;
 use candela::sim::triggers::{PlannedBeam, beam_model, segment_transform};
 use candela_tests::{Which, camera, render_batches, single_mesh_model};
@@ -44,7 +44,7 @@ fn floor(y: f32, h: f32) -> Mesh {
 
 /// A beam from (−1.5, 0, 0) to (1.5, 0, 0) seen from 4 m, over a mirror floor 1 m below,
 /// under a dim sky.
-fn beam_scene() -> SceneDesc {
+pub fn beam_scene() -> SceneDesc {
     let mirror = single_mesh_model(
         floor(-1.0, 6.0),
         Material {
@@ -198,15 +198,22 @@ fn both_tracers_draw_the_same_beam() {
     assert!(worst < 0.05, "the pictures differ: {worst}");
 }
 
-/// The prefilter's width is the same number in both tracers.
+/// The prefilter's widths (two pixels; one with a fixed per-frame offset, temporal upscaling)
+/// are the same numbers in both tracers.
 #[test]
 fn footprint_constant_agrees() {
     let path = candela_tests::repo().join("shaders/shared/lines.wgsl");
     let text = std::fs::read_to_string(&path).expect("lines.wgsl is readable");
-    let value: f32 = text
-        .lines()
-        .find_map(|l| l.strip_prefix("const LINE_FOOTPRINT_PIXELS: f32 = "))
-        .and_then(|v| v.trim_end_matches(';').parse().ok())
-        .expect("lines.wgsl declares LINE_FOOTPRINT_PIXELS");
-    assert_eq!(value, LINE_FOOTPRINT_PIXELS);
+    for (name, expected) in [
+        ("LINE_FOOTPRINT_PIXELS", LINE_FOOTPRINT_PIXELS),
+        ("LINE_FOOTPRINT_FIXED_OFFSET", LINE_FOOTPRINT_FIXED_OFFSET),
+    ] {
+        let prefix = format!("const {name}: f32 = ");
+        let value: f32 = text
+            .lines()
+            .find_map(|l| l.strip_prefix(prefix.as_str()))
+            .and_then(|v| v.trim_end_matches(';').parse().ok())
+            .unwrap_or_else(|| panic!("lines.wgsl declares {name}"));
+        assert_eq!(value, expected, "{name}");
+    }
 }

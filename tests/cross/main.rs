@@ -9,6 +9,7 @@
 mod accuracy;
 mod analytic;
 mod beams;
+mod beams_upscaled;
 mod bvh;
 mod capture_budget;
 mod clouds;

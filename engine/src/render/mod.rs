@@ -12,7 +12,7 @@ mod device_loss;
 pub mod film;
 mod frame_render;
 pub mod gpu;
-pub(crate) mod jitter;
+pub mod jitter;
 pub mod present;
 pub mod scaling;
 pub(crate) mod thread;

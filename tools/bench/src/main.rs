@@ -64,6 +64,7 @@ mod picture;
 #[cfg(test)]
 mod picture_check;
 mod picture_metrics;
+mod picture_outliers;
 mod picture_plot;
 mod picture_report;
 mod picture_run;

@@ -12,7 +12,9 @@
 //! sRGB picture, beside the reference's own noise; then the temporal stability
 //! (`picture_stability.rs`). Prints Markdown tables and writes `picture.csv` into `--out-dir`
 //! (`picture_report.rs`) and the chart (`picture_plot.rs`). `--quick` runs the same code at a
-//! tiny size in seconds.
+//! tiny size in seconds; `--denoised-only` runs the game's (denoised) rows, `--frames` compares
+//! chosen frames, `--worst` and `--dump-dir` show where an error comes from
+//! (`picture_outliers.rs`).
 //!
 //! Owns: the plan and the measurement loop. Main thread. Must not: draw or format.
 
@@ -69,6 +71,19 @@ pub struct PictureArgs {
     /// (prints only; writes nothing).
     #[arg(long)]
     pub quick: bool,
+    /// Only the denoised configurations (the game's): 160×90, 320×180 and TAAU ×2.
+    #[arg(long)]
+    pub denoised_only: bool,
+    /// Print the N pixels of each compared frame that add most to its relative MSE
+    /// (`picture_outliers.rs`).
+    #[arg(long, default_value_t = 0)]
+    pub worst: usize,
+    /// Compare exactly these frames of each replay (overrides `--every` and `--per-chamber`).
+    #[arg(long, value_delimiter = ',')]
+    pub frames: Vec<u64>,
+    /// Write each compared frame and its reference as zoomed PNGs into this folder.
+    #[arg(long)]
+    pub dump_dir: Option<PathBuf>,
 }
 
 /// One compared frame.
@@ -99,6 +114,7 @@ impl PictureArgs {
     /// The configurations measured: 160×90 and 320×180 (`--quick`: 32×18 and 64×36), denoiser
     /// off then on; then the small size traced and upscaled ×2 to the large one by temporal
     /// upscaling, denoiser on (last: the large plain runs render the references it reuses).
+    /// `--denoised-only` keeps the denoised ones.
     pub fn configs(&self) -> Vec<Config> {
         let sizes = if self.quick {
             [(32, 18), (64, 36)]
@@ -122,6 +138,9 @@ impl PictureArgs {
             denoise: true,
             upscale: 2,
         });
+        if self.denoised_only {
+            configs.retain(|c| c.denoise);
+        }
         configs
     }
 
@@ -184,6 +203,27 @@ pub fn progress_bar(total: u64) -> ProgressBar {
     bar
 }
 
+/// `--worst` and `--dump-dir` for one compared frame (`picture_outliers.rs`).
+fn outliers(
+    args: &PictureArgs,
+    bar: &ProgressBar,
+    name: &str,
+    shown: &[glam::Vec3],
+    reference: &[glam::Vec3],
+    width: u32,
+) -> anyhow::Result<()> {
+    use super::picture_outliers::{describe, dump, worst_pixels};
+    if args.worst > 0 {
+        let text = describe(name, &worst_pixels(shown, reference, width, args.worst));
+        bar.suspend(|| eprint!("{text}"));
+    }
+    if let Some(dir) = &args.dump_dir {
+        dump(dir, &format!("{name}_shown"), shown, width)?;
+        dump(dir, &format!("{name}_reference"), reference, width)?;
+    }
+    Ok(())
+}
+
 /// Runs the whole measurement.
 pub fn measure(
     args: &PictureArgs,
@@ -211,7 +251,15 @@ pub fn measure(
         if args.within > 0 {
             length = length.min(args.within);
         }
-        let frames = sampled_frames(length, args.every, args.per_chamber);
+        let frames = if args.frames.is_empty() {
+            sampled_frames(length, args.every, args.per_chamber)
+        } else {
+            args.frames
+                .iter()
+                .copied()
+                .filter(|&f| f <= length)
+                .collect()
+        };
         plans.push((c, replay, frames));
     }
     let (spp, largest) = reference_plan(&args, &configs);
@@ -264,6 +312,8 @@ pub fn measure(
                 let reference = reference.at_width(config.width);
                 let mean = reference.mean();
                 let noise = reference_noise(&reference);
+                let name = format!("{id}_{}_{f}", config.label());
+                outliers(&args, &bar, &name, shown, &mean, config.width)?;
                 compared.push(Compared {
                     chamber: id.clone(),
                     config,

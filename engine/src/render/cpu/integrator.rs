@@ -22,7 +22,7 @@ use super::cone::Cone;
 use super::direct::{
     NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances, transmittance,
 };
-use super::lines::{LINE_FOOTPRINT_PIXELS, past_lines, seen_lines};
+use super::lines::{past_lines, pixel_angle, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
 use super::sampling::{basis, concentric_disc, to_local, to_world};
@@ -144,8 +144,7 @@ pub fn radiance(
     // transmitted into an absorbing dielectric's front face, cleared when transmitted out of a
     // back face (one level: a medium inside a medium is left for the outer one's air).
     let mut medium = Vec3::ZERO;
-    let pixel_angle =
-        LINE_FOOTPRINT_PIXELS * 2.0 * Vec3::from(u.camera_up).length() / u.height.max(1) as f32;
+    let pixel_angle = pixel_angle(u);
     loop {
         let mut hit = tracer.closest(&ray);
         if camera_chain {

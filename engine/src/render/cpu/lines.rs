@@ -13,13 +13,15 @@
 //! Bias: the line is widened to two pixels where it is thinner, and box-filtered again by the
 //! pixel jitter; its light on other surfaces still comes from the prism (next-event estimation
 //! and rough bounces), unchanged.
-//! Owns: those two functions. Render thread, inside the integrator.
+//! Owns: those two functions and the footprint's width ([`pixel_angle`]: two traced pixels, one
+//! when temporal upscaling fixes the frame's sub-pixel offset). Render thread, inside the
+//! integrator.
 //! Must not: gather the lines (`scene::RenderScene::lines`) or shade surfaces.
 //! Units: metres in render space; radiance linear RGB; angles radians.
 
 use glam::Vec3;
 
-use crate::layout::{GpuLine, INVALID, MATERIAL_FLAG_LINE};
+use crate::layout::{GpuFrameUniforms, GpuLine, INVALID, MATERIAL_FLAG_LINE};
 use crate::scene::RenderScene;
 use crate::trace::{Hit, Ray, TraceScene};
 
@@ -28,6 +30,27 @@ use crate::trace::{Hit, Ray, TraceScene};
 /// pixels wide always holds one whole pixel, whose sample then sees the line: every column
 /// (or row) the line crosses shows it. Twin: `LINE_FOOTPRINT_PIXELS` in `lines.wgsl`.
 pub const LINE_FOOTPRINT_PIXELS: f32 = 2.0;
+
+/// Width of the prefilter's footprint, in traced pixels, when every sample of the frame sits at
+/// one fixed offset in its pixel (temporal upscaling, `render::jitter`): the samples of a
+/// column are then exactly one pixel apart, so a strip one pixel wide always holds one of them
+/// (the line is still continuous in every frame), and one traced pixel is the two displayed
+/// pixels of [`LINE_FOOTPRINT_PIXELS`] at the ×2 upscale's displayed size. With the two-pixel
+/// footprint there, the line was drawn four displayed pixels wide at half its brightness,
+/// pixels up to two displayed pixels off it lit where a displayed-size picture shows none.
+/// Twin: `LINE_FOOTPRINT_FIXED_OFFSET` in `lines.wgsl`.
+pub const LINE_FOOTPRINT_FIXED_OFFSET: f32 = 1.0;
+
+/// The prefilter's footprint angle of frame `u` (radians across the footprint at the image's
+/// centre): [`LINE_FOOTPRINT_PIXELS`] pixels, or [`LINE_FOOTPRINT_FIXED_OFFSET`] when its
+/// samples share one offset (`pixel_jitter` set). Twin: `line_pixel_angle` in `lines.wgsl`.
+pub fn pixel_angle(u: &GpuFrameUniforms) -> f32 {
+    let pixels = match crate::render::jitter::unpack(u.pixel_jitter) {
+        Some(_) => LINE_FOOTPRINT_FIXED_OFFSET,
+        None => LINE_FOOTPRINT_PIXELS,
+    };
+    pixels * 2.0 * Vec3::from(u.camera_up).length() / u.height.max(1) as f32
+}
 
 /// Line prisms a camera ray passes through before giving up (and shading what it hit).
 pub const MAX_LINE_CROSSINGS: u32 = 8;

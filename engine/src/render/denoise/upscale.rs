@@ -12,8 +12,8 @@
 //! guide-based rejection — instance, normal, depth: a disoccluded pixel starts afresh, so
 //! nothing ghosts —, splat, then SVGF's variance and à-trous passes at the high resolution),
 //! [`splat`] and [`filled`]. A history pixel that has no sample yet (the first frames, a
-//! disocclusion) is shown, for the filter only, with the traced pixel that covers it; it keeps
-//! no history until a sample lands in it. Linear radiance; render thread, rows on rayon's pool.
+//! disocclusion, a specular first hit) is shown, for the filter only, with the mean of this
+//! frame's samples on its instance around it; it keeps no history until a sample lands in it. Linear radiance; render thread, rows on rayon's pool.
 //! Must not: trace rays (the guide pass traces the guides at the high resolution) or choose
 //! the jitter (the render thread does, from the frame number).
 
@@ -140,10 +140,17 @@ pub fn splat(history: &mut History, traced: &Traced<'_>, factor: u32, albedo: &[
         });
 }
 
-/// The history as the filter sees it: a pixel without any sample yet takes the nearest of
-/// this frame's samples (among the 3×3 traced pixels around it) that landed on the same
-/// instance, else the traced pixel covering it; demodulated by its own albedo, one frame long.
-/// The other pixels are unchanged. `guides` are the history's.
+/// The history as the filter sees it: a pixel without any sample yet takes the mean of this
+/// frame's samples (among the 3×3 traced pixels around it) that landed on the same instance,
+/// else the traced pixel covering it; demodulated by its own albedo, one frame long. The other
+/// pixels are unchanged. `guides` are the history's.
+///
+/// The mean, not the nearest sample: a pixel whose first hit is specular (a mirror, smooth
+/// glass) keeps no history (`reproject`), so each frame most of its displayed pixels are
+/// filled. Copying one sample there copied a single path's outlier (glass picking the
+/// reflection that sees a light strip: 6–7 where the converged picture has 0–0.1, in Reflect's
+/// chamber 1) into three to eight displayed pixels; the mean of up to nine samples spreads
+/// it as a traced-size picture's pixel would, at a ninth of the strength.
 pub fn filled(history: &History, traced: &Traced<'_>, factor: u32, guides: &Guides) -> History {
     let mut shown = history.clone();
     let (hw, tw, f) = (
@@ -164,22 +171,27 @@ pub fn filled(history: &History, traced: &Traced<'_>, factor: u32, guides: &Guid
             let (px, py) = (i % hw, i / hw);
             let (x, y) = (px / f, py / f);
             let instance = guides.instance.get(i).copied();
-            // The nearest sample on the same instance, else the covering pixel's.
-            let mut best = (usize::MAX, y * tw + x);
+            // The mean of the samples on the same instance, else the covering pixel's.
+            let (mut sum, mut count) = (Vec3::ZERO, 0u32);
             for ty in y.saturating_sub(1)..(y + 2).min(th) {
                 for tx in x.saturating_sub(1)..(x + 2).min(tw) {
                     let (sx, sy) = (tx * f + dx, ty * f + dy);
                     if guides.instance.get(sy * hw + sx).copied() != instance {
                         continue;
                     }
-                    let distance = sx.abs_diff(px) + sy.abs_diff(py);
-                    if distance < best.0 {
-                        best = (distance, ty * tw + tx);
+                    match traced.mean.get(ty * tw + tx) {
+                        Some(&c) if finite3(c) => {
+                            sum += c;
+                            count += 1;
+                        }
+                        _ => {}
                     }
                 }
             }
-            let Some(&c) = traced.mean.get(best.1) else {
-                return;
+            let c = match (count, traced.mean.get(y * tw + x)) {
+                (0, Some(&c)) => c,
+                (0, None) => return,
+                (n, _) => sum / n as f32,
             };
             if !finite3(c) {
                 return;
