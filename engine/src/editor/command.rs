@@ -53,6 +53,9 @@ pub enum Edit {
     List(ListEdit),
     /// Several edits as one (a group of instances moved together); applied in order.
     Batch(Vec<Edit>),
+    /// An edit of the base file of a composed world (`Document::base`: a common material
+    /// edited from a Reflect chamber); saved to that file.
+    Base(Box<Edit>),
 }
 
 /// Why an edit could not be applied; the document is unchanged.
@@ -66,6 +69,8 @@ pub enum EditError {
     },
     #[error("rule {rule:?} does not use the volume {volume:?}")]
     NotWired { rule: String, volume: String },
+    #[error("the level is not composed over a base file")]
+    NoBase,
 }
 
 /// Identifies what an edit sets: edits with equal keys set the same fields of the same items
@@ -191,6 +196,10 @@ impl Edit {
                 }
             }
             Edit::List(edit) => Edit::List(edit.apply(level)?),
+            Edit::Base(edit) => {
+                let base = doc.base.as_deref_mut().ok_or(EditError::NoBase)?;
+                Edit::Base(Box::new(edit.apply(base)?))
+            }
             Edit::Batch(edits) => {
                 let mut inverses = Vec::with_capacity(edits.len());
                 for edit in edits {
@@ -209,6 +218,15 @@ impl Edit {
                 Edit::Batch(inverses)
             }
         })
+    }
+
+    /// What the edit does, for the history panel (names taken from `doc` before it applies;
+    /// an edit of the base file names its items from the base).
+    pub fn describe_in(&self, doc: &Document) -> String {
+        match (self, doc.base.as_deref()) {
+            (Edit::Base(edit), Some(base)) => format!("{} (base file)", edit.describe(&base.level)),
+            _ => self.describe(&doc.level),
+        }
     }
 
     /// What the edit does, for the history panel (names taken from `level` before it applies).
@@ -253,6 +271,7 @@ impl Edit {
                 format!("Rewire {} from {from:?} to {to:?}", rule(*index))
             }
             Edit::List(edit) => edit.describe(level),
+            Edit::Base(_) => "Edit the base file".into(),
             Edit::Batch(edits) => match edits.first() {
                 Some(first) if edits.len() == 1 => first.describe(level),
                 Some(first) => format!("{} (and {} more)", first.describe(level), edits.len() - 1),
@@ -272,6 +291,11 @@ impl Edit {
             Edit::Volume { index, field } => one("volume", index, field.name()),
             Edit::RuleCondition { index, .. } => one("rule", index, "condition"),
             Edit::List(edit) => edit.merge_part().map(|part| MergeKey(vec![part])),
+            Edit::Base(edit) => {
+                let mut keys = vec![("base", 0, "")];
+                keys.extend(edit.merge_key()?.0);
+                Some(MergeKey(keys))
+            }
             Edit::Batch(edits) if !edits.is_empty() => {
                 let mut keys = Vec::new();
                 for edit in edits {

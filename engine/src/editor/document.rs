@@ -1,5 +1,7 @@
 //! [`Document`]: what the editor edits — a parsed [`Level`] and the comments of the file it
-//! came from (see `comments`), opened from a level file's text.
+//! came from (see `comments`), opened from a level file's text; for a part of a composed world
+//! (a Reflect chamber), also the base file it is composed over (`common.ron`), edited with it
+//! as one world ([`Document::base`], `Edit::Base`) and saved to its own file.
 //!
 //! Main thread. Must not: write files (`save`, `recovery`) or check references (`check`).
 
@@ -15,6 +17,9 @@ use super::comments::Comments;
 pub struct Document {
     pub level: Level,
     pub comments: Comments,
+    /// The base file of a composed world, edited with this part (`Edit::Base`); `None` for a
+    /// level of one file. Saves write it to its own file (`EditorState::base_path`).
+    pub base: Option<Box<Document>>,
 }
 
 /// A level file that could not be opened.
@@ -31,6 +36,7 @@ impl Document {
         Self {
             level,
             comments: Comments::default(),
+            base: None,
         }
     }
 
@@ -39,6 +45,7 @@ impl Document {
         Ok(Self {
             level: Level::parse(path, text)?,
             comments: scan(text),
+            base: None,
         })
     }
 

@@ -74,7 +74,7 @@ impl History {
         if matches!(&edit, Edit::Batch(edits) if edits.is_empty()) {
             return Ok(()); // nothing selected: no command
         }
-        let description = edit.describe(&doc.level);
+        let description = edit.describe_in(doc);
         let undo = edit.apply(doc)?;
         self.undone.clear();
         let id = self.fresh_id();

@@ -26,6 +26,7 @@ mod recovery;
 mod ron_tree;
 mod save;
 mod save_diff;
+mod save_world;
 mod selection;
 mod snap;
 mod splice;

@@ -19,6 +19,7 @@ use super::history::History;
 use super::place::Palette;
 use super::recovery::write_recovery;
 use super::save::{SaveError, SaveReport, save_document, write_document};
+use super::save_world::save_changed;
 use super::selection::Selection;
 use super::snap::Snap;
 
@@ -33,10 +34,12 @@ pub struct EditorState {
     pub snap: Snap,
     /// The palette's model files and its current piece (`place`).
     pub palette: Palette,
-    /// The base file of a composed world (Reflect's `common.ron`), read-only: its models and
-    /// materials are offered to the edited file, which does not save them. `None`: the file
-    /// is a level on its own.
-    pub base: Option<Level>,
+    /// The file of the document's base (`Document::base`, Reflect's `common.ron`): a save
+    /// writes the base's changes there. `None`: the file is a level on its own.
+    pub base_path: Option<PathBuf>,
+    /// The selection's world box (metres, min and max corners, world axes) from the world's
+    /// models, which the runner fills each pass for the inspector (`None`: unknown).
+    pub bounds: Option<(Vec3, Vec3)>,
     /// Problems that refused the last save (empty after a save succeeds).
     pub problems: Vec<Problem>,
     /// `History::state_id` when the document last matched its file.
@@ -58,7 +61,8 @@ impl EditorState {
             selection: Selection::default(),
             snap: Snap::default(),
             palette: Palette::default(),
-            base: None,
+            base_path: None,
+            bounds: None,
             problems: Vec::new(),
             saved_state: 0,
         }
@@ -71,6 +75,19 @@ impl EditorState {
             saved_state: u64::MAX,
             ..Self::new(path, doc)
         }
+    }
+
+    /// Edits `base`, read from `path`, with the document as one world: its models and
+    /// materials are offered to the part, its materials are edited through `Edit::Base`, and a
+    /// save writes its changes to `path` ([`EditorState::save_world`]).
+    pub fn set_base(&mut self, path: &Path, base: Document) {
+        self.base_path = Some(path.to_path_buf());
+        self.doc.base = Some(Box::new(base));
+    }
+
+    /// The base level of a composed world, as edited.
+    pub fn base(&self) -> Option<&Level> {
+        self.doc.base.as_deref().map(|b| &b.level)
     }
 
     /// Applies `edit` through the history; the selection follows inserted and removed
@@ -197,6 +214,20 @@ impl EditorState {
         self.problems.clear();
         self.saved_state = self.history.state_id();
         Ok(report)
+    }
+
+    /// Saves a part of a composed world and its base (`save_world`), checked by its caller as
+    /// [`EditorState::save_checked`] is: each file whose level changed is written (the part
+    /// also when nothing changed, as a save of one file is). Returns what was written.
+    pub fn save_world(&mut self, problems: Vec<Problem>) -> Result<Vec<SaveReport>, SaveError> {
+        if !problems.is_empty() {
+            self.problems = problems.clone();
+            return Err(SaveError::Problems(problems));
+        }
+        let reports = save_changed(&self.path, &self.doc, self.base_path.as_deref())?;
+        self.problems.clear();
+        self.saved_state = self.history.state_id();
+        Ok(reports)
     }
 
     /// Writes the recovery file (after each command; see `recovery` and `app::edit`).

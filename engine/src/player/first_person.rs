@@ -182,6 +182,38 @@ impl FirstPersonPlayer {
         Self::spawn(world, eye - Vec3::Y * config.eye_height, yaw, config)
     }
 
+    /// Moves the player to stand with its feet at `feet` (metres), looking along `yaw` and
+    /// `pitch` (radians, as the fields): the body teleported (`PhysicsWorld::set_pose`) and
+    /// the eye placed at once. Anything carried is dropped. ("Play from here": the editor's
+    /// camera becomes the player's view.)
+    pub fn stand_at(
+        &mut self,
+        world: &mut World,
+        physics: &mut PhysicsWorld,
+        feet: Vec3,
+        yaw: f32,
+        pitch: f32,
+    ) {
+        if let Ok(mut c) = world.get::<&mut Carrier>(self.camera)
+            && c.held.is_some()
+        {
+            c.request = Some(CarryRequest::Drop);
+        }
+        let centre = feet + Vec3::Y * (self.config.height * 0.5 + self.config.controller.skin);
+        physics.set_pose(self.body, centre, Quat::IDENTITY);
+        if let Ok(mut t) = world.get::<&mut Transform>(self.body) {
+            t.translation = centre;
+        }
+        self.yaw = yaw;
+        self.pitch = pitch.clamp(-self.config.max_pitch, self.config.max_pitch);
+        let eye = Transform {
+            translation: centre + self.eye_offset(),
+            rotation: self.rotation(),
+            scale: Vec3::ONE,
+        };
+        let _ = world.insert_one(self.camera, eye);
+    }
+
     /// The eye's rotation (yaw, then pitch; no roll).
     pub fn rotation(&self) -> Quat {
         Quat::from_euler(EulerRot::YXZ, self.yaw, self.pitch, 0.0)

@@ -10,7 +10,7 @@ use crate::editor_common;
 
 use candela::assets::Level;
 use candela::editor::ui::PanelOutput;
-use candela::editor::{EditorState, PaletteItem, SelectMode};
+use candela::editor::{Document, EditorState, PaletteItem, SelectMode};
 use editor_common::input::Panels;
 use editor_common::platform_with_laser;
 
@@ -77,7 +77,7 @@ fn a_composed_worlds_base_offers_its_models_and_materials() -> anyhow::Result<()
     )?;
     let mut state = EditorState::new(std::path::Path::new("x.ron"), platform_with_laser()?);
     state.selection.click(Some(0), SelectMode::Replace);
-    state.base = Some(base);
+    state.set_base(std::path::Path::new("common.ron"), Document::new(base));
     // A chamber defines few materials of its own (a long list scrolls in the popup).
     state.doc.level.materials.truncate(2);
     let mut ui = Panels::new(state);
@@ -98,7 +98,7 @@ fn a_composed_worlds_base_offers_its_models_and_materials() -> anyhow::Result<()
     ui.pass(Vec::new());
     assert!(
         ui.painted
-            .has_prefix("Material \"wall_white\" (Diffuse) is the base file's")
+            .has_prefix("Material \"wall_white\" (Diffuse, base file)")
     );
     Ok(())
 }

@@ -1,7 +1,7 @@
 //! What the editor draws besides the `editor::ui` panels: the toolbar (tool, space, snapping,
 //! save, the recovery offer, messages) and, under every window, the selection highlight (each
 //! selected instance's bounds projected as a wire box, the primary one brighter), the box
-//! select band and the gizmo. All of it is egui shapes over the picture: the path tracer never sees it.
+//! select band, the gizmo and, while a move drags, the grid of its plane (`align.rs`). All of it is egui shapes over the picture: the path tracer never sees it.
 //!
 //! Main thread, inside the editor's egui pass. Must not: touch the world or the document
 //! except through the toolbar's snapping settings and the mode's operations.
@@ -139,6 +139,7 @@ impl EditMode {
             egui::Order::Background,
             egui::Id::unique("editor_overlay"),
         ));
+        self.draw_drag_grid(&painter, &desc, camera.forward(), size, rect.min);
         let level = &self.state.doc.level;
         let primary = self.state.selection.primary();
         let at = |v: Vec2| egui::pos2(rect.min.x + v.x, rect.min.y + v.y);

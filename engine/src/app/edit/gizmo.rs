@@ -97,6 +97,13 @@ impl Gizmo {
         self.drag.as_ref().map(|d| d.axis)
     }
 
+    /// A translate drag's axis (world, unit) and the dragged item's centre at its start
+    /// (metres); `None` for no drag or another tool.
+    pub fn drag_line(&self) -> Option<(Vec3, Vec3)> {
+        let drag = self.drag.as_ref()?;
+        (self.tool == Tool::Translate).then_some((drag.dir, drag.centre))
+    }
+
     /// The handles for `primary` (the primary selected instance), seen by `camera` in a view
     /// of `size` points.
     pub fn handles(

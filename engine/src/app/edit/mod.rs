@@ -9,25 +9,30 @@
 //! (the level it hands over) live in the runner (`app/runner/edit_target.rs`: the first-person
 //! game, a layer below, implements them) and are re-exported here.
 //!
-//! One file per job: `world` (the world in step),
+//! One file per job: `world` (the world in step), `align` (measure, face snapping, the drag
+//! grid),
 //! `camera`, `gizmo`, `box_select` (the rubber band), `mode` (entering, leaving, one pass),
+//! `play` (entering and leaving with the game's hooks: play from here),
 //! `place` (the palette's pieces put where the view's ray hits), `recover` (the recovery
 //! file), `view_input` (pointer and keys
 //! over the picture), `draw` (toolbar, highlight). Main thread. Must not: render, or run the
 //! game's hooks (the runner holds the game while editing); may use only `input`, `persist`,
 //! `replay`, `runner`, `script` and `play` of `app` (the layers before it).
 
+mod align;
 mod box_select;
 mod camera;
 mod draw;
 mod gizmo;
 mod mode;
 mod place;
+mod play;
 mod recover;
 mod view_input;
 mod world;
 
 pub use crate::app::runner::{BuildWorld, CheckWorld, EditHooks, EditTarget};
+pub use align::{FACE_SNAP_METRES, face_offset};
 pub use box_select::{BoxDrag, MIN_BOX_POINTS, instances_in};
 pub use camera::{EditorCamera, LOOK_RADIANS_PER_POINT, project};
 pub use draw::{OTHER_COLOUR, PRIMARY_COLOUR};

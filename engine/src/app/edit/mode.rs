@@ -21,7 +21,8 @@ use crate::app::runner::Engine;
 use crate::app::runner::SpawnedLevel;
 use crate::ecs::{CameraRig, Transform};
 use crate::editor::{
-    DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, Touch, find_recovery,
+    Document, DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, SaveReport, Touch,
+    find_recovery,
 };
 
 /// Messages kept for the toolbar.
@@ -69,7 +70,9 @@ impl EditMode {
         let mut state = EditorState::open(&target.path)?;
         let folder = super::place::palette_folder(&target.path);
         state.palette.files = crate::editor::model_files(target.root.path(), &folder);
-        state.base = target.base.as_deref().cloned();
+        if let Some(base_path) = &target.base_path {
+            state.set_base(base_path, Document::open(base_path)?);
+        }
         let recovery = find_recovery(&target.path);
         Ok(Self {
             state,
@@ -87,6 +90,12 @@ impl EditMode {
             box_drag: None,
             recovery_files: true,
         })
+    }
+
+    /// The toolbar's last messages (saves, refusals, a document that does not load), oldest
+    /// first.
+    pub fn messages(&self) -> &[String] {
+        &self.messages
     }
 
     /// The rubber band of a box select being dragged (points from the view's corner).
@@ -122,7 +131,9 @@ impl EditMode {
             return frame;
         }
         self.active = true;
-        match self.world.respawn(engine, &self.state.doc.level) {
+        let doc = &self.state.doc;
+        let base = doc.base.as_deref().map(|b| &b.level);
+        match self.world.respawn_in(engine, &doc.level, base) {
             Ok(()) => frame.respawned = true,
             Err(e) => self.say(format!("the level does not load: {e}")),
         }
@@ -196,6 +207,7 @@ impl EditMode {
         if !self.active {
             return frame;
         }
+        self.state.bounds = self.selection_bounds();
         let out = crate::editor::ui::panels(ctx, &mut self.state);
         for e in &out.errors {
             self.say(e.clone());
@@ -271,7 +283,9 @@ impl EditMode {
         } else {
             Touch::Transforms(moved)
         };
-        match self.world.follow(engine, &self.state.doc.level, &touch) {
+        let doc = &self.state.doc;
+        let base = doc.base.as_deref().map(|b| &b.level);
+        match self.world.follow_in(engine, &doc.level, base, &touch) {
             Ok(Followed::Respawned) => true,
             Ok(Followed::Moved(_)) => false,
             Err(e) => {
@@ -281,27 +295,22 @@ impl EditMode {
         }
     }
 
-    /// Saves through the target's asset root; says what happened.
+    /// Saves through the target's asset root (a part of a composed world with its base: each
+    /// changed file to itself); says which files were written.
     pub fn save(&mut self) -> bool {
         let root = self.world.target.root.clone();
         let saved = match self.world.target.check.clone() {
             Some(check) => {
-                let problems = check(&self.state.doc.level);
-                self.state.save_checked(problems)
+                let doc = &self.state.doc;
+                let problems = check(&doc.level, doc.base.as_deref().map(|b| &b.level));
+                self.state.save_world(problems)
             }
-            None => self.state.save(Some(&root)),
+            None => self.state.save(Some(&root)).map(|report| vec![report]),
         };
         match saved {
-            Ok(report) => {
-                let how = match &report.rewritten {
-                    None => "only the edited items changed".to_string(),
-                    Some(why) => format!("the whole file rewritten: {why}"),
-                };
-                self.say(format!(
-                    "saved {} ({} bytes, {how})",
-                    report.path.display(),
-                    report.bytes
-                ));
+            Ok(reports) => {
+                let files: Vec<String> = reports.iter().map(written).collect();
+                self.say(format!("saved {}", files.join("; ")));
                 true
             }
             Err(e) => {
@@ -330,6 +339,15 @@ impl EditMode {
         }
         (lo.x <= hi.x).then(|| ((lo + hi) * 0.5, (hi - lo).length() * 0.5))
     }
+}
+
+/// What the status line says of one file a save wrote.
+fn written(report: &SaveReport) -> String {
+    let how = match &report.rewritten {
+        None => "only the edited items changed".to_string(),
+        Some(why) => format!("the whole file rewritten: {why}"),
+    };
+    format!("{} ({} bytes, {how})", report.path.display(), report.bytes)
 }
 
 /// A fly speed for the level: its size crossed in about ten seconds.

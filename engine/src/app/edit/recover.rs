@@ -71,9 +71,14 @@ impl EditMode {
         let path = self.state.path.clone();
         self.recovery = None;
         match restore_recovery(&path) {
-            Ok(doc) => {
+            Ok(mut doc) => {
                 let selection = std::mem::take(&mut self.state.selection);
+                let palette = std::mem::take(&mut self.state.palette);
+                let base_path = self.state.base_path.take();
+                doc.base = self.state.doc.base.take();
                 self.state = EditorState::restored(&path, doc);
+                self.state.palette = palette;
+                self.state.base_path = base_path;
                 self.recovered_state = self.state.history.state_id();
                 self.state.selection = selection;
                 self.state

@@ -3,7 +3,8 @@
 //! - Middle button, or Alt with the left: orbit about the pivot. Wheel: dolly.
 //! - Left click: pick the instance under the pointer (`editor::pick`, a ray query on the last
 //!   commit) — Shift adds, Ctrl toggles, the sky clears.
-//! - Left drag on a gizmo handle: move, rotate or scale the selection (one command); elsewhere:
+//! - Left drag on a gizmo handle: move, rotate or scale the selection (one command; a move
+//!   along a world axis snaps to other instances' faces, `align.rs`); elsewhere:
 //!   box select (`box_select.rs`), with the same Shift and Ctrl.
 //! - Keys, unless a text field has the keyboard or the right button flies: W, E, R pick the
 //!   tool, X switches world/local, F frames the selection, P places the palette's current
@@ -131,6 +132,10 @@ impl EditMode {
             } else if let Some(p) = pointer
                 && let Some(edit) = self.gizmo.drag_edit(p, &ray_at(p), &self.state.snap)
             {
+                let edit = match self.gizmo.drag_line() {
+                    Some((dir, _)) => self.align_to_faces(edit, dir),
+                    None => edit,
+                };
                 match self.state.apply(edit) {
                     Ok(touch) => touched.push(touch),
                     Err(e) => self.say(e.to_string()),

@@ -22,7 +22,7 @@ use hecs::Entity;
 use crate::app::runner::EditTarget;
 use crate::app::runner::Engine;
 use crate::app::runner::SpawnedLevel;
-use crate::assets::{AssetError, Level, SceneDesc};
+use crate::assets::{AssetError, Level, SceneDesc, TransformDesc};
 use crate::ecs::{Restyled, Static, Transform};
 use crate::editor::Touch;
 use crate::level::PlayableLevel;
@@ -47,8 +47,9 @@ pub struct EditWorld {
     spawned: SpawnedLevel,
     /// Model-space bounds of each world instance's model, in world instance order.
     bounds: Vec<Option<Bounds>>,
-    /// The model sections the registered models were built from.
-    sections: Option<ModelSections>,
+    /// The model sections the registered models were built from (the edited file's, the
+    /// base's).
+    sections: Option<(ModelSections, Option<ModelSections>)>,
     /// The light groups the spawned world's level switches off at its start (`lights_off`).
     lights_off: Vec<u32>,
 }
@@ -104,8 +105,13 @@ impl EditWorld {
 
     /// World-space corners of document instance `index`'s model bounds, if known.
     pub fn world_box(&self, level: &Level, index: usize) -> Option<[Vec3; 8]> {
+        self.box_at(index, &level.instances.get(index)?.transform)
+    }
+
+    /// [`EditWorld::world_box`] of instance `index` were it at `transform`.
+    pub fn box_at(&self, index: usize, transform: &TransformDesc) -> Option<[Vec3; 8]> {
         let (lo, hi) = (*self.bounds.get(self.target.first_instance + index)?)?;
-        let m = level.instances.get(index)?.transform.world_from_model();
+        let m = transform.world_from_model();
         let mut out = [Vec3::ZERO; 8];
         for (k, corner) in out.iter_mut().enumerate() {
             let p = Vec3::new(
@@ -126,12 +132,24 @@ impl EditWorld {
         level: &Level,
         touch: &Touch,
     ) -> Result<Followed, AssetError> {
+        self.follow_in(engine, level, None, touch)
+    }
+
+    /// [`EditWorld::follow`] in a composed world whose base file is edited too (`base`, as
+    /// edited; `None`: as the target read it).
+    pub fn follow_in(
+        &mut self,
+        engine: &mut Engine,
+        level: &Level,
+        base: Option<&Level>,
+        touch: &Touch,
+    ) -> Result<Followed, AssetError> {
         match touch {
             Touch::Transforms(indices) => match self.move_in_place(engine, level, indices) {
                 Some(moved) => Ok(Followed::Moved(moved)),
-                None => self.respawn(engine, level).map(|()| Followed::Respawned),
+                None => (self.respawn_in(engine, level, base)).map(|()| Followed::Respawned),
             },
-            Touch::Level => self.respawn(engine, level).map(|()| Followed::Respawned),
+            Touch::Level => (self.respawn_in(engine, level, base)).map(|()| Followed::Respawned),
         }
     }
 
@@ -174,8 +192,19 @@ impl EditWorld {
     /// Builds the world from `level` and spawns it in place of the old one (also what the
     /// editor does when it opens, so that what was played is discarded).
     pub fn respawn(&mut self, engine: &mut Engine, level: &Level) -> Result<(), AssetError> {
-        let playable = (self.target.build)(level)?;
-        let sections = ModelSections::of(level);
+        self.respawn_in(engine, level, None)
+    }
+
+    /// [`EditWorld::respawn`] in a composed world whose base file is edited too (`base`, as
+    /// edited; `None`: as the target read it).
+    pub fn respawn_in(
+        &mut self,
+        engine: &mut Engine,
+        level: &Level,
+        base: Option<&Level>,
+    ) -> Result<(), AssetError> {
+        let playable = (self.target.build)(level, base)?;
+        let sections = (ModelSections::of(level), base.map(ModelSections::of));
         let reuse = (self.sections.as_ref() == Some(&sections)
             && self.spawned.models.len() == playable.scene.models.len())
         .then(|| self.spawned.models.clone());

@@ -317,6 +317,10 @@ impl EditHooks for FirstPersonGame {
     fn level_respawned(&mut self, _engine: &mut Engine, spawned: &SpawnedLevel) {
         self.spawned = spawned.clone();
     }
+
+    fn play_from(&mut self, engine: &mut Engine, eye: glam::Vec3, forward: glam::Vec3) {
+        self.play_from_view(engine, eye, forward);
+    }
 }
 
 impl ShellHooks for FirstPersonGame {

@@ -5,12 +5,13 @@
 //! fly camera ([`FlyCamera`], [`fly_camera_system`]) and the bots' steering (`steer`).
 //!
 //! One file per job: `player_input`, `steer`, `fly_camera`, `first_person_game`,
-//! `third_person_game`. Main thread
+//! `third_person_game`, `play_from` (the player put where the editor's camera was). Main thread
 //! (the fly camera per frame, the rest inside fixed steps). Must not: read devices (they read
 //! action frames and the input state), or know the shell's screens, the editor or the window.
 
 mod first_person_game;
 mod fly_camera;
+mod play_from;
 mod player_input;
 pub mod steer;
 mod third_person_game;

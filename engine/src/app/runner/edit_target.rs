@@ -16,13 +16,14 @@ use crate::assets::{AssetResult, AssetRoot, Level};
 use crate::editor::{ItemRef, Problem, check_level};
 use crate::level::{PlayableLevel, compose_levels, playable_from_level};
 
-/// Builds the playable world from the edited level file (a single file: the file itself; a
-/// composed world: the other parts merged with it).
-pub type BuildWorld = Rc<dyn Fn(&Level) -> AssetResult<PlayableLevel>>;
+/// Builds the playable world from the edited level file and, in a composed world, the edited
+/// base file (a single file: the file itself; a composed world: the other parts merged with
+/// it over the base; `None` for the base: the base as read when the target was made).
+pub type BuildWorld = Rc<dyn Fn(&Level, Option<&Level>) -> AssetResult<PlayableLevel>>;
 
-/// The problems that stop a save of the edited file, when the file alone is not a level (a
-/// part of a composed world checks merged with the others).
-pub type CheckWorld = Rc<dyn Fn(&Level) -> Vec<Problem>>;
+/// The problems that stop a save of the edited file (and base), when the file alone is not a
+/// level (a part of a composed world checks merged with the others over the base).
+pub type CheckWorld = Rc<dyn Fn(&Level, Option<&Level>) -> Vec<Problem>>;
 
 /// What the editor (F1, `app::edit`) asks of a game that offers a level to edit.
 pub trait EditHooks {
@@ -33,6 +34,11 @@ pub trait EditHooks {
     /// The level was spawned again from the edited file (opening the editor, a structural
     /// edit); `spawned` replaces the game's handles of the level's entities.
     fn level_respawned(&mut self, _engine: &mut Engine, _spawned: &SpawnedLevel) {}
+
+    /// "Play from here": the editor was left with its camera's eye at `eye` (world metres)
+    /// looking along `forward`; the game starts there (a first-person game stands its player
+    /// on the floor below `eye`). By default the game plays on from where it was.
+    fn play_from(&mut self, _engine: &mut Engine, _eye: glam::Vec3, _forward: glam::Vec3) {}
 }
 
 /// The level the editor edits in a running game.
@@ -50,10 +56,10 @@ pub struct EditTarget {
     pub build: BuildWorld,
     /// How a save is checked: `None`, the file on its own (`editor::save_document`).
     pub check: Option<CheckWorld>,
-    /// The base file of a composed world (Reflect's `common.ron`), as read when the target
-    /// was made: the edited part may use its models and materials (the editor offers them,
-    /// read-only). `None` for a level of one file.
-    pub base: Option<Rc<Level>>,
+    /// The base file of a composed world (Reflect's `common.ron`): the editor opens it with
+    /// the part and edits them as one world (its models and materials offered and its
+    /// materials edited; a save writes its changes to it). `None` for a level of one file.
+    pub base_path: Option<PathBuf>,
 }
 
 impl std::fmt::Debug for EditTarget {
@@ -75,11 +81,11 @@ impl EditTarget {
             path: path.to_path_buf(),
             root,
             first_instance: 0,
-            build: Rc::new(move |level: &Level| {
+            build: Rc::new(move |level: &Level, _: Option<&Level>| {
                 playable_from_level(&level_path, level, &build_root)
             }),
             check: None,
-            base: None,
+            base_path: None,
         }
     }
 
@@ -109,15 +115,14 @@ impl EditTarget {
                 .iter()
                 .map(|(_, l)| l.instances.len())
                 .sum::<usize>();
-        let base_level = Rc::new(base.clone());
         let merged = Rc::new((base_path.to_path_buf(), base, parts));
         let with_part = {
             let merged = Rc::clone(&merged);
-            move |level: &Level| {
+            move |level: &Level, edited_base: Option<&Level>| {
                 let (_, base, parts) = &*merged;
                 let mut parts = parts.clone();
                 parts[index].1 = level.clone();
-                compose_levels(base, &parts)
+                compose_levels(edited_base.unwrap_or(base), &parts)
             }
         };
         let with_part = Rc::new(with_part);
@@ -125,15 +130,15 @@ impl EditTarget {
         let build = {
             let with_part = Rc::clone(&with_part);
             let base_path = base_path.to_path_buf();
-            Rc::new(move |level: &Level| {
-                playable_from_level(&base_path, &with_part(level)?, &build_root)
+            Rc::new(move |level: &Level, base: Option<&Level>| {
+                playable_from_level(&base_path, &with_part(level, base)?, &build_root)
             })
         };
         let check_root = root.clone();
         let check_path = path.clone();
-        let check = Rc::new(move |level: &Level| {
+        let check = Rc::new(move |level: &Level, base: Option<&Level>| {
             let n = level.instances.len();
-            match with_part(level) {
+            match with_part(level, base) {
                 Err(e) => vec![Problem::of_level(e.to_string())],
                 Ok(world) => check_level(&check_path, &world, Some(&check_root))
                     .into_iter()
@@ -157,7 +162,7 @@ impl EditTarget {
             first_instance,
             build,
             check: Some(check),
-            base: Some(base_level),
+            base_path: Some(base_path.to_path_buf()),
         })
     }
 }

@@ -2,7 +2,8 @@
 //! screen (F1 under the shell) or, without the shell (`view`), F1 asks. The editor is opened
 //! the first time from the game's `EditHooks::edit_target` (`Game::editor`); a game without one gets the shell's placeholder.
 //! Turning it on frees the mouse and, without the shell, holds the engine (`set_paused`);
-//! whenever the editor spawns the level again the game hears it (`EditHooks::level_respawned`).
+//! whenever the editor spawns the level again the game hears it (`EditHooks::level_respawned`);
+//! leaving it plays from the editor camera (`EditMode::play_from_here`, `EditHooks::play_from`).
 //!
 //! Main thread. Must not: draw (the editor draws in the overlay pass, `app.rs`).
 
@@ -48,12 +49,7 @@ impl WindowApp<'_> {
             match self.edit.as_mut() {
                 Some(edit) => {
                     running.set_captured(false);
-                    let frame = edit.enter(&mut running.engine);
-                    if frame.respawned
-                        && let Some(hooks) = self.game.editor()
-                    {
-                        hooks.level_respawned(&mut running.engine, edit.world.spawned());
-                    }
+                    edit.enter_with(&mut running.engine, self.game.editor());
                 }
                 None => self.editing = false,
             }
@@ -61,7 +57,7 @@ impl WindowApp<'_> {
             && active
             && let Some(edit) = self.edit.as_mut()
         {
-            edit.leave(&mut running.engine);
+            edit.play_from_here(&mut running.engine, self.game.editor());
         }
         if let Some(shell) = self.shell.as_mut() {
             let cues = shell.take_editor_cues();

@@ -1,11 +1,13 @@
 //! The inspector: headed by the primary selected instance's name (its model and index only
-//! when it has no name, `outliner::instance_label`), typed fields for it — transform
+//! when it has no name, `outliner::instance_label`) and the selection's bounds in metres
+//! (`EditorState::bounds`, world axes, from the runner), typed fields for it — transform
 //! (translation in metres, rotation in degrees, scale, snapped when snapping is on), model,
 //! material override, dynamic flag, light group, body (`bodies`) — and the fields of its
 //! override material (`materials`). When the outliner or the problems panel put another item
 //! in focus (`Selection::item`: a material, volume, laser, clip or rule), the inspector shows
 //! that item's widgets instead. In a composed world the base file's models and materials are
-//! offered too (`EditorState::base`); a base material's fields are the base file's to edit.
+//! offered too (`EditorState::base`); a base material's fields edit the base file's material
+//! (`Edit::Base`, saved to the base file).
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
@@ -15,6 +17,7 @@ use crate::level::ItemRef;
 use super::super::command::{Edit, InstanceField};
 use super::super::place::model_names;
 use super::super::state::EditorState;
+use super::materials::Owner;
 use super::outliner::instance_label;
 use super::{Pending, bodies, clips, gameplay, materials};
 
@@ -45,6 +48,13 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
         return;
     };
     ui.label(egui::RichText::new(instance_label(index, entry)).strong());
+    if let Some((lo, hi)) = state.bounds {
+        let d = hi - lo;
+        ui.label(format!(
+            "bounds (m): {:.2} × {:.2} × {:.2}  (x {:.2}…{:.2}, y {:.2}…{:.2}, z {:.2}…{:.2})",
+            d.x, d.y, d.z, lo.x, hi.x, lo.y, hi.y, lo.z, hi.z
+        ));
+    }
     let mut t: TransformDesc = entry.transform;
     let moved = vec3(ui, "translation (m)", &mut t.translation, 0.01)
         | vec3(ui, "rotation (°)", &mut t.rotation_deg, 0.5)
@@ -62,15 +72,13 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
         .and_then(|name| level.materials.iter().position(|m| m.name == name))
     {
         ui.separator();
-        materials::fields(ui, m, &level.materials[m], p);
+        materials::fields(ui, Owner::Level, m, &level.materials[m], p);
     } else if let Some(name) = entry.material.as_deref()
-        && let Some(m) = (state.base.iter().flat_map(|b| &b.materials)).find(|m| m.name == name)
+        && let Some(base) = state.base()
+        && let Some(m) = base.materials.iter().position(|m| m.name == name)
     {
         ui.separator();
-        ui.label(format!(
-            "Material {name:?} ({:?}) is the base file's: edit it there.",
-            m.kind
-        ));
+        materials::fields(ui, Owner::Base, m, &base.materials[m], p);
     }
 }
 
@@ -79,7 +87,7 @@ fn focused(ui: &mut egui::Ui, state: &EditorState, item: ItemRef, p: &mut Pendin
     let level = &state.doc.level;
     match item {
         ItemRef::Material(i) => match level.materials.get(i) {
-            Some(m) => materials::fields(ui, i, m, p),
+            Some(m) => materials::fields(ui, Owner::Level, i, m, p),
             None => return false,
         },
         ItemRef::Volume(i) => gameplay::volume(ui, state, i, p),
@@ -101,7 +109,7 @@ fn fields(
 ) {
     let level = &state.doc.level;
     let set = |p: &mut Pending, field| p.edits.push(Edit::Instance { index, field });
-    let base = state.base.as_ref();
+    let base = state.base();
     let mut models = model_names(level);
     models.extend(base.iter().flat_map(|b| model_names(b)));
     egui::ComboBox::from_label("model")

@@ -20,18 +20,20 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     let needle = super::search_field(ui, SEARCH_ID, "search pieces");
     let level = &state.doc.level;
     let listed: Vec<&str> = (level.models.iter())
-        .chain(state.base.iter().flat_map(|b| b.models.iter()))
+        .chain(state.base().into_iter().flat_map(|b| b.models.iter()))
         .map(|m| m.path.as_str())
         .collect();
     let own = model_names(level)
         .into_iter()
         .map(|name| (name.to_string(), PaletteItem::Model(name.to_string())));
-    let base = (state.base.iter()).flat_map(model_names).map(|name| {
-        (
-            format!("{name} (base)"),
-            PaletteItem::Model(name.to_string()),
-        )
-    });
+    let base = (state.base().into_iter())
+        .flat_map(model_names)
+        .map(|name| {
+            (
+                format!("{name} (base)"),
+                PaletteItem::Model(name.to_string()),
+            )
+        });
     let own = own.chain(base);
     let files = (state.palette.files.iter())
         .filter(|f| !listed.contains(&f.as_str()))

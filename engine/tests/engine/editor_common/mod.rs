@@ -66,6 +66,31 @@ pub fn committed_levels() -> Vec<PathBuf> {
     out
 }
 
+/// Copies the folder `from` to `to`, recursively.
+pub fn copy_dir(from: &Path, to: &Path) -> std::io::Result<()> {
+    std::fs::create_dir_all(to)?;
+    for entry in std::fs::read_dir(from)? {
+        let entry = entry?;
+        let target = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &target)?;
+        } else {
+            std::fs::copy(entry.path(), &target)?;
+        }
+    }
+    Ok(())
+}
+
+/// Reflect's world under `root` (a copy of `assets/`): the base file and the chambers' files,
+/// in the order `assets/reflect/reflect.ron` lists them.
+pub fn reflect_files(root: &Path) -> (PathBuf, Vec<PathBuf>) {
+    let levels = root.join("reflect/levels");
+    let parts = (1..=5)
+        .map(|k| levels.join(format!("chamber_{k}.ron")))
+        .collect();
+    (levels.join("common.ron"), parts)
+}
+
 /// SplitMix64: the same sequence for the same seed.
 pub struct Rng(u64);
 

@@ -8,12 +8,12 @@ use candela::app::edit::{EditMode, EditTarget, Handles, project};
 use candela::app::{Engine, Environment, Step};
 use candela::assets::AssetRoot;
 use candela::editor::{pick, pixel_ray};
-use candela::level::load_level;
+use candela::level::{load_composed, load_level};
 use candela::render::RenderConfig;
 use glam::{Vec2, Vec3};
 
-use super::Scratch;
 use super::input::Painted;
+use super::{Scratch, assets, copy_dir, reflect_files};
 
 pub const LEVEL: &str = r#"Level(
     materials: [(name: "grey", kind: Diffuse)],
@@ -66,6 +66,35 @@ pub fn start_with(
         mode.enter(&mut engine).respawned,
         "entering spawns the document"
     );
+    let mut run = Run {
+        _scratch: scratch,
+        engine,
+        mode,
+        ctx: egui::Context::default(),
+        time: 0.0,
+        modifiers: egui::Modifiers::NONE,
+    };
+    pass(&mut run, Vec::new())?;
+    pass(&mut run, Vec::new())?;
+    Ok(run)
+}
+
+/// The editor over chamber `chamber` (0-based) of Reflect's world, composed over
+/// `common.ron` as the game composes it, in a scratch copy of Reflect's and the common assets
+/// (saves write there).
+pub fn start_chamber(name: &str, chamber: usize) -> anyhow::Result<Run> {
+    let scratch = Scratch::new(name);
+    for folder in ["reflect/levels", "reflect/kit", "common"] {
+        copy_dir(&assets().join(folder), &scratch.path().join(folder))?;
+    }
+    let root = AssetRoot::new(scratch.path())?;
+    let (base, parts) = reflect_files(scratch.path());
+    let (_, level) = load_composed(&base, &parts, &root)?;
+    let mut engine = Engine::new(RenderConfig::cpu(64, 36), Environment::of(&level.scene))?;
+    let spawned = engine.spawn_level(&level);
+    let target = EditTarget::composed_part(&base, &parts, chamber, root)?;
+    let mut mode = EditMode::open(target, spawned)?;
+    assert!(mode.enter(&mut engine).respawned);
     let mut run = Run {
         _scratch: scratch,
         engine,

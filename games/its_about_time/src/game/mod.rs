@@ -328,6 +328,10 @@ impl EditHooks for TimeGame {
         self.inner.level_respawned(engine, spawned);
         self.sounds.level_changed();
     }
+
+    fn play_from(&mut self, engine: &mut Engine, eye: glam::Vec3, forward: glam::Vec3) {
+        self.inner.play_from(engine, eye, forward);
+    }
 }
 
 /// The messages of the last [`MESSAGE_STEPS`] steps, oldest first.

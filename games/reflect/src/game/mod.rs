@@ -351,4 +351,17 @@ impl EditHooks for ReflectGame {
         self.feedback.respawned();
         self.arm_gun(engine);
     }
+
+    /// Play from here: the player on the floor below the editor camera (the chamber it stands
+    /// in is found at the next step); a start still pending is dropped.
+    fn play_from(
+        &mut self,
+        engine: &mut candela::app::Engine,
+        eye: glam::Vec3,
+        forward: glam::Vec3,
+    ) {
+        self.pending_start = None;
+        self.pending_view = None;
+        self.inner.play_from_view(engine, eye, forward);
+    }
 }
