@@ -22,9 +22,9 @@
 
 use candela::assets::LightSampling;
 use candela::layout::{GpuFrameUniforms, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER};
-use candela::render::method_of;
 use candela::render::Tracer;
 use candela::render::cpu::CpuTracer;
+use candela::render::method_of;
 use candela::scene::RenderScene;
 use clap::Parser;
 use glam::Vec3;
