@@ -66,17 +66,7 @@ pub fn start_with(
         mode.enter(&mut engine).respawned,
         "entering spawns the document"
     );
-    let mut run = Run {
-        _scratch: scratch,
-        engine,
-        mode,
-        ctx: egui::Context::default(),
-        time: 0.0,
-        modifiers: egui::Modifiers::NONE,
-    };
-    pass(&mut run, Vec::new())?;
-    pass(&mut run, Vec::new())?;
-    Ok(run)
+    settled(scratch, engine, mode)
 }
 
 /// The editor over chamber `chamber` (0-based) of Reflect's world, composed over
@@ -95,6 +85,12 @@ pub fn start_chamber(name: &str, chamber: usize) -> anyhow::Result<Run> {
     let target = EditTarget::composed_part(&base, &parts, chamber, root)?;
     let mut mode = EditMode::open(target, spawned)?;
     assert!(mode.enter(&mut engine).respawned);
+    settled(scratch, engine, mode)
+}
+
+/// The run over `engine` with the editor `mode` entered, after two empty passes (the first lays
+/// egui's windows out).
+fn settled(scratch: Scratch, engine: Engine, mode: EditMode) -> anyhow::Result<Run> {
     let mut run = Run {
         _scratch: scratch,
         engine,
