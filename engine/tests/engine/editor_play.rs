@@ -61,14 +61,7 @@ fn play_from_here_starts_at_the_camera_and_coming_back_restores_the_edited_level
     let start_feet = game.player().expect("the player").feet(engine.world());
     let (target, spawned) = game.edit_target().expect("a level to edit");
     let mode = EditMode::open(target, spawned)?;
-    let mut run = Run {
-        _scratch: scratch,
-        engine,
-        mode,
-        ctx: egui::Context::default(),
-        time: 0.0,
-        modifiers: egui::Modifiers::NONE,
-    };
+    let mut run = Run::new(scratch, engine, mode);
     // F1: the runner holds the game while editing.
     run.engine.set_paused(true);
     assert!(

@@ -44,6 +44,20 @@ pub struct Run {
     pub modifiers: egui::Modifiers,
 }
 
+impl Run {
+    /// A run over `engine` and the editor `mode`, before any pass, at time 0 with no modifiers.
+    pub fn new(scratch: Scratch, engine: Engine, mode: EditMode) -> Run {
+        Run {
+            _scratch: scratch,
+            engine,
+            mode,
+            ctx: egui::Context::default(),
+            time: 0.0,
+            modifiers: egui::Modifiers::NONE,
+        }
+    }
+}
+
 pub fn start(name: &str) -> anyhow::Result<Run> {
     start_with(name, |_| Ok(()))
 }
@@ -91,14 +105,7 @@ pub fn start_chamber(name: &str, chamber: usize) -> anyhow::Result<Run> {
 /// The run over `engine` with the editor `mode` entered, after two empty passes (the first lays
 /// egui's windows out).
 fn settled(scratch: Scratch, engine: Engine, mode: EditMode) -> anyhow::Result<Run> {
-    let mut run = Run {
-        _scratch: scratch,
-        engine,
-        mode,
-        ctx: egui::Context::default(),
-        time: 0.0,
-        modifiers: egui::Modifiers::NONE,
-    };
+    let mut run = Run::new(scratch, engine, mode);
     pass(&mut run, Vec::new())?;
     pass(&mut run, Vec::new())?;
     Ok(run)
