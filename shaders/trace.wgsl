@@ -91,6 +91,9 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
     var medium = vec3<f32>(0.0);
     let pixel_angle = line_pixel_angle();
     var crossings = 0u;
+    // Whether the path has passed its first diffuse or glossy bounce, which interleaved
+    // indirect light traces from some pixels only (interleave.wgsl).
+    var scattered = false;
     loop {
         var current = next_ray;
         if (tracing_shadow) {
@@ -222,7 +225,13 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
             let wi = to_world(s.wi, f);
             let below = s.wi.z < 0.0;
             throughput *= s.weight;
-            if ((dot(wi, ng) < 0.0) != below || all(throughput == vec3<f32>(0.0))) {
+            var indirect = 1.0;
+            if (!s.delta && !scattered) {
+                scattered = true;
+                indirect = indirect_weight(frame.method, px, py, sample);
+            }
+            throughput *= indirect;
+            if ((dot(wi, ng) < 0.0) != below || indirect == 0.0 || all(throughput == vec3<f32>(0.0))) {
                 have_next = false;
             } else {
                 // Crossed the surface (wo and wi on opposite sides): into or out of its medium.

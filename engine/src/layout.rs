@@ -350,6 +350,17 @@ pub const METHOD_LIGHT_TREE: u32 = 8;
 /// (`render/cpu/direct.rs` `pick_chances`), so a hit samples one light. Without it a hit samples
 /// two: the disc and one triangle (Brigade §6.2.3). For the comparison in `bench two-lights`.
 pub const METHOD_SINGLE_PICK: u32 = 16;
+/// `GpuFrameUniforms::method`: interleaved indirect light, one pixel in two. A path's first
+/// diffuse or glossy bounce (the first scattering that is not a perfect mirror or smooth glass
+/// turn) is traced from one pixel of each checkerboard pair per sample, weighted ×2; the other
+/// pixel ends its path after that vertex's next-event estimate. Which pixel alternates with the
+/// sample index, so two consecutive samples of a pixel hold exactly one indirect estimate
+/// (`render/cpu/interleave.rs`). Direct light, mirrors and glass stay at every pixel.
+pub const METHOD_INDIRECT_HALF: u32 = 32;
+/// `GpuFrameUniforms::method`: interleaved indirect light, one pixel in four (each 2×2 block's
+/// pixels in turn over four consecutive samples), weighted ×4. Takes precedence over
+/// [`METHOD_INDIRECT_HALF`].
+pub const METHOD_INDIRECT_QUARTER: u32 = 64;
 /// The default estimator.
 pub const METHOD_DEFAULT: u32 = METHOD_NEE | METHOD_MIS | METHOD_LIGHTS_BY_POWER;
 

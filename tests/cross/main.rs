@@ -21,6 +21,7 @@ mod gpu_matches_cpu;
 mod headless;
 mod hero;
 mod hero_skin;
+mod interleave;
 mod layout;
 mod many_lights;
 mod mips;

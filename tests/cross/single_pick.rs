@@ -71,7 +71,7 @@ pub(crate) fn sun_and_panel(sun_radius_deg: f32) -> SceneDesc {
 
 /// Asserts that `a` and `b` (same scene, independent seeds) agree in every region and channel
 /// within 4.5 σ (+ rounding); returns the worst |difference| / σ.
-fn assert_same_mean(
+pub(crate) fn assert_same_mean(
     label: &str,
     size: u32,
     a: &candela_tests::Batches,
@@ -95,7 +95,7 @@ fn assert_same_mean(
             }
             assert!(
                 difference <= 4.5 * sigma + rounding,
-                "{label}: region {region} channel {c}: two lights {:.5} ± {:.5}, single pick {:.5} ± {:.5}",
+                "{label}: region {region} channel {c}: first {:.5} ± {:.5}, second {:.5} ± {:.5}",
                 sa.mean[c],
                 sa.std_error[c],
                 sb.mean[c],

@@ -265,6 +265,11 @@ pub struct RenderSettings {
     /// axis, in (0, 1] (`None`: ¼, 320×180 of a 1280×720 window).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub min_scale: Option<f32>,
+    /// Interleaved indirect light: one pixel in this many (1, 2 or 4) traces a path's first
+    /// diffuse or glossy bounce each frame, weighted to stay unbiased; direct light, mirrors
+    /// and glass stay at every pixel (`render/cpu/interleave.rs`; `None`: 1, every pixel).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub indirect_every: Option<u32>,
 }
 
 impl Default for RenderSettings {
@@ -275,6 +280,7 @@ impl Default for RenderSettings {
             light_sampling: LightSampling::Power,
             target_fps: None,
             min_scale: None,
+            indirect_every: None,
         }
     }
 }

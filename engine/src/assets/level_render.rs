@@ -1,6 +1,6 @@
 //! What a level declares about how it is played in real time, and its checks: the frame rate
 //! workload scaling holds and the lowest resolution it may go to (`render: (target_fps: 30,
-//! min_scale: 0.25)`), beside the bounce count and roulette start every render of the level
+//! min_scale: 0.25)`), how many pixels share one indirect path (`indirect_every: 4`), beside the bounce count and roulette start every render of the level
 //! uses (games and converged captures alike).
 //!
 //! Owns: the defaults of the real-time fields of [`RenderSettings`] and
@@ -31,9 +31,18 @@ impl RenderSettings {
         self.min_scale.unwrap_or(DEFAULT_MIN_SCALE)
     }
 
+    /// The `layout::METHOD_INDIRECT_*` bit of `indirect_every` (none for 1 or absent).
+    pub fn indirect_method(&self) -> u32 {
+        match self.indirect_every {
+            Some(2) => crate::layout::METHOD_INDIRECT_HALF,
+            Some(4) => crate::layout::METHOD_INDIRECT_QUARTER,
+            _ => 0,
+        }
+    }
+
     /// The first value a level may not declare, naming `path` and the field: a frame rate that
     /// is not above 0 (or not finite), a `min_scale` outside (0, 1], `max_bounces` 0 or above
-    /// `MAX_BOUNCES` (64).
+    /// `MAX_BOUNCES` (64), an `indirect_every` other than 1, 2 or 4.
     pub fn check(&self, path: &Path) -> AssetResult<()> {
         let bad = |message: String| {
             Err(AssetError::Level {
@@ -53,6 +62,13 @@ impl RenderSettings {
         {
             return bad(format!(
                 "min_scale is {scale}; a fraction of the output resolution must be in (0, 1]"
+            ));
+        }
+        if let Some(every) = self.indirect_every
+            && ![1, 2, 4].contains(&every)
+        {
+            return bad(format!(
+                "indirect_every is {every}; one pixel in 1, 2 or 4 traces indirect light"
             ));
         }
         if self.max_bounces == 0 || self.max_bounces > MAX_BOUNCES {
@@ -97,7 +113,9 @@ mod tests {
         assert_eq!(parsed.render.min_resolution(), 0.25);
         let text = ron::to_string(&parsed.render)?;
         assert!(
-            !text.contains("target_fps") && !text.contains("min_scale"),
+            !text.contains("target_fps")
+                && !text.contains("min_scale")
+                && !text.contains("indirect_every"),
             "{text}"
         );
         Ok(())
@@ -107,13 +125,14 @@ mod tests {
     fn declared_fields_are_read_and_written_back() -> Result<(), Box<dyn std::error::Error>> {
         let parsed = Level::parse(
             Path::new("a.ron"),
-            &level("(max_bounces: 2, target_fps: 20, min_scale: 0.5)"),
+            &level("(max_bounces: 2, target_fps: 20, min_scale: 0.5, indirect_every: 4)"),
         )?;
         let r = parsed.render;
         assert_eq!(
-            (r.max_bounces, r.target_fps, r.min_scale),
-            (2, Some(20.0), Some(0.5))
+            (r.max_bounces, r.target_fps, r.min_scale, r.indirect_every),
+            (2, Some(20.0), Some(0.5), Some(4))
         );
+        assert_eq!(r.indirect_method(), crate::layout::METHOD_INDIRECT_QUARTER);
         assert_eq!(r.frame_seconds(), 1.0 / 20.0);
         let again: RenderSettings = ron::from_str(&ron::to_string(&r)?)?;
         assert_eq!(again, r);
@@ -132,6 +151,8 @@ mod tests {
             ("(min_scale: NaN)", "min_scale is NaN"),
             ("(max_bounces: 0)", "max_bounces is 0"),
             ("(max_bounces: 65)", "max_bounces is 65"),
+            ("(indirect_every: 3)", "indirect_every is 3"),
+            ("(indirect_every: 0)", "indirect_every is 0"),
         ] {
             let message = refusal(render);
             assert!(
@@ -148,6 +169,8 @@ mod tests {
             "(max_bounces: 64)",
             "(max_bounces: 1)",
             "(target_fps: 0.5)",
+            "(indirect_every: 1)",
+            "(indirect_every: 4)",
         ] {
             Level::parse(Path::new("a.ron"), &level(render))?;
         }

@@ -48,7 +48,7 @@ impl FrameSettings {
             roulette_start: render.roulette_start,
             roulette_scale: 1.0,
             film_blend: 1.0,
-            method: method_of(render.light_sampling),
+            method: method_of(render.light_sampling) | render.indirect_method(),
         }
     }
 

@@ -52,6 +52,9 @@ fn trace(
     if let Some(sampling) = config.light_sampling {
         render.light_sampling = sampling;
     }
+    if let Some(every) = config.indirect_every {
+        render.indirect_every = Some(every);
+    }
     let mut settings = FrameSettings::new(size.0, size.1, work.spp, config.seed, &render);
     settings.sample_base = (commit.frame as u32).wrapping_mul(work.spp);
     // With the denoiser on, the tracer's film holds this frame alone; the denoiser blends.

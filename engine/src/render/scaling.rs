@@ -21,6 +21,10 @@ pub struct ScalingTarget {
     pub min_roulette: f32,
     /// Lowest render resolution, as a fraction of the output size per axis.
     pub min_resolution: f32,
+    /// The resolution the first frame is traced at, fraction of the output per axis (1: the
+    /// output's, the default; benches that measure the steady state start at the floor
+    /// instead of spending their first seconds on frames of the full size).
+    pub start_resolution: f32,
 }
 
 impl ScalingTarget {
@@ -33,6 +37,7 @@ impl ScalingTarget {
             max_spp: 64,
             min_roulette: 0.5,
             min_resolution: 0.25,
+            start_resolution: 1.0,
         }
     }
 
@@ -88,14 +93,22 @@ pub struct Scaling {
 }
 
 impl Scaling {
-    /// Starts at `spp` samples per pixel, full resolution, default roulette.
+    /// Starts at `spp` samples per pixel, the target's start resolution (full resolution
+    /// without a target), default roulette.
     pub fn new(spp: u32, target: Option<ScalingTarget>) -> Self {
+        let resolution = target.map_or(1.0, |t| {
+            if t.start_resolution.is_finite() {
+                t.start_resolution.clamp(t.min_resolution.min(1.0), 1.0)
+            } else {
+                1.0
+            }
+        });
         Self {
             target,
             work: Workload {
                 spp: spp.max(1),
                 roulette_scale: 1.0,
-                resolution: 1.0,
+                resolution,
             },
             smoothed: None,
             cooldown: 0,
@@ -290,6 +303,25 @@ mod tests {
                 resolution: 0.25
             }
         );
+    }
+
+    #[test]
+    fn the_first_frame_is_traced_at_the_start_resolution_within_the_bounds() {
+        let at = |start: f32| {
+            let target = ScalingTarget {
+                start_resolution: start,
+                ..ScalingTarget::new(0.02)
+            };
+            Scaling::new(1, Some(target)).current().resolution
+        };
+        assert_eq!(at(1.0), 1.0);
+        assert_eq!(at(0.25), 0.25);
+        assert_eq!(at(0.5), 0.5);
+        // Below the floor, above the output or not a number: clamped, or the output's.
+        assert_eq!(at(0.1), 0.25);
+        assert_eq!(at(3.0), 1.0);
+        assert_eq!(at(f32::NAN), 1.0);
+        assert_eq!(Scaling::new(1, None).current().resolution, 1.0);
     }
 
     #[test]

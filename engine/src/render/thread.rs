@@ -69,6 +69,9 @@ pub struct RenderConfig {
     /// How lights are picked, overriding the level's `render.light_sampling` (`None`: the
     /// level's; `capture --light-sampling`).
     pub light_sampling: Option<crate::assets::LightSampling>,
+    /// One pixel in this many traces indirect light, overriding the level's
+    /// `render.indirect_every` (`None`: the level's; 1, 2 or 4; `render/cpu/interleave.rs`).
+    pub indirect_every: Option<u32>,
     /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
     /// table always matches the commit) or `Background` (games in play: rebuilt on a worker
     /// thread while frames go on; `scene::SkyTable`).
@@ -90,6 +93,7 @@ impl RenderConfig {
             denoise: false,
             temporal_upscale: None,
             light_sampling: None,
+            indirect_every: None,
             sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }
     }

@@ -75,6 +75,14 @@ pub struct Args {
     /// With --bench: most seconds per chamber.
     #[arg(long, default_value_t = 20.0)]
     pub bench_seconds: f64,
+    /// With --bench: the output size in pixels, `WIDTHxHEIGHT` (workload scaling traces a
+    /// fraction of it, down to the level's `min_scale`).
+    #[arg(long, default_value = "640x360", value_parser = parse_size)]
+    pub bench_output: (u32, u32),
+    /// With --bench: one pixel in this many (1, 2 or 4) traces indirect light, overriding the
+    /// levels' `render.indirect_every`.
+    #[arg(long, value_parser = parse_every)]
+    pub indirect_every: Option<u32>,
     /// Headless: play each chamber this many frames with random input and check every frame
     /// (see `reflect::soak`); prints a Markdown table.
     #[arg(long)]
@@ -89,6 +97,28 @@ pub struct Args {
     /// it is shown. `--denoise false` shows the raw traced film.
     #[arg(long, default_value_t = true, action = clap::ArgAction::Set)]
     pub denoise: bool,
+}
+
+/// One pixel in 1, 2 or 4 (`render.indirect_every`).
+fn parse_every(text: &str) -> Result<u32, String> {
+    match text.trim().parse::<u32>() {
+        Ok(n @ (1 | 2 | 4)) => Ok(n),
+        _ => Err(format!(
+            "{text:?}: one pixel in 1, 2 or 4 traces indirect light"
+        )),
+    }
+}
+
+/// `WIDTHxHEIGHT` in pixels, both above 0.
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("{text:?}: expected WIDTHxHEIGHT in pixels, e.g. 1280x720");
+    let (w, h) = text.split_once(['x', '×']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if w == 0 || h == 0 {
+        return Err(bad());
+    }
+    Ok((w, h))
 }
 
 /// The game file and the asset root it lives in (`…/assets`, two folders above it).
@@ -147,7 +177,13 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
     }
     if args.bench {
         let replays = root.path().join("reflect/replays");
-        return crate::bench::bench(&world, &root, &replays, args.bench_seconds, args.denoise);
+        let options = crate::bench::BenchOptions {
+            seconds: args.bench_seconds,
+            denoise: args.denoise,
+            output: args.bench_output,
+            indirect_every: args.indirect_every,
+        };
+        return crate::bench::bench(&world, &root, &replays, &options);
     }
     if args.headless {
         let Some(replay) = &args.replay else {

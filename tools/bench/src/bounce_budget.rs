@@ -125,6 +125,8 @@ pub fn run(args: &BounceBudgetArgs) -> anyhow::Result<()> {
             rounds: 0,
             threads: 0,
             warm_frames: 4,
+            light_tree: false,
+            indirect_every: 1,
         })?;
         let half = (args.reference_spp / 2).max(1);
         let halves = [1u32 << 20, 1 << 21]

@@ -19,7 +19,10 @@ use std::sync::{Arc, Mutex};
 
 use candela::app::{Engine, Game};
 use candela::assets::Level;
-use candela::layout::GpuFrameUniforms;
+use candela::layout::{
+    GpuFrameUniforms, METHOD_INDIRECT_HALF, METHOD_INDIRECT_QUARTER, METHOD_LIGHT_TREE,
+    METHOD_LIGHTS_BY_POWER,
+};
 use candela::render::cpu::CpuTracer;
 use candela::render::cpu::guides::trace_guides;
 use candela::render::{FilmView, OpenTracer, RenderConfig, RenderError, RenderStats, Tracer};
@@ -53,6 +56,13 @@ pub struct ChamberRaysArgs {
     /// Game frames run before the view is kept.
     #[arg(long, default_value_t = 4)]
     pub warm_frames: u32,
+    /// Pick lights by the light tree instead of the game's own light sampling.
+    #[arg(long)]
+    pub light_tree: bool,
+    /// Interleaved indirect light: 1 (every pixel, the default), 2 or 4 pixels per traced
+    /// first bounce (`render/cpu/interleave.rs`).
+    #[arg(long, default_value_t = 1)]
+    pub indirect_every: u32,
 }
 
 /// The scene and uniforms of the latest frame rendered.
@@ -133,7 +143,15 @@ pub fn capture(args: &ChamberRaysArgs) -> anyhow::Result<(RenderScene, GpuFrameU
 }
 
 pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
-    let (scene, u) = capture(args)?;
+    let (scene, mut u) = capture(args)?;
+    if args.light_tree {
+        u.method = (u.method & !METHOD_LIGHTS_BY_POWER) | METHOD_LIGHT_TREE;
+    }
+    u.method |= match args.indirect_every {
+        2 => METHOD_INDIRECT_HALF,
+        4 => METHOD_INDIRECT_QUARTER,
+        _ => 0,
+    };
     let threads = if args.threads == 0 {
         rayon::current_num_threads()
     } else {

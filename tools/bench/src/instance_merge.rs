@@ -93,6 +93,8 @@ pub fn run(args: &InstanceMergeArgs) -> anyhow::Result<()> {
         rounds: 1,
         threads: 1,
         warm_frames: 4,
+        light_tree: false,
+        indirect_every: 1,
     })?;
     let two_level = scene.trace_scene();
     let (positions, triangles) = merged_triangles(&scene);

@@ -74,6 +74,10 @@ pub struct PictureArgs {
     /// Only the denoised configurations (the game's): 160×90, 320×180 and TAAU ×2.
     #[arg(long)]
     pub denoised_only: bool,
+    /// Above 1: also both sizes denoised with one pixel in this many (2 or 4) tracing indirect
+    /// light (`render/cpu/interleave.rs`), measured after the others.
+    #[arg(long, default_value_t = 1)]
+    pub indirect_every: u32,
     /// Print the N pixels of each compared frame that add most to its relative MSE
     /// (`picture_outliers.rs`).
     #[arg(long, default_value_t = 0)]
@@ -114,7 +118,8 @@ impl PictureArgs {
     /// The configurations measured: 160×90 and 320×180 (`--quick`: 32×18 and 64×36), denoiser
     /// off then on; then the small size traced and upscaled ×2 to the large one by temporal
     /// upscaling, denoiser on (last: the large plain runs render the references it reuses).
-    /// `--denoised-only` keeps the denoised ones.
+    /// `--denoised-only` keeps the denoised ones; `--indirect-every N` adds both sizes denoised
+    /// with interleaved indirect light, after them.
     pub fn configs(&self) -> Vec<Config> {
         let sizes = if self.quick {
             [(32, 18), (64, 36)]
@@ -129,6 +134,7 @@ impl PictureArgs {
                     height,
                     denoise,
                     upscale: 1,
+                    indirect_every: 1,
                 })
             })
             .collect();
@@ -137,9 +143,19 @@ impl PictureArgs {
             height: sizes[1].1,
             denoise: true,
             upscale: 2,
+            indirect_every: 1,
         });
         if self.denoised_only {
             configs.retain(|c| c.denoise);
+        }
+        if self.indirect_every > 1 {
+            configs.extend(sizes.iter().map(|&(width, height)| Config {
+                width,
+                height,
+                denoise: true,
+                upscale: 1,
+                indirect_every: self.indirect_every,
+            }));
         }
         configs
     }

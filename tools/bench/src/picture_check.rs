@@ -42,6 +42,7 @@ fn reference(world: &ReflectWorld, frame: u64, spp: u32) -> Reference {
         height: 18,
         denoise: false,
         upscale: 1,
+        indirect_every: 1,
     };
     let keep = BTreeSet::from([frame]);
     play(

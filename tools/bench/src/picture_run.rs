@@ -44,10 +44,21 @@ pub struct Config {
     /// Temporal upscaling factor (`RenderConfig::temporal_upscale`; 1: none): the tracer
     /// traces `width / upscale × height / upscale`.
     pub upscale: u32,
+    /// One pixel in this many traces indirect light (`RenderConfig::indirect_every`; 1: all).
+    pub indirect_every: u32,
 }
 
 impl Config {
     pub fn label(&self) -> String {
+        let base = self.plain_label();
+        if self.indirect_every > 1 {
+            format!("{base}, indirect 1 in {}", self.indirect_every)
+        } else {
+            base
+        }
+    }
+
+    fn plain_label(&self) -> String {
         let denoiser = if self.denoise { "on" } else { "off" };
         if self.upscale > 1 {
             format!(
@@ -128,6 +139,7 @@ pub fn play(
     let render = RenderConfig {
         denoise: config.denoise,
         temporal_upscale: (config.upscale > 1).then_some(config.upscale),
+        indirect_every: (config.indirect_every > 1).then_some(config.indirect_every),
         ..RenderConfig::cpu(config.width, config.height)
     };
     let wanted = refs.lock().expect("references lock").wanted.clone();

@@ -45,6 +45,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         scaling: None,
         denoise: false,
         light_sampling: None,
+        indirect_every: None,
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -230,6 +230,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
             .map(|f| ScalingTarget::new(1.0 / f)),
         denoise: args.denoise,
         light_sampling: None,
+        indirect_every: None,
         sky_rebuild: candela::scene::SkyRebuild::Background,
         temporal_upscale: None,
     };

@@ -182,6 +182,7 @@ fn run_policy(
         scaling: None,
         denoise: false,
         light_sampling: None,
+        indirect_every: None,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

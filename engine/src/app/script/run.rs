@@ -205,6 +205,7 @@ pub fn run_script(
         scaling: None,
         denoise: false,
         light_sampling: options.light_sampling,
+        indirect_every: None,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -22,6 +22,7 @@ use super::cone::Cone;
 use super::direct::{
     NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances, transmittance,
 };
+use super::interleave::indirect_weight;
 use super::lines::{past_lines, pixel_angle, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
 use super::rng::Rng;
@@ -145,6 +146,9 @@ pub fn radiance(
     // back face (one level: a medium inside a medium is left for the outer one's air).
     let mut medium = Vec3::ZERO;
     let pixel_angle = pixel_angle(u);
+    // Whether the path has passed its first diffuse or glossy bounce, which interleaved
+    // indirect light traces from some pixels only (`interleave.rs`).
+    let mut scattered = false;
     loop {
         let mut hit = tracer.closest(&ray);
         if camera_chain {
@@ -287,6 +291,14 @@ pub fn radiance(
             break;
         }
         throughput *= s.weight;
+        if !s.delta && !scattered {
+            scattered = true;
+            let w = indirect_weight(u.method, px, py, sample);
+            if w == 0.0 {
+                break;
+            }
+            throughput *= w;
+        }
         if throughput == Vec3::ZERO {
             break;
         }

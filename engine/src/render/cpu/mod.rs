@@ -7,6 +7,7 @@ pub(crate) mod cone;
 mod direct;
 pub mod guides;
 pub mod integrator;
+pub mod interleave;
 pub mod light_tree;
 pub mod lines;
 pub(crate) mod microfacet;

@@ -36,6 +36,7 @@ pub const SHARED: &[ShaderSource] = &[
     shader!("shared/sky_view.wgsl"),
     shader!("shared/night.wgsl"),
     shader!("shared/clouds.wgsl"),
+    shader!("shared/interleave.wgsl"),
 ];
 
 /// The path tracing pass (entry point `trace_main`). Compose it with [`compose_trace`]: it

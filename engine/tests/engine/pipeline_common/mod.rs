@@ -74,6 +74,7 @@ pub fn config(spp: u32, size: u32) -> RenderConfig {
         scaling: None,
         denoise: false,
         light_sampling: None,
+        indirect_every: None,
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     }
