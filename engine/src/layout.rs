@@ -477,8 +477,13 @@ pub struct GpuFrameUniforms {
     /// Texels per side of the optical-depth texture (the CPU tracer reads `SkyTable::clouds`;
     /// on the GPU they follow the sky view in binding 16, four to a texel).
     pub cloud_texels: u32,
+    /// The moonlit sky (`sky::MoonSky`; `scene/discs.rs` fills it): xyz the unit horizontal
+    /// vector towards the moon's azimuth (the frame of the moon's sky-view table, which
+    /// follows the sun's), w the moon's share of the sun's irradiance that table is multiplied
+    /// by (0: no moonlit sky, by day or with the moon down).
+    pub moon_sky: [f32; 4],
 }
-const _: () = assert!(size_of::<GpuFrameUniforms>() == 368);
+const _: () = assert!(size_of::<GpuFrameUniforms>() == 384);
 
 impl GpuFrameUniforms {
     /// All zeros: for passes that read nothing but `tlas_root` (batch ray tracing).

@@ -1,10 +1,10 @@
 // The cloud layer (twin of `cloud_transmittance` in engine/src/sky/clouds.rs and of
 // engine/src/render/cpu/clouds.rs): the one transmittance both estimators of the primary disc
 // are multiplied by, and the sky seen through the layer. The optical depths follow the
-// sky-view table in binding 16, four to a texel (engine/src/render/gpu/upload.rs).
+// sun's and the moon's sky-view tables in binding 16, four to a texel (engine/src/render/gpu/upload.rs).
 
 fn cloud_tau(i: u32) -> f32 {
-    let texel = sky_view[SKY_VIEW_WIDTH * SKY_VIEW_HEIGHT + i / 4u];
+    let texel = sky_view[2u * SKY_VIEW_WIDTH * SKY_VIEW_HEIGHT + i / 4u];
     return texel[i % 4u];
 }
 
@@ -12,7 +12,7 @@ fn cloud_tau(i: u32) -> f32 {
 fn cloud_transmittance(p: vec3<f32>, w: vec3<f32>) -> f32 {
     let plane = frame.cloud_plane;
     let n = frame.cloud_texels;
-    let have = SKY_VIEW_WIDTH * SKY_VIEW_HEIGHT * 4u;
+    let have = 2u * SKY_VIEW_WIDTH * SKY_VIEW_HEIGHT * 4u;
     if (plane.w <= 0.0 || n == 0u || arrayLength(&sky_view) * 4u < have + n * n
         || w.y <= 0.0 || p.y >= plane.x) {
         return 1.0;

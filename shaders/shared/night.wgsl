@@ -124,5 +124,5 @@ fn star_field(d: vec3<f32>) -> vec3<f32> {
 }
 
 fn night_radiance(d: vec3<f32>) -> vec3<f32> {
-    return second_disc(d) + star_field(d);
+    return second_disc(d) + star_field(d) + moon_view_radiance(frame.moon_sky, d);
 }

@@ -208,6 +208,7 @@ struct GpuFrameUniforms {
     cloud_plane: vec4<f32>,
     cloud_light: vec3<f32>,
     cloud_texels: u32,
+    moon_sky: vec4<f32>,
 }
 
 struct GpuRay {

@@ -156,7 +156,8 @@ fn rust_layouts() -> Vec<RustLayout> {
             celestial_z,
             cloud_plane,
             cloud_light,
-            cloud_texels
+            cloud_texels,
+            moon_sky
         }),
         rust_layout!(GpuRay {
             origin,

@@ -137,6 +137,7 @@ pub fn frame_uniforms(
         cloud_plane: [0.0; 4],
         cloud_light: [0.0; 3],
         cloud_texels: 0,
+        moon_sky: [0.0; 4],
     };
     fill_sun_and_sky(&mut u, sun, sky);
     // The cloud plane in render space: the scene is traced relative to `origin`.

@@ -1,7 +1,8 @@
 //! The physical sky's two discs and its night in the frame uniforms: the sun and the moon
 //! (with its phase), the brighter of the two (after the air's transmittance) in the primary
 //! slot that next-event estimation samples (`sun_*`), the other in the second slot that only
-//! escaping rays see (`second_*`), the stars, airglow and celestial frame, and the cloud layer
+//! escaping rays see (`second_*`), the stars, airglow and celestial frame, the moonlit sky's
+//! frame and scale (`moon_sky`), and the cloud layer
 //! (`cloud_*`: its plane, the wind's drift at the sky's time, the light an opaque cloud sends).
 //!
 //! Any thread; pure functions. Units: irradiance W·m⁻²·nm⁻¹ per channel, radiance
@@ -144,6 +145,8 @@ pub fn fill_physical(u: &mut GpuFrameUniforms, sky: &PhysicalSky) {
     u.celestial_x = x.extend(0.0).to_array();
     u.celestial_y = y.extend(0.0).to_array();
     u.celestial_z = z.extend(0.0).to_array();
+    // The moonlit sky: its table follows the sun's (`scene::SkyTable`), read by both tracers.
+    u.moon_sky = crate::sky::moon_uniform(sky.moon_sky().ok().flatten());
     fill_clouds(u, sky, first);
 }
 

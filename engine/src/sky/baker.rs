@@ -12,6 +12,12 @@
 //! direction is not the table's: the tracers take it from the sky's description every frame,
 //! exactly.
 //!
+//! At night the moon's table ([`super::MoonSky`]: the same table built for the moon's
+//! elevation) follows the sun's in the texels, under the same rule: rebuilt only when the
+//! moon crosses into another elevation step; the moon's phase is a factor the tracers apply,
+//! so it rebuilds nothing. By day (or with the moon down) there is no moon's table: nothing
+//! is built or read for it.
+//!
 //! Any thread (the render thread's `scene::SkyTable` holds one). Must not: know scenes, commits
 //! or tracers.
 
@@ -24,7 +30,7 @@ use super::atmosphere::Atmosphere;
 use super::error::SkyError;
 use super::multiscatter::MultiScatteringLut;
 use super::physical::PhysicalSky;
-use super::sky_view::build_view;
+use super::sky_view::{VIEW_HEIGHT, VIEW_WIDTH, build_view};
 use super::transmittance::TransmittanceLut;
 
 /// The step (degrees of sun elevation) the sky-view table's elevation is rounded to. 0.1° is
@@ -94,7 +100,10 @@ pub struct SkyBaker {
     luts: Option<Arc<Luts>>,
     /// The sun elevation (degrees) the sky-view table was built for.
     built_elevation_deg: Option<f64>,
-    /// `VIEW_WIDTH × VIEW_HEIGHT` texels (layout in `sky_view`).
+    /// The moon elevation (degrees) the moon's table was built for; `None`: no moon's table.
+    moon_elevation_deg: Option<f64>,
+    /// `VIEW_WIDTH × VIEW_HEIGHT` texels (layout in `sky_view`), twice that with the moon's
+    /// table after the sun's.
     texels: Arc<Vec<[f32; 4]>>,
     /// The next step's table, being built (a mutex only so that the baker is `Sync`).
     ahead: Mutex<Option<Ahead>>,
@@ -106,6 +115,7 @@ impl Clone for SkyBaker {
         Self {
             luts: self.luts.clone(),
             built_elevation_deg: self.built_elevation_deg,
+            moon_elevation_deg: self.moon_elevation_deg,
             texels: self.texels.clone(),
             ahead: Mutex::new(None),
         }
@@ -126,6 +136,7 @@ impl std::fmt::Debug for SkyBaker {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("SkyBaker")
             .field("built_elevation_deg", &self.built_elevation_deg)
+            .field("moon_elevation_deg", &self.moon_elevation_deg)
             .field("texels", &self.texels.len())
             .finish()
     }
@@ -138,11 +149,12 @@ impl SkyBaker {
     /// atmosphere changed.
     pub fn update(&mut self, sky: &PhysicalSky) -> Result<Baked, SkyError> {
         let elevation = table_elevation_deg(sky.sun_horizontal()?.elevation_deg);
+        let moon = sky.moon_sky()?.map(|m| m.table_elevation_deg);
         let k = key(sky);
         let mut baked = Baked::View;
         let luts = match &self.luts {
             Some(l) if l.key == k => {
-                if self.built_elevation_deg == Some(elevation) {
+                if self.built_elevation_deg == Some(elevation) && self.moon_elevation_deg == moon {
                     return Ok(Baked::Kept);
                 }
                 l.clone()
@@ -162,14 +174,31 @@ impl SkyBaker {
                 l
             }
         };
-        let texels = match self.take_ahead(k, elevation) {
-            Some(texels) => {
-                baked = Baked::Ahead;
-                texels
+        let n = VIEW_WIDTH * VIEW_HEIGHT;
+        let sun_moved = baked == Baked::All || self.built_elevation_deg != Some(elevation);
+        let mut texels = if !sun_moved && self.texels.len() >= n {
+            self.texels[..n].to_vec()
+        } else {
+            match self.take_ahead(k, elevation) {
+                Some(texels) => {
+                    baked = Baked::Ahead;
+                    texels
+                }
+                None => view(&luts, elevation),
             }
-            None => view(&luts, elevation),
         };
+        if let Some(m) = moon {
+            let moon_kept = baked != Baked::All
+                && self.moon_elevation_deg == Some(m)
+                && self.texels.len() == 2 * n;
+            if moon_kept {
+                texels.extend_from_slice(&self.texels[n..]);
+            } else {
+                texels.extend(view(&luts, m));
+            }
+        }
         self.texels = Arc::new(texels);
+        self.moon_elevation_deg = moon;
         let previous = self.built_elevation_deg.replace(elevation);
         if baked != Baked::All
             && let Some(previous) = previous
@@ -217,7 +246,8 @@ impl SkyBaker {
     }
 
     /// The luminance-weighted horizontal illuminance under `sky` (sky units; `exposure`): the
-    /// table as last built plus the sun's and the moon's direct light at their exact elevations. Call after
+    /// table as last built (the moonlit sky's too) plus the sun's and the moon's direct light
+    /// at their exact elevations. Call after
     /// [`SkyBaker::update`] with the same sky.
     pub fn horizontal_illuminance(&self, sky: &PhysicalSky) -> Result<f32, SkyError> {
         let h = sky.sun_horizontal()?;
@@ -226,7 +256,21 @@ impl SkyBaker {
         let moon = sky.moon_light()?.map_or(0.0, |m| {
             m.irradiance.dot(Vec3::new(0.2126, 0.7152, 0.0722)) * m.direction.y.max(0.0)
         });
-        Ok(super::exposure::horizontal_illuminance(&self.texels, sun, h.elevation_deg) + moon)
+        // The moonlit sky (its table after the sun's), scaled by the moon's share.
+        let n = VIEW_WIDTH * VIEW_HEIGHT;
+        let moon_sky = match sky.moon_sky()? {
+            Some(m) if self.texels.len() == 2 * n => {
+                super::exposure::horizontal_illuminance(&self.texels[n..], Vec3::ZERO, -90.0)
+                    * m.scale
+            }
+            _ => 0.0,
+        };
+        let sun_sky = &self.texels[..n.min(self.texels.len())];
+        Ok(
+            super::exposure::horizontal_illuminance(sun_sky, sun, h.elevation_deg)
+                + moon
+                + moon_sky,
+        )
     }
 
     /// The sky-view texels as last built (empty before the first [`SkyBaker::update`]).
@@ -245,15 +289,18 @@ impl SkyBaker {
         self.luts.as_ref().is_some_and(|l| l.key == key(sky))
     }
 
-    /// Whether [`SkyBaker::update`] for `sky` would build anything (another atmosphere, or the
-    /// sun in another elevation step than the table's); a sky whose sun fails its checks needs
+    /// Whether [`SkyBaker::update`] for `sky` would build anything (another atmosphere, the
+    /// sun or the moon in another elevation step than the tables', the moon's table
+    /// appearing or going); a sky whose sun fails its checks needs
     /// nothing built.
     pub fn needs_update(&self, sky: &PhysicalSky) -> bool {
         let Ok(h) = sky.sun_horizontal() else {
             return false;
         };
+        let moon = sky.moon_sky().ok().flatten().map(|m| m.table_elevation_deg);
         !self.holds_atmosphere_of(sky)
             || self.built_elevation_deg != Some(table_elevation_deg(h.elevation_deg))
+            || self.moon_elevation_deg != moon
     }
 
     /// Forgets everything (the next update rebuilds all).

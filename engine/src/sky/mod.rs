@@ -10,7 +10,7 @@
 //! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into;
 //! turning the time of day ([`SkyTime::advanced`], [`SkyNow`], `day`), the tables kept while
 //! the sun moves ([`SkyBaker`]), the exposure the sky calls for (`exposure`) and the night's
-//! lights: the moon's phase law, airglow, stars and the celestial frame (`night`); the cloud
+//! lights: the moon's phase law, the moonlit sky, airglow, stars and the celestial frame (`night`); the cloud
 //! layer the wind moves and its transmittance (`clouds`).
 //! Runs on any thread: plain data and pure functions.
 //! Must not: know about levels, scenes, the ECS or either tracer; it sits below `assets` in
@@ -46,10 +46,14 @@ pub use exposure::{
 pub use horizon::{Horizontal, Observer};
 pub use lunar::{MoonState, moon_position};
 pub use night::{
-    AIRGLOW_COLOUR, AIRGLOW_ZENITH_CD_M2, MOON_FULL_RATIO, MoonLight, STAR_ANGULAR_RADIUS_DEG,
-    STAR_ZERO_MAGNITUDE_LUX, celestial_frame, moon_phase_factor,
+    AIRGLOW_COLOUR, AIRGLOW_ZENITH_CD_M2, MOON_FULL_RATIO, MOON_SKY_MOON_BELOW_DEG,
+    MOON_SKY_SUN_ABOVE_DEG, MoonLight, MoonSky, STAR_ANGULAR_RADIUS_DEG, STAR_ZERO_MAGNITUDE_LUX,
+    celestial_frame, moon_phase_factor,
 };
-pub use physical::{HAZE_TURBIDITY_3, PhysicalSky, SkyTables, SkyTime, sky_view_radiance};
+pub use physical::{
+    HAZE_TURBIDITY_3, PhysicalSky, SkyTables, SkyTime, moon_uniform, moon_view_radiance,
+    sky_view_radiance,
+};
 pub use sky_view::{VIEW_HEIGHT, VIEW_WIDTH};
 pub use solar::{SunState, sun_position};
 

@@ -20,6 +20,14 @@
 //!   as a thin layer at 90 km (van Rhijn) and dimmed by the air's extinction.
 //! - **Stars**: a magnitude-0 star gives 2.54·10⁻⁶ lx (Allen); the field's magnitudes follow
 //!   N(< m) ∝ 10^(0.48 m) up to 6.5 (about 9000 stars on the sphere).
+//! - **The moonlit sky** ([`MoonSky`]): the air scatters the moon's light as it scatters the
+//!   sun's (the moon's light has the sun's colour here), so the moon's sky is the sun's
+//!   sky-view table built for the moon's elevation, seen in the moon's azimuth frame and scaled
+//!   by the moon's share of the sun's irradiance ([`MOON_FULL_RATIO`] × the phase law). It is
+//!   left out while the sun stands above [`MOON_SKY_SUN_ABOVE_DEG`] (the sun's twilight outshines
+//!   a full moon's sky by more than 100 times there) or the moon below
+//!   [`MOON_SKY_MOON_BELOW_DEG`] (its sky is then under 5 % of the airglow): no second table is
+//!   built nor read by day.
 
 use glam::Vec3;
 
@@ -41,6 +49,27 @@ pub const STAR_ZERO_MAGNITUDE_LUX: f32 = 2.54e-6;
 /// Angular radius of a star's disc in the renderer, degrees: small beside a pixel of a usual
 /// view (0.08°), large enough that escaping rays find it; its irradiance does not depend on it.
 pub const STAR_ANGULAR_RADIUS_DEG: f32 = 0.04;
+
+/// Above this sun elevation (degrees) the moon's scattered light is left out of the sky.
+pub const MOON_SKY_SUN_ABOVE_DEG: f64 = -6.0;
+/// Below this moon elevation (degrees) the moon's scattered light is left out of the sky.
+pub const MOON_SKY_MOON_BELOW_DEG: f64 = -6.0;
+
+/// The moon's share of the sky: the second sky-view table both tracers read at night (built by
+/// `SkyBaker` and `SkyTables` after the sun's, `VIEW_WIDTH × VIEW_HEIGHT` texels more).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MoonSky {
+    /// The moon's elevation rounded to the table step (`table_elevation_deg`), degrees: the
+    /// elevation the moon's table is built for (as the sun's table, per unit solar irradiance ×
+    /// the solar irradiance).
+    pub table_elevation_deg: f64,
+    /// Unit horizontal vector towards the moon's azimuth, engine space.
+    pub azimuth: Vec3,
+    /// The moon's irradiance above the air as a share of the sun's: [`MOON_FULL_RATIO`] ×
+    /// [`moon_phase_factor`]. The moon's table is multiplied by it when read, so a change of
+    /// phase rebuilds nothing.
+    pub scale: f32,
+}
 
 /// The moon's brightness relative to full at phase angle `phase_angle_deg` (0: full, 180: new).
 pub fn moon_phase_factor(phase_angle_deg: f64) -> f64 {
@@ -79,6 +108,29 @@ impl PhysicalSky {
             irradiance: SOLAR_IRRADIANCE * (MOON_FULL_RATIO * factor) * transmittance,
             sun_direction: now.sun_direction,
             phase_angle_deg: moon.phase_angle_deg,
+        }))
+    }
+
+    /// The moon's share of the sky ([`MoonSky`]); `None` without a date, by day (the sun above
+    /// [`MOON_SKY_SUN_ABOVE_DEG`]) or with the moon below [`MOON_SKY_MOON_BELOW_DEG`].
+    pub fn moon_sky(&self) -> Result<Option<MoonSky>, SkyError> {
+        let now = self.now()?;
+        let Some(moon) = now.moon else {
+            return Ok(None);
+        };
+        if now.sun.elevation_deg > MOON_SKY_SUN_ABOVE_DEG
+            || moon.horizontal.elevation_deg < MOON_SKY_MOON_BELOW_DEG
+        {
+            return Ok(None);
+        }
+        let flat = Horizontal {
+            elevation_deg: 0.0,
+            azimuth_deg: moon.horizontal.azimuth_deg,
+        };
+        Ok(Some(MoonSky {
+            table_elevation_deg: super::baker::table_elevation_deg(moon.horizontal.elevation_deg),
+            azimuth: flat.direction(),
+            scale: MOON_FULL_RATIO * moon_phase_factor(moon.phase_angle_deg) as f32,
         }))
     }
 

@@ -234,16 +234,22 @@ impl SkyTime {
 }
 
 /// The precomputed sky for one [`PhysicalSky`]: the sky-view texels (layout in `sky_view`)
-/// and the frame they are seen in.
+/// and the frame they are seen in; at night the moon's table follows the sun's
+/// ([`super::MoonSky`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct SkyTables {
-    /// `VIEW_WIDTH × VIEW_HEIGHT` RGB + padding texels, radiance.
+    /// `VIEW_WIDTH × VIEW_HEIGHT` RGB + padding texels, radiance; twice that with the moon's
+    /// table after the sun's.
     pub texels: Vec<[f32; 4]>,
     /// Unit vector towards the sun, engine space.
     pub sun_direction: Vec3,
     /// Unit horizontal vector towards the sun's azimuth (engine space; +X·… when the sun is at
     /// the zenith the azimuth still gives it).
     pub sun_azimuth: Vec3,
+    /// The moon's table's frame and scale as the tracers' uniforms hold them (`moon_sky`):
+    /// xyz the unit horizontal vector towards the moon's azimuth, w the moon's share of the
+    /// sun's irradiance (0: no moon's table).
+    pub moon_sky: [f32; 4],
 }
 
 impl SkyTables {
@@ -256,7 +262,12 @@ impl SkyTables {
         let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
         // The table's elevation step (`baker`), so a table built here equals the render side's.
         let elevation = (super::baker::table_elevation_deg(h.elevation_deg) as f32).to_radians();
-        let texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
+        let mut texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
+        let moon = sky.moon_sky()?;
+        if let Some(m) = moon {
+            let e = (m.table_elevation_deg as f32).to_radians();
+            texels.extend(build_view(&atmosphere, &transmittance, &multiple, e));
+        }
         let flat = Horizontal {
             elevation_deg: 0.0,
             azimuth_deg: h.azimuth_deg,
@@ -265,12 +276,15 @@ impl SkyTables {
             texels,
             sun_direction: h.direction(),
             sun_azimuth: flat.direction(),
+            moon_sky: moon_uniform(moon),
         })
     }
 
-    /// Sky radiance towards unit engine-space direction `d` (sun disc excluded).
+    /// Sky radiance towards unit engine-space direction `d` (sun and moon discs excluded; the
+    /// moonlit sky included).
     pub fn radiance(&self, d: Vec3) -> Vec3 {
         sky_view_radiance(&self.texels, self.sun_azimuth, d)
+            + moon_view_radiance(&self.texels, self.moon_sky, d)
     }
 }
 
@@ -281,4 +295,21 @@ pub fn sky_view_radiance(texels: &[[f32; 4]], sun_azimuth: Vec3, d: Vec3) -> Vec
     let side = Vec3::Y.cross(sun_azimuth);
     let azimuth = d.dot(side).atan2(d.dot(sun_azimuth));
     lookup_view(texels, elevation, azimuth)
+}
+
+/// The moon's table's frame and scale as the uniforms' `moon_sky` holds them (zero: none).
+pub fn moon_uniform(moon: Option<super::MoonSky>) -> [f32; 4] {
+    moon.map_or([0.0; 4], |m| m.azimuth.extend(m.scale).to_array())
+}
+
+/// The moonlit sky towards unit engine-space direction `d`: the moon's table (the second
+/// `VIEW_WIDTH × VIEW_HEIGHT` texels of `texels`) seen in the frame of `moon_sky.xyz` and
+/// multiplied by `moon_sky.w`; zero when `w` is 0 or the table is not there (a table still
+/// being rebuilt). Twin: `moon_view_radiance` in `shaders/shared/sky_view.wgsl`.
+pub fn moon_view_radiance(texels: &[[f32; 4]], moon_sky: [f32; 4], d: Vec3) -> Vec3 {
+    let n = super::VIEW_WIDTH * super::VIEW_HEIGHT;
+    if moon_sky[3] <= 0.0 || texels.len() < 2 * n {
+        return Vec3::ZERO;
+    }
+    sky_view_radiance(&texels[n..2 * n], Vec3::from_slice(&moon_sky[..3]), d) * moon_sky[3]
 }

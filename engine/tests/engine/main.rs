@@ -123,6 +123,7 @@ mod sky_energy;
 mod sky_ephemeris;
 mod sky_gpu;
 mod sky_level;
+mod sky_moonlit;
 mod sky_night;
 mod sky_night_render;
 mod sky_reference;

@@ -64,7 +64,7 @@ pub fn sky_radiance(u: &GpuFrameUniforms, sky_table: &[[f32; 4]], d: Vec3) -> Ve
             return Vec3::ZERO;
         }
         return sky_view_radiance(sky_table, Vec3::from_slice(&u.sky_horizon[..3]), d)
-            + night_radiance(u, d);
+            + night_radiance(u, sky_table, d);
     }
     let zenith = Vec3::from_slice(&u.sky_zenith[..3]);
     if u.sky_kind != SKY_GRADIENT {

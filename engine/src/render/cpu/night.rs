@@ -1,6 +1,6 @@
 //! The night sky that escaping rays see, CPU side (twin: `shaders/shared/night.wgsl`): the lit
 //! part of a disc (the moon's phase), the second disc (the fainter of sun and moon), the
-//! star field and the airglow, all read from the frame uniforms (`scene/discs.rs` fills them).
+//! star field, the airglow and the moonlit sky (the moon's sky-view table), all read from the frame uniforms (`scene/discs.rs` fills them).
 //!
 //! Any thread; pure functions in f32 (the same operations in the same order as the WGSL, so
 //! both tracers find the same stars). Directions are unit vectors in engine space; radiance
@@ -18,6 +18,7 @@ use glam::Vec3;
 use std::f32::consts::{LOG2_10, LOG10_2};
 
 use crate::layout::{GpuFrameUniforms, STAR_CELLS, STAR_THRESHOLD};
+use crate::sky::moon_view_radiance;
 
 /// (Earth radius / (Earth radius + 90 km))², the van Rhijn factor's constant.
 const VAN_RHIJN_K: f32 = 0.972_32;
@@ -139,8 +140,9 @@ pub fn star_field(u: &GpuFrameUniforms, d: Vec3) -> Vec3 {
     light * extinction(u, d.y)
 }
 
-/// Everything of the night an escaping ray adds to the sky table: the second disc, stars and
-/// airglow.
-pub fn night_radiance(u: &GpuFrameUniforms, d: Vec3) -> Vec3 {
-    second_disc(u, d) + star_field(u, d)
+/// Everything of the night an escaping ray adds to the sun's sky table: the second disc, stars,
+/// airglow and the moonlit sky (the moon's table in `sky_table`, `sky::moon_view_radiance`;
+/// nothing by day).
+pub fn night_radiance(u: &GpuFrameUniforms, sky_table: &[[f32; 4]], d: Vec3) -> Vec3 {
+    second_disc(u, d) + star_field(u, d) + moon_view_radiance(sky_table, u.moon_sky, d)
 }

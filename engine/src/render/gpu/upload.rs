@@ -17,19 +17,21 @@ const LINES: usize = 12;
 /// Index of the sky-view table's buffer in `GpuTracer::scene_buffers` (binding 16).
 const SKY_VIEW: usize = 13;
 
-/// The sky-view buffer's contents (binding 16): always `VIEW_WIDTH × VIEW_HEIGHT` texels, the
-/// scene's table, or zeros (a black sky, as the CPU tracer sees an empty table) when the sky is
-/// not physical or its table is not the full size.
+/// The sky-view buffer's contents (binding 16): always 2 × `VIEW_WIDTH × VIEW_HEIGHT` texels,
+/// the scene's sun's table then the moon's, zeros where a table is missing (a black sky, as
+/// the CPU tracer sees an empty table, when the sky is not physical; no moonlit sky by day).
 /// Then the cloud layer's optical depths (`SkyTable::clouds`), four to a texel, the last one
 /// padded with zeros (`shaders/shared/clouds.wgsl`).
 pub(super) fn sky_bytes(scene: &RenderScene) -> Vec<u8> {
     let len = VIEW_WIDTH * VIEW_HEIGHT;
     let texels = scene.sky.texels.as_slice();
-    let mut bytes = if texels.len() == len {
+    let texel = std::mem::size_of::<[f32; 4]>();
+    let mut bytes = if texels.len() == len || texels.len() == 2 * len {
         bytemuck::cast_slice(texels).to_vec()
     } else {
-        vec![0; len * std::mem::size_of::<[f32; 4]>()]
+        Vec::new()
     };
+    bytes.resize(2 * len * texel, 0);
     let clouds = scene.sky.clouds.as_slice();
     bytes.extend_from_slice(bytemuck::cast_slice(clouds));
     bytes.resize(bytes.len().next_multiple_of(16), 0);
