@@ -14,7 +14,8 @@
 //! One file per job: `config` (the trait and the errors), `replay_run` (and the start every headless
 //! mode shares), `fixed_steps`, `bench`, `soak`,
 //! `soak_levels`, `soak_shell` (the soak inside the game's shell: menus, settings, the editor,
-//! saves, level changes, driven by `menu_monkey`), `capture`, `shots` (the screenshot runs' cues), `windowed`, `first_person`, `ghosting`. Main thread (the engine's render thread renders).
+//! saves, level changes, driven by `menu_monkey`, its report `soak_shell_report`, the editor's gestures
+//! `soak_gestures`), `capture`, `shots` (the screenshot runs' cues), `windowed`, `first_person`, `ghosting`. Main thread (the engine's render thread renders).
 //! Must not: change the game, its level or any policy (they drive and measure), or name a
 //! particular game (its summaries and tables are the game's).
 
@@ -28,8 +29,10 @@ mod menu_monkey;
 mod replay_run;
 mod shots;
 pub mod soak;
+mod soak_gestures;
 mod soak_levels;
 mod soak_shell;
+mod soak_shell_report;
 mod windowed;
 
 pub use bench::{BenchFigures, bench_replay, median, table_head, table_row};
@@ -42,5 +45,6 @@ pub use menu_monkey::{Episode, MenuMonkey, MenuStep};
 pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
 pub use shots::{play_shots, start_cue, tour_shots};
 pub use soak_levels::{LevelSoak, soak_levels};
-pub use soak_shell::{ActionCounts, ShellSoak, ShellSoakReport, soak_shell};
+pub use soak_shell::{ShellSoak, soak_shell};
+pub use soak_shell_report::{ActionCounts, ShellSoakReport};
 pub use windowed::{WindowedPlay, play_windowed, windowed_render};

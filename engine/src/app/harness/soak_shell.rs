@@ -9,19 +9,22 @@
 //! report counts each action that took effect, the frames checked per screen, and each
 //! frame's wall time (for the distribution only: nothing asserts on it).
 //!
-//! Owns: [`soak_shell`], [`ShellSoak`], [`ShellSoakReport`], [`ActionCounts`]. Main thread
+//! Owns: [`soak_shell`], [`ShellSoak`] (the report is `soak_shell_report.rs`, the editor's
+//! gestures `soak_gestures.rs`). Main thread
 //! (the render thread renders). Must not: change the game or its level files (the editor's
 //! edits are never saved and it keeps no recovery file) or the player's real folders (the
 //! caller passes scratch [`UserDirs`]).
 
-use std::collections::{BTreeMap, VecDeque};
+use std::collections::BTreeMap;
 use std::time::Instant;
 
 use glam::Vec2;
 
 use super::menu_monkey::{Episode, MenuMonkey, MenuStep};
 use super::soak::{FILM, FILM_EVERY, SoakError, SoakReport, check_film_of, check_world, rss_bytes};
-use crate::app::edit::{EditMode, project};
+use super::soak_gestures::{Gesture, VIEW, drag, select, translation};
+use super::soak_shell_report::{ActionCounts, ShellSoakReport};
+use crate::app::edit::EditMode;
 use crate::app::input::InputMap;
 use crate::app::persist::{Progress, Settings, UserDirs};
 use crate::app::replay::{Monkey, StepInput};
@@ -29,8 +32,6 @@ use crate::app::runner::{Engine, Environment, Game};
 use crate::app::shell::{LevelStart, Screen, ShellConfig, ShellInput, ShellRun, continue_point};
 use crate::render::RenderConfig;
 
-/// The screen the shell and the editor are laid out on, points.
-const VIEW: Vec2 = Vec2::new(1280.0, 720.0);
 /// Frames a stuck screen (no episode under way, not playing) is left before the soak steps in.
 const STUCK: u32 = 120;
 
@@ -47,95 +48,11 @@ pub struct ShellSoak {
     pub dirs: UserDirs,
 }
 
-/// What the menu monkey did that took effect (each counted once it is seen done).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
-pub struct ActionCounts {
-    /// Playing → Paused, and back.
-    pub paused: u64,
-    pub resumed: u64,
-    /// The settings screen shown, a setting changed and saved to the settings file, left.
-    pub settings_opened: u64,
-    pub settings_changed: u64,
-    pub settings_closed: u64,
-    /// The editor drawn over the level (F1), and left for play.
-    pub editor_opened: u64,
-    pub editor_closed: u64,
-    /// A click in the editor's view selected an instance.
-    pub selected: u64,
-    /// A drag on the gizmo made one edit.
-    pub dragged: u64,
-    /// Ctrl+Z put the dragged instance back.
-    pub undone: u64,
-    /// Quitting to the title wrote the progress save (read back equal).
-    pub saved: u64,
-    /// The save read back from its file and continued from: playing its level.
-    pub loaded: u64,
-    /// Another level started from the title: playing it.
-    pub levels_changed: u64,
-}
-
-impl ActionCounts {
-    /// The actions that never took effect, by name (empty: every one did).
-    pub fn missing(&self) -> Vec<&'static str> {
-        let all = [
-            ("pause", self.paused),
-            ("resume", self.resumed),
-            ("settings opened", self.settings_opened),
-            ("setting changed", self.settings_changed),
-            ("settings closed", self.settings_closed),
-            ("editor opened", self.editor_opened),
-            ("editor closed", self.editor_closed),
-            ("editor select", self.selected),
-            ("editor drag", self.dragged),
-            ("editor undo", self.undone),
-            ("save", self.saved),
-            ("load", self.loaded),
-            ("level changed", self.levels_changed),
-        ];
-        all.iter()
-            .filter(|(_, n)| *n == 0)
-            .map(|(s, _)| *s)
-            .collect()
-    }
-}
-
-/// What a shell soak saw.
-#[derive(Clone, Debug)]
-pub struct ShellSoakReport {
-    /// The soak's checks and memory.
-    pub soak: SoakReport,
-    pub counts: ActionCounts,
-    /// Frames the per-frame checks ran on, by the screen shown (`Playing`, `Paused`, …).
-    pub checked: BTreeMap<String, u64>,
-    /// Each frame's wall time, milliseconds (the whole loop: shell, editor, engine, checks).
-    pub frame_ms: Vec<f32>,
-}
-
-impl ShellSoakReport {
-    /// The frame-time distribution: (median, p99, max), milliseconds.
-    pub fn frame_times(&self) -> (f32, f32, f32) {
-        let mut v = self.frame_ms.clone();
-        if v.is_empty() {
-            return (0.0, 0.0, 0.0);
-        }
-        v.sort_by(f32::total_cmp);
-        let at = |p: f64| v[((v.len() - 1) as f64 * p).round() as usize];
-        (at(0.5), at(0.99), v[v.len() - 1])
-    }
-}
-
 /// What the soak waits to see after a step.
 enum Expect {
     Saved(String),
     Playing(LevelStart),
     Loaded(LevelStart),
-}
-
-/// The editor gesture under way: one list of events per pass, then what to check.
-struct Gesture {
-    passes: VecDeque<(Vec<egui::Event>, egui::Modifiers)>,
-    /// After a drag: the instance dragged and its translation before.
-    dragged: Option<(usize, [f32; 3])>,
 }
 
 /// Soaks `game` (not yet set up) in `environment` inside its shell, as [`ShellSoak`] says.
@@ -425,72 +342,5 @@ pub fn soak_shell<G: Game>(
         counts,
         checked,
         frame_ms,
-    })
-}
-
-/// The document's translation of instance `index`.
-fn translation(mode: &EditMode, index: usize) -> Option<[f32; 3]> {
-    let entry = mode.state.doc.level.instances.get(index)?;
-    Some(entry.transform.translation)
-}
-
-fn moved(p: Vec2) -> egui::Event {
-    egui::Event::PointerMoved(egui::pos2(p.x, p.y))
-}
-
-fn button(p: Vec2, pressed: bool) -> egui::Event {
-    egui::Event::PointerButton {
-        pos: egui::pos2(p.x, p.y),
-        button: egui::PointerButton::Primary,
-        pressed,
-        modifiers: egui::Modifiers::NONE,
-    }
-}
-
-/// A click where instance `pick` (modulo the document's count) shows, if it is in view.
-fn select(mode: &EditMode, pick: u32) -> Option<Gesture> {
-    let camera = mode.camera?.desc();
-    let instances = &mode.state.doc.level.instances;
-    let n = instances.len();
-    // The first of the instances from `pick` on whose origin is in the view.
-    let p = (0..n).find_map(|k| {
-        let entry = &instances[(pick as usize + k) % n];
-        let p = project(&camera, VIEW, glam::Vec3::from(entry.transform.translation))?;
-        (p.cmpge(Vec2::ZERO).all() && p.cmplt(VIEW).all()).then_some(p)
-    })?;
-    let none = egui::Modifiers::NONE;
-    Some(Gesture {
-        passes: [
-            vec![moved(p)],
-            vec![button(p, true)],
-            vec![button(p, false)],
-        ]
-        .into_iter()
-        .map(|e| (e, none))
-        .collect(),
-        dragged: None,
-    })
-}
-
-/// A drag of the selection's gizmo handle `axis` by `by` points, over six passes.
-fn drag(mode: &EditMode, axis: usize, by: Vec2) -> Option<Gesture> {
-    let index = mode.state.selection.primary()?;
-    let camera = mode.camera?.desc();
-    let entry = mode.state.doc.level.instances.get(index)?;
-    let handles = mode.gizmo.handles(&camera, VIEW, entry)?;
-    let end = handles.ends_px.get(axis).copied().flatten()?;
-    let grab = handles.centre_px.lerp(end, 0.7);
-    let mut passes = vec![vec![moved(grab)], vec![button(grab, true)]];
-    for k in 1..=6 {
-        passes.push(vec![moved(grab + by * k as f32 / 6.0)]);
-    }
-    passes.push(vec![button(grab + by, false)]);
-    passes.push(Vec::new());
-    Some(Gesture {
-        passes: passes
-            .into_iter()
-            .map(|e| (e, egui::Modifiers::NONE))
-            .collect(),
-        dragged: Some((index, entry.transform.translation)),
     })
 }
