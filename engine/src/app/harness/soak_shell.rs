@@ -213,11 +213,12 @@ pub fn soak_shell<G: Game>(
             counts.editor_closed += 1;
         }
         let editing = edit.as_ref().is_some_and(EditMode::active);
-        if editing && let Some(g) = gesture.as_mut() {
-            if let Some((e, m)) = g.passes.pop_front() {
-                events.extend(e);
-                modifiers = m;
-            }
+        if editing
+            && let Some(g) = gesture.as_mut()
+            && let Some((e, m)) = g.passes.pop_front()
+        {
+            events.extend(e);
+            modifiers = m;
         }
         let input = egui::RawInput {
             screen_rect: Some(egui::Rect::from_min_size(
@@ -274,10 +275,10 @@ pub fn soak_shell<G: Game>(
             (Screen::Settings, a) if a != Screen::Settings => counts.settings_closed += 1,
             _ => {}
         }
-        if let Some(want) = changed_setting.take() {
-            if shell.files().settings == want {
-                counts.settings_changed += 1;
-            }
+        if let Some(want) = changed_setting.take()
+            && shell.files().settings == want
+        {
+            counts.settings_changed += 1;
         }
         if let Some(mode) = edit.as_ref().filter(|m| m.active()) {
             if let Some(g) = gesture.take_if(|g| g.passes.is_empty()) {
@@ -316,15 +317,15 @@ pub fn soak_shell<G: Game>(
                     counts.saved += 1;
                 }
             }
-            Some(Expect::Playing(start)) if after == Screen::Playing => {
-                if shell.state().level() == Some(&start) {
-                    counts.levels_changed += 1;
-                }
+            Some(Expect::Playing(start))
+                if after == Screen::Playing && shell.state().level() == Some(&start) =>
+            {
+                counts.levels_changed += 1;
             }
-            Some(Expect::Loaded(start)) if after == Screen::Playing => {
-                if shell.state().level() == Some(&start) {
-                    counts.loaded += 1;
-                }
+            Some(Expect::Loaded(start))
+                if after == Screen::Playing && shell.state().level() == Some(&start) =>
+            {
+                counts.loaded += 1;
             }
             Some(Expect::Saved(_)) | Some(Expect::Playing(_)) | Some(Expect::Loaded(_)) => {}
             None => {}
