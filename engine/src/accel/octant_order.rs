@@ -10,7 +10,10 @@
 //! octants); sorting the occupied slots by insertion gives the same permutation with about a
 //! quarter of the comparisons (the test below checks it against the pairwise ranking). In
 //! It's About Time's bench, before this change, the ranking was 46 % of `refit_blas` (perf,
-//! 2026-12-06; `docs/PERFORMANCE.md`).
+//! 2026-12-06; `docs/PERFORMANCE.md`). A refit starts each sort from the node's previous order
+//! ([`octant_orders_from`]): the order is unique (a strict total order), so the result is the
+//! same bits from any start, and a node whose children barely moved is already sorted (one
+//! comparison per slot instead of a quarter of all pairs).
 
 use glam::Vec3;
 
@@ -22,6 +25,32 @@ use crate::layout::{GpuBvh8Node, INVALID};
 /// goes to bits `3o..3o+3` of `perm[i]`. Octant `7 − o` sees the keys negated, so it sorts
 /// them the other way (ties still by slot index).
 pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
+    orders(node, None)
+}
+
+/// [`octant_orders`] of `node`, each sort started from the order in `previous` (the node's
+/// `perm` before its boxes moved: a refit). Bit for bit the same as [`octant_orders`] whatever
+/// `previous` holds; a `previous` whose occupied ranks are not exactly the node's occupied
+/// slots (another node's, garbage) starts from slot order instead.
+pub(crate) fn octant_orders_from(node: &GpuBvh8Node, previous: &[u32; 8]) -> [u32; 8] {
+    orders(node, Some(previous))
+}
+
+/// The first `n` ranks of `previous`'s order for `octant`, when they are exactly the slots of
+/// `mask` (bit `s`: slot `s` occupied, `n` bits set).
+fn start(previous: Option<&[u32; 8]>, octant: u32, n: usize, mask: u32) -> Option<[usize; 8]> {
+    let previous = previous?;
+    let mut order = [0usize; 8];
+    let mut seen = 0u32;
+    for rank in 0..n {
+        let s = previous[rank] >> (3 * octant) & 7;
+        seen |= 1 << s;
+        order[rank] = s as usize;
+    }
+    (seen == mask).then_some(order)
+}
+
+fn orders(node: &GpuBvh8Node, previous: Option<&[u32; 8]>) -> [u32; 8] {
     let centers: [Vec3; 8] = std::array::from_fn(|s| {
         Vec3::new(
             node.min_x[s] + node.max_x[s],
@@ -30,10 +59,11 @@ pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
         )
     });
     let (mut occupied, mut empty) = ([0usize; 8], [0usize; 8]);
-    let (mut n, mut m) = (0, 0);
+    let (mut n, mut m, mut mask) = (0, 0, 0u32);
     for s in 0..8 {
         if node.child[s] != INVALID {
             occupied[n] = s;
+            mask |= 1 << s;
             n += 1;
         } else {
             empty[m] = s;
@@ -49,11 +79,11 @@ pub(crate) fn octant_orders(node: &GpuBvh8Node) -> [u32; 8] {
         );
         let key: [f32; 8] = std::array::from_fn(|s| centers[s].dot(sign));
         // total_cmp: a strict total order even for NaN keys (centres that overflowed).
-        let mut order = occupied;
+        let mut order = start(previous, octant, n, mask).unwrap_or(occupied);
         sort_by(&mut order[..n], |a, b| {
             key[a].total_cmp(&key[b]).then(a.cmp(&b)).is_lt()
         });
-        let mut order_rev = occupied;
+        let mut order_rev = start(previous, 7 - octant, n, mask).unwrap_or(occupied);
         sort_by(&mut order_rev[..n], |a, b| {
             key[b].total_cmp(&key[a]).then(a.cmp(&b)).is_lt()
         });
@@ -176,5 +206,59 @@ mod tests {
                 "case {case}: {node:?}"
             );
         }
+    }
+
+    /// Every sort started from another order (the node's own before its boxes moved, another
+    /// node's, garbage) gives the bits of a sort from slot order.
+    #[test]
+    fn an_order_started_from_any_previous_order_is_the_same_bits() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state
+        };
+        let mut warm = 0;
+        for case in 0..20_000 {
+            let mut node = GpuBvh8Node::EMPTY;
+            for s in 0..8 {
+                let r = next();
+                if r % 5 == 0 {
+                    continue;
+                }
+                let v = |shift: u32| ((r >> shift) % 7) as f32 - 3.0;
+                node.child[s] = s as u32;
+                node.min_x[s] = v(8);
+                node.max_x[s] = v(8) + v(11).abs();
+                node.min_y[s] = v(14);
+                node.max_y[s] = v(14) + v(17).abs();
+                node.min_z[s] = v(20);
+                node.max_z[s] = v(20) + v(23).abs();
+                if r % 89 == 1 {
+                    node.min_z[s] = f32::NAN;
+                }
+            }
+            let before = octant_orders(&node);
+            // The same node moved a little (a refit), or the previous order is garbage.
+            let mut moved = node;
+            for s in 0..8 {
+                let d = (next() % 9) as f32 * 0.25 - 1.0;
+                moved.min_y[s] += d;
+                moved.max_y[s] += d;
+            }
+            let previous = match case % 3 {
+                0 => before,
+                1 => std::array::from_fn(|_| next() as u32),
+                _ => octant_orders(&moved),
+            };
+            warm += usize::from(case % 3 != 1);
+            assert_eq!(
+                octant_orders_from(&moved, &previous),
+                octant_orders(&moved),
+                "case {case}: {moved:?} from {previous:?}"
+            );
+        }
+        assert!(warm > 10_000);
     }
 }

@@ -416,6 +416,12 @@ impl Upkeep {
     pub(super) fn push(&mut self, write: SceneWrite) {
         let header = self.scene.header();
         self.scene.apply(std::slice::from_ref(&write), &header);
+        self.push_applied(write);
+    }
+
+    /// [`Self::push`] of a write the caller has already made to the game-side copy (the same
+    /// bytes in the same range): only recorded for the commit.
+    pub(super) fn push_applied(&mut self, write: SceneWrite) {
         self.pending.retain(|earlier| !write.supersedes(earlier));
         self.pending.push(write);
     }

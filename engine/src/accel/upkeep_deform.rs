@@ -42,16 +42,26 @@ impl Upkeep {
         // Taken out while the upkeep writes (not cloned: a frame of several settled steps
         // deforms the explorer once per step), put back below.
         let mut slot = std::mem::replace(&mut self.meshes[slot_index], MeshSlot::vacant());
-        let mut vertices = self.scene.vertices[first..first + count].to_vec();
+        // Written in place in the game-side scene, then copied once for the commit (not copied
+        // out, written, and copied back in by `push`: perf 2026-12-07, `docs/PERFORMANCE.md`).
+        let Some(vertices) = self.scene.vertices.get_mut(first..first + count) else {
+            log::warn!(
+                "deform: mesh's vertices {first}..{} out of range",
+                first + count
+            );
+            self.meshes[slot_index] = slot;
+            return;
+        };
         for (i, v) in vertices.iter_mut().enumerate() {
             v.position = positions[i].to_array();
             if let Some(n) = normals {
                 v.normal = n[i].to_array();
             }
         }
-        self.push(SceneWrite::Vertices {
+        let data = vertices.to_vec();
+        self.push_applied(SceneWrite::Vertices {
             first: first as u32,
-            data: vertices,
+            data,
         });
         puffin::profile_scope!("BLAS refit/rebuild");
         let refit = refit_blas_measured(&mut slot.blas, positions, &slot.triangles);

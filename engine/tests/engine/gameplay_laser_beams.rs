@@ -318,3 +318,42 @@ fn the_beam_shows_its_emission_and_lights_the_floor() -> anyhow::Result<()> {
     drop(off.shutdown());
     Ok(())
 }
+
+/// Spawning the level again (what the editor's F1 and a restart do: `despawn_level`, then
+/// `spawn_level_with` the same models) reuses the laser's beam model: the scene does not grow.
+/// Found by the shell soak (`reflect --soak-shell`, `docs/RELIABILITY.md`): every F1 added
+/// one beam model per laser.
+#[test]
+fn spawning_the_level_again_does_not_grow_the_scene() -> anyhow::Result<()> {
+    let dir = std::env::temp_dir().join(format!("candela_beams_again_{}", std::process::id()));
+    std::fs::create_dir_all(&dir)?;
+    let _scratch = Scratch(dir.clone());
+    let path = dir.join("beams.ron");
+    std::fs::write(&path, level(BEAM))?;
+    let level = load_level(&path, &AssetRoot::new(&dir)?)?;
+    let mut engine = Engine::new(
+        RenderConfig::cpu(16, 8),
+        candela::app::Environment::of(&level.scene),
+    )?;
+    let mut spawned = engine.spawn_level(&level);
+    frames(&mut engine, 2)?;
+    let sizes = |engine: &Engine| {
+        let s = engine.scene();
+        (
+            s.triangles.len(),
+            s.vertices.len(),
+            s.materials.len(),
+            s.blocks.len(),
+        )
+    };
+    let first = sizes(&engine);
+    for again in 1..=4 {
+        engine.despawn_level(&spawned, &level);
+        spawned = engine.spawn_level_with(&level, Some(spawned.models.clone()));
+        frames(&mut engine, 2)?;
+        assert_eq!(sizes(&engine), first, "spawned again {again} times");
+        let emitter = spawned.by_name["emitter"];
+        assert_beams_on_path(&engine, emitter)?;
+    }
+    Ok(())
+}

@@ -90,6 +90,11 @@ pub struct Args {
     /// With --soak: the monkey's seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// Headless: play the whole game this many frames inside its shell with random input
+    /// and random menus, settings, editor, saves and chamber changes, checking every frame
+    /// (see `reflect::soak::soak_shell`); prints Markdown tables. Uses --seed.
+    #[arg(long)]
+    pub soak_shell: Option<u64>,
     /// With --soak: only this chamber (`chamber_1` …); every chamber when absent.
     #[arg(long)]
     pub soak_chamber: Option<String>,
@@ -171,6 +176,16 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         };
         let results = crate::soak::soak_chambers(&world, &chambers, frames, args.seed)?;
         return Ok(crate::soak::table(&results, args.seed));
+    }
+    if let Some(frames) = args.soak_shell {
+        let report = crate::soak::soak_shell(
+            &world,
+            frames,
+            args.seed,
+            crate::soak::SHELL_EVERY,
+            Vec::new(),
+        )?;
+        return Ok(crate::soak::shell_table(&report, args.seed));
     }
     if args.bench_editor {
         return crate::bench_editor::bench_editor(&world);

@@ -1,7 +1,7 @@
 //! Each headless mode of the built `reflect` binary, run as a player would run it: a chamber's
 //! committed replay with `--headless` exits 0 and prints the summary line; a copy cut to its
 //! first half (a valid recording that stops before the chamber is solved) exits non-zero and
-//! says so; `--bench` (half a second a chamber), `--soak 100` and `--capture` (64×36, two frames a
+//! says so; `--bench` (half a second a chamber), `--soak 100`, `--soak-shell 300` and `--capture` (64×36, two frames a
 //! chamber) each complete and print what they made (one test each, so they run side by side). Small settings: the modes' plumbing is
 //! under test here, not their figures (`replays.rs` checks what the replays do).
 
@@ -143,5 +143,15 @@ fn capture_writes_a_png_per_chamber() -> TestResult {
             png.display()
         );
     }
+    Ok(())
+}
+
+#[test]
+fn soak_inside_the_shell_completes_and_prints_its_tables() -> TestResult {
+    let out = reflect(&["--soak-shell", "300", "--seed", "3"])?;
+    let stdout = text(&out.stdout);
+    assert!(out.status.success(), "{out:?}");
+    assert!(stdout.contains("| 300 | 3 |"), "{stdout}");
+    assert!(stdout.contains("Frames checked per screen:"), "{stdout}");
     Ok(())
 }

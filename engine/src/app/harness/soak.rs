@@ -19,7 +19,7 @@ pub const KILL_Y: f32 = -100.0;
 /// Frames between film checks.
 pub const FILM_EVERY: u64 = 500;
 /// Film size of the soak (pixels): small, since the soak is about the game, not the picture.
-const FILM: (u32, u32) = (32, 18);
+pub(super) const FILM: (u32, u32) = (32, 18);
 
 /// What a soak saw.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -120,7 +120,7 @@ pub fn soak<G: Game>(
 }
 
 /// Waits for the captured frame (rendered after this frame's hand-off) and checks its film.
-fn check_film_of(engine: &Engine, frame: u64) -> Result<(), SoakError> {
+pub(super) fn check_film_of(engine: &Engine, frame: u64) -> Result<(), SoakError> {
     loop {
         let Some(result) = engine.wait_rendered() else {
             return Err(SoakError::RenderStopped { frame });
@@ -139,7 +139,7 @@ fn check_film_of(engine: &Engine, frame: u64) -> Result<(), SoakError> {
     }
 }
 
-fn check_world(engine: &Engine, frame: u64) -> Result<(), SoakError> {
+pub(super) fn check_world(engine: &Engine, frame: u64) -> Result<(), SoakError> {
     let world = engine.world();
     let mut query = world.query::<(hecs::Entity, &Transform)>();
     for (entity, t) in query.iter() {

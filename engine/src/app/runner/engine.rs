@@ -92,6 +92,10 @@ pub struct Engine {
     /// Whether frames of several steps settle the world and the query scene before each extra
     /// step (`app/step_scene.rs`; [`Engine::settle_every_step`]).
     pub(in crate::app) settle_steps: bool,
+    /// The laser beams' models registered so far, by their radiance's bits (`level.rs`): a
+    /// level spawned again (the editor's F1, a restart) reuses them instead of growing the
+    /// scene by one model per laser each time.
+    pub(in crate::app) beam_models: std::collections::HashMap<[u32; 3], crate::ecs::ModelHandle>,
     /// What moved since the last commit (the cut is `cut`'s).
     pub(in crate::app) motion: Motion,
     /// The sun and sky the last commit carried (for `Motion::lighting`; `time_of_day.rs`).
@@ -179,6 +183,7 @@ impl Engine {
             progress_events: Vec::new(),
             step_scene_current: true,
             settle_steps: false,
+            beam_models: std::collections::HashMap::new(),
             motion: Motion::default(),
             committed_light: None,
             sky_meter: super::sky_exposure::SkyMeter::new(sky_rebuild),

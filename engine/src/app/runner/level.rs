@@ -141,7 +141,17 @@ impl Engine {
         for laser in &level.gameplay.lasers {
             if let (Some(beam), Some(&entity)) = (laser.beam, spawned.entities.get(laser.instance))
             {
-                let model = self.upkeep.add_model(&beam_model(&beam));
+                // One model per beam colour for the engine's life: spawning the level again
+                // (the editor, a restart) must not grow the scene (soak, 2026-12-07).
+                let key = beam.radiance.to_array().map(f32::to_bits);
+                let model = match self.beam_models.get(&key) {
+                    Some(&model) => model,
+                    None => {
+                        let model = self.upkeep.add_model(&beam_model(&beam));
+                        self.beam_models.insert(key, model);
+                        model
+                    }
+                };
                 spawn_beam_pool(&mut self.world, entity, model, &beam);
             }
         }
