@@ -309,7 +309,7 @@ impl EditMode {
         };
         match saved {
             Ok(reports) => {
-                let files: Vec<String> = reports.iter().map(written).collect();
+                let files: Vec<String> = reports.iter().map(|r| written(r, root.path())).collect();
                 self.say(format!("saved {}", files.join("; ")));
                 true
             }
@@ -342,12 +342,15 @@ impl EditMode {
 }
 
 /// What the status line says of one file a save wrote.
-fn written(report: &SaveReport) -> String {
+/// The status line's words for one written file: its path under the asset root `root` (in
+/// full when outside it), its size and how much of it changed.
+fn written(report: &SaveReport, root: &std::path::Path) -> String {
+    let path = report.path.strip_prefix(root).unwrap_or(&report.path);
     let how = match &report.rewritten {
         None => "only the edited items changed".to_string(),
         Some(why) => format!("the whole file rewritten: {why}"),
     };
-    format!("{} ({} bytes, {how})", report.path.display(), report.bytes)
+    format!("{} ({} bytes, {how})", path.display(), report.bytes)
 }
 
 /// A fly speed for the level: its size crossed in about ten seconds.
