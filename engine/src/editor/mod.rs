@@ -46,7 +46,8 @@ pub use history::{History, HistoryEntry};
 pub use pick::{Picked, ViewBasis, pick, pixel_ray};
 pub use place::{Palette, PaletteItem, model_files, model_names, place_edit};
 pub use recovery::{
-    RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
+    RecoveryInfo, base_recovery_path, discard_recovery, find_recovery, recovery_path,
+    restore_recovery, write_recovery,
 };
 pub use save::{SaveError, SaveReport, backup_path, save_document, write_document};
 pub use selection::{SelectMode, Selection};

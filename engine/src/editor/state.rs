@@ -19,7 +19,7 @@ use super::history::History;
 use super::place::Palette;
 use super::recovery::write_recovery;
 use super::save::{SaveError, SaveReport, save_document, write_document};
-use super::save_world::save_changed;
+use super::save_world::{on_disk_is, save_changed};
 use super::selection::Selection;
 use super::snap::Snap;
 
@@ -230,8 +230,13 @@ impl EditorState {
         Ok(reports)
     }
 
-    /// Writes the recovery file (after each command; see `recovery` and `app::edit`).
+    /// Writes the recovery file (after each command; see `recovery` and `app::edit`), with the
+    /// base's when the base file was edited (it differs from what its file holds).
     pub fn write_recovery(&self) -> Result<PathBuf, SaveError> {
-        write_recovery(&self.path, &self.doc)
+        let base = (self.doc.base.as_deref())
+            .zip(self.base_path.as_deref())
+            .filter(|(base, path)| !on_disk_is(path, &base.level))
+            .map(|(base, _)| base);
+        write_recovery(&self.path, &self.doc, base)
     }
 }

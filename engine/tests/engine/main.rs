@@ -66,6 +66,7 @@ mod editor_composed;
 mod editor_full_disk;
 mod editor_inspect;
 mod editor_kill;
+mod editor_kill_composed;
 mod editor_mode;
 mod editor_mode_box;
 mod editor_names;
