@@ -34,6 +34,9 @@ pub struct EditorState {
     pub snap: Snap,
     /// The palette's model files and its current piece (`place`).
     pub palette: Palette,
+    /// The palette's thumbnails (`thumbs`), shared by copies of the state; `None`: the palette
+    /// draws none (set by the runner when it opens the editor).
+    pub thumbs: Option<std::sync::Arc<std::sync::Mutex<super::thumbs::Thumbnails>>>,
     /// The file of the document's base (`Document::base`, Reflect's `common.ron`): a save
     /// writes the base's changes there. `None`: the file is a level on its own.
     pub base_path: Option<PathBuf>,
@@ -61,6 +64,7 @@ impl EditorState {
             selection: Selection::default(),
             snap: Snap::default(),
             palette: Palette::default(),
+            thumbs: None,
             base_path: None,
             bounds: None,
             problems: Vec::new(),

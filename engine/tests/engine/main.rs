@@ -77,6 +77,7 @@ mod editor_problem_select;
 mod editor_recovery;
 mod editor_save;
 mod editor_save_minimal;
+mod editor_thumbs;
 mod editor_typing;
 mod editor_ui;
 mod editor_undo;

@@ -21,8 +21,8 @@ use crate::app::runner::Engine;
 use crate::app::runner::SpawnedLevel;
 use crate::ecs::{CameraRig, Transform};
 use crate::editor::{
-    Document, DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, SaveReport, Touch,
-    find_recovery,
+    Document, DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, SaveReport,
+    Thumbnails, Touch, find_recovery,
 };
 
 /// Messages kept for the toolbar.
@@ -70,6 +70,8 @@ impl EditMode {
         let mut state = EditorState::open(&target.path)?;
         let folder = super::place::palette_folder(&target.path);
         state.palette.files = crate::editor::model_files(target.root.path(), &folder);
+        let thumbs = Thumbnails::new(target.root.clone(), crate::editor::user_cache_dir());
+        state.thumbs = Some(std::sync::Arc::new(std::sync::Mutex::new(thumbs)));
         if let Some(base_path) = &target.base_path {
             state.set_base(base_path, Document::open(base_path)?);
         }
@@ -211,6 +213,11 @@ impl EditMode {
         let out = crate::editor::ui::panels(ctx, &mut self.state);
         for e in &out.errors {
             self.say(e.clone());
+        }
+        let failed = (self.state.thumbs.as_ref())
+            .and_then(|t| t.lock().ok().map(|mut t| std::mem::take(&mut t.messages)));
+        for message in failed.unwrap_or_default() {
+            self.say(message);
         }
         let mut touched = out.touched;
         if let Some(item) = &out.place {

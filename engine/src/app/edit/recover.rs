@@ -86,6 +86,7 @@ impl EditMode {
             Ok(mut doc) => {
                 let selection = std::mem::take(&mut self.state.selection);
                 let palette = std::mem::take(&mut self.state.palette);
+                let thumbs = self.state.thumbs.take();
                 let base_path = self.state.base_path.take();
                 let with_base = doc.base.is_some();
                 if !with_base {
@@ -93,6 +94,7 @@ impl EditMode {
                 }
                 self.state = EditorState::restored(&path, doc);
                 self.state.palette = palette;
+                self.state.thumbs = thumbs;
                 self.state.base_path = base_path;
                 self.recovered_state = self.state.history.state_id();
                 self.state.selection = selection;
