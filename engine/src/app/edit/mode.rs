@@ -12,6 +12,8 @@
 use glam::Vec3;
 use hecs::Entity;
 
+use std::path::PathBuf;
+
 use super::box_select::BoxDrag;
 use super::camera::EditorCamera;
 use super::gizmo::Gizmo;
@@ -62,6 +64,9 @@ pub struct EditMode {
     /// Whether recovery files are written (tools and tests that edit committed levels they
     /// must not write beside turn it off).
     pub(super) recovery_files: bool,
+    /// Where the palette's thumbnails are cached, until the first pass makes them (`None`:
+    /// none are made).
+    thumbnail_cache: Option<PathBuf>,
 }
 
 impl EditMode {
@@ -70,8 +75,6 @@ impl EditMode {
         let mut state = EditorState::open(&target.path)?;
         let folder = super::place::palette_folder(&target.path);
         state.palette.files = crate::editor::model_files(target.root.path(), &folder);
-        let thumbs = Thumbnails::new(target.root.clone(), crate::editor::user_cache_dir());
-        state.thumbs = Some(std::sync::Arc::new(std::sync::Mutex::new(thumbs)));
         if let Some(base_path) = &target.base_path {
             state.set_base(base_path, Document::open(base_path)?);
         }
@@ -91,6 +94,7 @@ impl EditMode {
             pending_restore: false,
             box_drag: None,
             recovery_files: true,
+            thumbnail_cache: Some(crate::editor::user_cache_dir()),
         })
     }
 
@@ -103,6 +107,13 @@ impl EditMode {
     /// The rubber band of a box select being dragged (points from the view's corner).
     pub fn box_drag(&self) -> Option<BoxDrag> {
         self.box_drag
+    }
+
+    /// Caches the palette's thumbnails in `cache` instead of the user's cache folder (`None`:
+    /// draws none). Tests give a scratch folder.
+    pub fn with_thumbnail_cache(mut self, cache: Option<PathBuf>) -> Self {
+        self.thumbnail_cache = cache;
+        self
     }
 
     /// Writes no recovery files from now on (for tools and tests over committed levels).
@@ -210,6 +221,10 @@ impl EditMode {
             return frame;
         }
         self.state.bounds = self.selection_bounds();
+        if let Some(cache) = self.thumbnail_cache.take() {
+            let thumbs = Thumbnails::new(self.world.target.root.clone(), cache);
+            self.state.thumbs = Some(std::sync::Arc::new(std::sync::Mutex::new(thumbs)));
+        }
         let out = crate::editor::ui::panels(ctx, &mut self.state);
         for e in &out.errors {
             self.say(e.clone());
