@@ -105,7 +105,8 @@ fn the_editor_draws_its_windows_highlight_and_gizmo_over_the_traced_chamber() {
         Cue::screenshot(60, shot("play")),
         Cue::input(2, ShellInput::EditorToggle),
         Cue::screenshot(40, shot("edit")),
-        Cue::editor(2, |state| {
+        Cue::editor(2, |mode| {
+            let state = &mut mode.state;
             let panel = state
                 .doc
                 .level

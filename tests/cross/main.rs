@@ -14,6 +14,7 @@ mod bvh;
 mod capture_budget;
 mod clouds;
 mod demo;
+mod editor_session;
 mod editor_window;
 mod far_from_origin;
 mod furnace;

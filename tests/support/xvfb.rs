@@ -2,7 +2,7 @@
 //! process at it, and send a window the window manager's close request.
 //!
 //! Owns: the Xvfb child process (killed on drop) and the process environment of a window test
-//! (`DISPLAY`, `XDG_RUNTIME_DIR`, no Wayland). Must not: be used by tests that share their
+//! (`DISPLAY`, `XDG_RUNTIME_DIR`, `XDG_CACHE_HOME`, no Wayland). Must not: be used by tests that share their
 //! process with other tests (winit allows one event loop per process; the environment is global).
 
 use std::path::Path;
@@ -68,7 +68,8 @@ pub fn start_xvfb() -> Xvfb {
     }
 }
 
-/// Points this process at `display`, with a private runtime folder under `scratch`.
+/// Points this process at `display`, with a private runtime folder and cache folder (the
+/// editor's thumbnails) under `scratch`.
 pub fn set_environment(display: &str, scratch: &Path) {
     let runtime = scratch.join("xdg");
     std::fs::create_dir_all(&runtime).expect("runtime dir");
@@ -83,6 +84,7 @@ pub fn set_environment(display: &str, scratch: &Path) {
         std::env::set_var("DISPLAY", display);
         std::env::remove_var("WAYLAND_DISPLAY");
         std::env::set_var("XDG_RUNTIME_DIR", &runtime);
+        std::env::set_var("XDG_CACHE_HOME", scratch.join("cache"));
         if std::env::var_os("WGPU_BACKEND").is_none() {
             std::env::set_var("WGPU_BACKEND", "vulkan");
         }

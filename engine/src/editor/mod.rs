@@ -31,6 +31,7 @@ mod selection;
 mod snap;
 mod splice;
 mod state;
+mod thumbs;
 pub mod ui;
 mod write;
 
@@ -46,10 +47,15 @@ pub use history::{History, HistoryEntry};
 pub use pick::{Picked, ViewBasis, pick, pixel_ray};
 pub use place::{Palette, PaletteItem, model_files, model_names, place_edit};
 pub use recovery::{
-    RecoveryInfo, discard_recovery, find_recovery, recovery_path, restore_recovery, write_recovery,
+    RecoveryInfo, base_recovery_path, discard_recovery, find_recovery, recovery_path,
+    restore_recovery, write_recovery,
 };
 pub use save::{SaveError, SaveReport, backup_path, save_document, write_document};
 pub use selection::{SelectMode, Selection};
 pub use snap::{Snap, snap_angle_deg, snap_scale, snap_value};
 pub use state::EditorState;
+pub use thumbs::{
+    Shown, Source, THUMB_PIXELS, THUMB_SPP, ThumbError, Thumbnails, content_hash, render_thumbnail,
+    user_cache_dir,
+};
 pub use write::render_document;

@@ -43,6 +43,14 @@ pub enum SaveError {
     /// A file could not be written (the error names it and the stage).
     #[error(transparent)]
     Write(#[from] AtomicFileError),
+    /// A stale file beside the level (a recovery file of a base no longer edited) could not be
+    /// removed.
+    #[error("{path}: cannot remove: {source}")]
+    Remove {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
 }
 
 /// The first problem, for the error's message.

@@ -35,6 +35,6 @@ pub(super) fn save_changed(
 }
 
 /// Whether the file at `path` reads as `level` (a file that does not read is not).
-fn on_disk_is(path: &Path, level: &Level) -> bool {
+pub(super) fn on_disk_is(path: &Path, level: &Level) -> bool {
     Level::read(path).is_ok_and(|on_disk| on_disk == *level)
 }

@@ -2,8 +2,9 @@
 //! instance list, in the order they were selected (the last is the primary one, whose fields
 //! the inspector shows), and the one other item in focus — a material, volume, laser, clip,
 //! rule or light group chosen in the outliner or the problems panel, which the inspector
-//! shows instead ([`Selection::item`]; a click on an instance drops it). Follows inserted and
-//! removed instances ([`Shift`]).
+//! shows instead ([`Selection::item`]; a click on an instance drops it). In a composed world
+//! the item in focus may be one of the base file's instead (`common.ron`'s materials,
+//! [`Selection::base_item`]). Follows inserted and removed instances ([`Shift`]).
 //!
 //! Main thread. Must not: read the level (indices are checked by whoever uses them).
 
@@ -26,6 +27,8 @@ pub enum SelectMode {
 pub struct Selection {
     instances: Vec<usize>,
     item: Option<ItemRef>,
+    /// `item` indexes the base file's lists, not the edited file's.
+    in_base: bool,
 }
 
 impl Selection {
@@ -85,11 +88,24 @@ impl Selection {
     /// Puts `item` in focus (the inspector shows it); the instances stay selected.
     pub fn focus(&mut self, item: Option<ItemRef>) {
         self.item = item;
+        self.in_base = false;
     }
 
-    /// The item in focus other than the selected instances, if any (see the module doc).
+    /// Puts `item` of the base file (indices into the base's lists) in focus.
+    pub fn focus_base(&mut self, item: ItemRef) {
+        self.item = Some(item);
+        self.in_base = true;
+    }
+
+    /// The item of the edited file in focus other than the selected instances, if any (see
+    /// the module doc).
     pub fn item(&self) -> Option<ItemRef> {
-        self.item
+        self.item.filter(|_| !self.in_base)
+    }
+
+    /// The base file's item in focus, if any.
+    pub fn base_item(&self) -> Option<ItemRef> {
+        self.item.filter(|_| self.in_base)
     }
 
     pub fn contains(&self, instance: usize) -> bool {

@@ -19,7 +19,7 @@ use super::history::History;
 use super::place::Palette;
 use super::recovery::write_recovery;
 use super::save::{SaveError, SaveReport, save_document, write_document};
-use super::save_world::save_changed;
+use super::save_world::{on_disk_is, save_changed};
 use super::selection::Selection;
 use super::snap::Snap;
 
@@ -34,6 +34,9 @@ pub struct EditorState {
     pub snap: Snap,
     /// The palette's model files and its current piece (`place`).
     pub palette: Palette,
+    /// The palette's thumbnails (`thumbs`), shared by copies of the state; `None`: the palette
+    /// draws none (set by the runner when it opens the editor).
+    pub thumbs: Option<std::sync::Arc<std::sync::Mutex<super::thumbs::Thumbnails>>>,
     /// The file of the document's base (`Document::base`, Reflect's `common.ron`): a save
     /// writes the base's changes there. `None`: the file is a level on its own.
     pub base_path: Option<PathBuf>,
@@ -61,6 +64,7 @@ impl EditorState {
             selection: Selection::default(),
             snap: Snap::default(),
             palette: Palette::default(),
+            thumbs: None,
             base_path: None,
             bounds: None,
             problems: Vec::new(),
@@ -230,8 +234,13 @@ impl EditorState {
         Ok(reports)
     }
 
-    /// Writes the recovery file (after each command; see `recovery` and `app::edit`).
+    /// Writes the recovery file (after each command; see `recovery` and `app::edit`), with the
+    /// base's when the base file was edited (it differs from what its file holds).
     pub fn write_recovery(&self) -> Result<PathBuf, SaveError> {
-        write_recovery(&self.path, &self.doc)
+        let base = (self.doc.base.as_deref())
+            .zip(self.base_path.as_deref())
+            .filter(|(base, path)| !on_disk_is(path, &base.level))
+            .map(|(base, _)| base);
+        write_recovery(&self.path, &self.doc, base)
     }
 }

@@ -141,3 +141,46 @@ fn a_common_material_edited_from_a_chamber_is_saved_to_common_ron_only() -> anyh
     assert_eq!(std::fs::read(&parts[0])?, chamber_before);
     Ok(())
 }
+
+#[test]
+fn the_outliner_lists_common_ron_materials_and_a_click_puts_one_in_the_inspector()
+-> anyhow::Result<()> {
+    use candela::editor::ui::outliner::SEARCH_ID;
+    use candela::level::ItemRef;
+    let mut run = mode_run::start_chamber("editor_composed_outliner", 0)?;
+    let base = run.mode.state.base().expect("the chamber's base").clone();
+    let white = (base.materials.iter())
+        .position(|m| m.name == "wall_white")
+        .expect("common.ron defines wall_white");
+    // Narrow the outliner to "white" (the instances list is long), as a designer would.
+    run.ctx
+        .memory_mut(|m| m.request_focus(egui::Id::unique(SEARCH_ID)));
+    pass(&mut run, Vec::new())?;
+    pass(&mut run, vec![egui::Event::Text("white".into())])?;
+    let painted = pass_painted(&mut run, Vec::new())?;
+    assert!(
+        painted.has_prefix("Materials (common.ron)"),
+        "the base's materials have their heading: {:?}",
+        painted.texts()
+    );
+    run.ctx
+        .memory_mut(|m| m.surrender_focus(egui::Id::unique(SEARCH_ID)));
+    click_where(&mut run, "wall_white", |t| t == "wall_white")?;
+    assert_eq!(
+        run.mode.state.selection.base_item(),
+        Some(ItemRef::Material(white)),
+        "the base material is in focus"
+    );
+    assert_eq!(
+        run.mode.state.selection.item(),
+        None,
+        "no item of the chamber"
+    );
+    let painted = pass_painted(&mut run, Vec::new())?;
+    assert!(
+        painted.has_prefix("Material \"wall_white\" (Diffuse, base file)"),
+        "the inspector shows it: {:?}",
+        painted.texts()
+    );
+    Ok(())
+}

@@ -59,10 +59,8 @@ fn edits() -> Vec<Edit> {
 #[test]
 #[ignore = "the child half of a_killed_editor_leaves_a_recovery_file_that_restores_the_edits"]
 fn child_edits_then_waits_to_be_killed() -> anyhow::Result<()> {
-    let Some(dir) = std::env::var_os(CHILD) else {
-        anyhow::bail!("run by its parent test only ({CHILD} is not set)");
-    };
-    let dir = Path::new(&dir);
+    let dir = child_dir()?;
+    let dir = dir.as_path();
     let path = dir.join("level.ron");
     let root = AssetRoot::new(dir)?;
     let level = load_level(&path, &root)?;
@@ -79,21 +77,14 @@ fn child_edits_then_waits_to_be_killed() -> anyhow::Result<()> {
     anyhow::bail!("not killed")
 }
 
-#[test]
-fn a_killed_editor_leaves_a_recovery_file_that_restores_the_edits() -> anyhow::Result<()> {
-    let scratch = Scratch::new("kill");
-    let path = scratch.path().join("level.ron");
-    std::fs::write(&path, LEVEL)?;
+/// Runs the ignored test `child` of this binary in a child process with [`CHILD`] set to
+/// `dir`, waits for it to write `dir/ready` and kills it with SIGKILL (no hook, no unwinding).
+pub fn run_until_killed(child: &str, dir: &Path) -> anyhow::Result<()> {
     let mut child = Command::new(std::env::current_exe()?)
-        .args([
-            "--exact",
-            "editor_kill::child_edits_then_waits_to_be_killed",
-            "--ignored",
-            "--nocapture",
-        ])
-        .env(CHILD, scratch.path())
+        .args(["--exact", child, "--ignored", "--nocapture"])
+        .env(CHILD, dir)
         .spawn()?;
-    let ready = scratch.path().join("ready");
+    let ready = dir.join("ready");
     let start = Instant::now();
     while !ready.exists() {
         if let Some(status) = child.try_wait()? {
@@ -107,7 +98,27 @@ fn a_killed_editor_leaves_a_recovery_file_that_restores_the_edits() -> anyhow::R
     }
     child.kill()?; // SIGKILL
     let status = child.wait()?;
-    assert!(!status.success(), "killed: {status}");
+    anyhow::ensure!(!status.success(), "the child was not killed: {status}");
+    Ok(())
+}
+
+/// The scratch folder a child runs in ([`CHILD`]), or an error outside a parent test.
+pub fn child_dir() -> anyhow::Result<std::path::PathBuf> {
+    match std::env::var_os(CHILD) {
+        Some(dir) => Ok(dir.into()),
+        None => anyhow::bail!("run by its parent test only ({CHILD} is not set)"),
+    }
+}
+
+#[test]
+fn a_killed_editor_leaves_a_recovery_file_that_restores_the_edits() -> anyhow::Result<()> {
+    let scratch = Scratch::new("kill");
+    let path = scratch.path().join("level.ron");
+    std::fs::write(&path, LEVEL)?;
+    run_until_killed(
+        "editor_kill::child_edits_then_waits_to_be_killed",
+        scratch.path(),
+    )?;
     assert_eq!(
         std::fs::read_to_string(&path)?,
         LEVEL,

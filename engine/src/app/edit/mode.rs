@@ -12,6 +12,8 @@
 use glam::Vec3;
 use hecs::Entity;
 
+use std::path::PathBuf;
+
 use super::box_select::BoxDrag;
 use super::camera::EditorCamera;
 use super::gizmo::Gizmo;
@@ -21,8 +23,8 @@ use crate::app::runner::Engine;
 use crate::app::runner::SpawnedLevel;
 use crate::ecs::{CameraRig, Transform};
 use crate::editor::{
-    Document, DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, SaveReport, Touch,
-    find_recovery,
+    Document, DocumentError, Edit, EditError, EditorState, Picked, RecoveryInfo, SaveReport,
+    Thumbnails, Touch, find_recovery,
 };
 
 /// Messages kept for the toolbar.
@@ -62,6 +64,9 @@ pub struct EditMode {
     /// Whether recovery files are written (tools and tests that edit committed levels they
     /// must not write beside turn it off).
     pub(super) recovery_files: bool,
+    /// Where the palette's thumbnails are cached, until the first pass makes them (`None`:
+    /// none are made).
+    thumbnail_cache: Option<PathBuf>,
 }
 
 impl EditMode {
@@ -89,6 +94,7 @@ impl EditMode {
             pending_restore: false,
             box_drag: None,
             recovery_files: true,
+            thumbnail_cache: Some(crate::editor::user_cache_dir()),
         })
     }
 
@@ -101,6 +107,13 @@ impl EditMode {
     /// The rubber band of a box select being dragged (points from the view's corner).
     pub fn box_drag(&self) -> Option<BoxDrag> {
         self.box_drag
+    }
+
+    /// Caches the palette's thumbnails in `cache` instead of the user's cache folder (`None`:
+    /// draws none). Tests give a scratch folder.
+    pub fn with_thumbnail_cache(mut self, cache: Option<PathBuf>) -> Self {
+        self.thumbnail_cache = cache;
+        self
     }
 
     /// Writes no recovery files from now on (for tools and tests over committed levels).
@@ -208,9 +221,18 @@ impl EditMode {
             return frame;
         }
         self.state.bounds = self.selection_bounds();
+        if let Some(cache) = self.thumbnail_cache.take() {
+            let thumbs = Thumbnails::new(self.world.target.root.clone(), cache);
+            self.state.thumbs = Some(std::sync::Arc::new(std::sync::Mutex::new(thumbs)));
+        }
         let out = crate::editor::ui::panels(ctx, &mut self.state);
         for e in &out.errors {
             self.say(e.clone());
+        }
+        let failed = (self.state.thumbs.as_ref())
+            .and_then(|t| t.lock().ok().map(|mut t| std::mem::take(&mut t.messages)));
+        for message in failed.unwrap_or_default() {
+            self.say(message);
         }
         let mut touched = out.touched;
         if let Some(item) = &out.place {
@@ -309,7 +331,7 @@ impl EditMode {
         };
         match saved {
             Ok(reports) => {
-                let files: Vec<String> = reports.iter().map(written).collect();
+                let files: Vec<String> = reports.iter().map(|r| written(r, root.path())).collect();
                 self.say(format!("saved {}", files.join("; ")));
                 true
             }
@@ -342,12 +364,15 @@ impl EditMode {
 }
 
 /// What the status line says of one file a save wrote.
-fn written(report: &SaveReport) -> String {
+/// The status line's words for one written file: its path under the asset root `root` (in
+/// full when outside it), its size and how much of it changed.
+fn written(report: &SaveReport, root: &std::path::Path) -> String {
+    let path = report.path.strip_prefix(root).unwrap_or(&report.path);
     let how = match &report.rewritten {
         None => "only the edited items changed".to_string(),
         Some(why) => format!("the whole file rewritten: {why}"),
     };
-    format!("{} ({} bytes, {how})", report.path.display(), report.bytes)
+    format!("{} ({} bytes, {how})", path.display(), report.bytes)
 }
 
 /// A fly speed for the level: its size crossed in about ten seconds.

@@ -2,8 +2,10 @@
 //! written after every finished command (a drag when it is released), so that a crash or a
 //! killed process loses at most the drag in progress; removed when undo or a save brings the
 //! document back to its file; offered on opening when it is newer than the level, and then
-//! restored or discarded from the toolbar. An offered file is never overwritten: the first
-//! command before a choice moves it aside to `<level>.recovery.old`.
+//! restored or discarded from the toolbar. In a composed world the recovery holds the base
+//! file's edits too (`editor::base_recovery_path`), and restoring brings both back. An offered
+//! file is never overwritten: the first command before a choice moves it aside to
+//! `<level>.recovery.old` (its base's to `<level>.recovery.base.old`).
 //!
 //! Main thread, inside the editor's pass or its public operations. Must not: write the level
 //! file (only saves do) or touch the world except through the mode's `follow`.
@@ -12,7 +14,9 @@ use std::path::{Path, PathBuf};
 
 use super::mode::EditMode;
 use crate::app::runner::Engine;
-use crate::editor::{EditorState, Touch, discard_recovery, recovery_path, restore_recovery};
+use crate::editor::{
+    EditorState, Touch, base_recovery_path, discard_recovery, recovery_path, restore_recovery,
+};
 
 /// `<level>.recovery.old`: where an offered recovery file goes when new edits are made before
 /// it was restored or discarded.
@@ -41,6 +45,14 @@ impl EditMode {
             return;
         }
         if let Some(offered) = self.recovery.take() {
+            let base = base_recovery_path(&self.state.path);
+            if base.is_file() {
+                let mut older = base.clone().into_os_string();
+                older.push(".old");
+                if let Err(e) = std::fs::rename(&base, &older) {
+                    self.say(format!("the older base recovery file is lost: {e}"));
+                }
+            }
             let older = older_recovery_path(&self.state.path);
             match std::fs::rename(&offered.path, &older) {
                 Ok(()) => self.say(format!(
@@ -74,17 +86,26 @@ impl EditMode {
             Ok(mut doc) => {
                 let selection = std::mem::take(&mut self.state.selection);
                 let palette = std::mem::take(&mut self.state.palette);
+                let thumbs = self.state.thumbs.take();
                 let base_path = self.state.base_path.take();
-                doc.base = self.state.doc.base.take();
+                let with_base = doc.base.is_some();
+                if !with_base {
+                    doc.base = self.state.doc.base.take();
+                }
                 self.state = EditorState::restored(&path, doc);
                 self.state.palette = palette;
+                self.state.thumbs = thumbs;
                 self.state.base_path = base_path;
                 self.recovered_state = self.state.history.state_id();
                 self.state.selection = selection;
                 self.state
                     .selection
                     .retain_below(self.state.doc.level.instances.len());
-                self.say("restored the recovery file (not saved yet)");
+                self.say(if with_base {
+                    "restored the recovery file with the base file's edits (not saved yet)"
+                } else {
+                    "restored the recovery file (not saved yet)"
+                });
                 self.follow(engine, vec![Touch::Level])
             }
             Err(e) => {

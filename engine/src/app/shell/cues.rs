@@ -1,7 +1,8 @@
 //! Scripted shell input for tests and demos: a list of [`Cue`]s, each run a number of frames
 //! after the previous one — a menu choice or action ([`ShellInput`]), a change to the settings
 //! draft as the settings screen's widgets would make it, a change to the level editor's state
-//! (a selection, snapping) as its panels would make it, or a screenshot of the window (menus
+//! (a selection, snapping) as its panels would make it, a step of the test's own (sending the
+//! window X input, reading where a gizmo handle is drawn), or a screenshot of the window (menus
 //! and HUD included).
 //!
 //! Data; the runner plays them. Main thread. Must not: reach the engine or the window.
@@ -10,7 +11,7 @@ use std::path::PathBuf;
 
 use super::settings_edit::SettingsEditor;
 use super::state::ShellInput;
-use crate::editor::EditorState;
+use crate::app::edit::EditMode;
 
 /// What a cue does.
 pub enum CueAction {
@@ -20,13 +21,17 @@ pub enum CueAction {
     Edit(Box<dyn FnMut(&mut SettingsEditor) + Send>),
     /// Writes what the window shows this frame to this PNG (windowed runs only).
     Screenshot(PathBuf),
-    /// Changes the level editor's state (a selection, snapping; not the document) while the
-    /// editor is open (windowed runs with an editor only; dropped otherwise).
+    /// Changes the level editor's state (a selection, snapping, the current palette piece; not
+    /// the document) or reads it (the camera, where the gizmo is drawn) while the editor is open
+    /// (windowed runs with an editor only; dropped otherwise).
     Editor(EditorCue),
+    /// Runs a step of the caller's own at this frame, on the main thread (a window test sends
+    /// its X input here, so that the input lands between known frames).
+    Call(Box<dyn FnMut() + Send>),
 }
 
-/// A change to the level editor's state, for [`CueAction::Editor`].
-pub type EditorCue = Box<dyn FnMut(&mut EditorState) + Send>;
+/// A change to the level editor's state, or a look at it, for [`CueAction::Editor`].
+pub type EditorCue = Box<dyn FnMut(&mut EditMode) + Send>;
 
 impl std::fmt::Debug for CueAction {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -35,6 +40,7 @@ impl std::fmt::Debug for CueAction {
             CueAction::Edit(_) => write!(f, "Edit(..)"),
             CueAction::Screenshot(p) => write!(f, "Screenshot({})", p.display()),
             CueAction::Editor(_) => write!(f, "Editor(..)"),
+            CueAction::Call(_) => write!(f, "Call(..)"),
         }
     }
 }
@@ -62,10 +68,17 @@ impl Cue {
         }
     }
 
-    pub fn editor(wait_frames: u32, cue: impl FnMut(&mut EditorState) + Send + 'static) -> Self {
+    pub fn editor(wait_frames: u32, cue: impl FnMut(&mut EditMode) + Send + 'static) -> Self {
         Self {
             wait_frames,
             action: CueAction::Editor(Box::new(cue)),
+        }
+    }
+
+    pub fn call(wait_frames: u32, step: impl FnMut() + Send + 'static) -> Self {
+        Self {
+            wait_frames,
+            action: CueAction::Call(Box::new(step)),
         }
     }
 

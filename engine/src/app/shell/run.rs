@@ -334,6 +334,7 @@ impl ShellRun {
                 CueAction::Edit(mut edit) => edit(&mut self.editor),
                 CueAction::Screenshot(path) => self.screenshot = Some(path),
                 CueAction::Editor(cue) => self.editor_cues.push(cue),
+                CueAction::Call(mut step) => step(),
             }
         }
     }

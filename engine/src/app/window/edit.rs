@@ -63,7 +63,7 @@ impl WindowApp<'_> {
             let cues = shell.take_editor_cues();
             if let Some(edit) = self.edit.as_mut().filter(|e| e.active()) {
                 for mut cue in cues {
-                    cue(&mut edit.state);
+                    cue(edit);
                 }
             }
         } else {

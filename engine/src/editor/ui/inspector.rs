@@ -6,8 +6,9 @@
 //! override material (`materials`). When the outliner or the problems panel put another item
 //! in focus (`Selection::item`: a material, volume, laser, clip or rule), the inspector shows
 //! that item's widgets instead. In a composed world the base file's models and materials are
-//! offered too (`EditorState::base`); a base material's fields edit the base file's material
-//! (`Edit::Base`, saved to the base file).
+//! offered too (`EditorState::base`); a base material's fields (an instance's, or the one the
+//! outliner put in focus, `Selection::base_item`) edit the base file's material (`Edit::Base`,
+//! saved to the base file).
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
@@ -38,6 +39,12 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
     if let Some(item) = state.selection.item()
         && focused(ui, state, item, p)
     {
+        return;
+    }
+    if let Some(ItemRef::Material(i)) = state.selection.base_item()
+        && let Some(m) = state.base().and_then(|b| b.materials.get(i))
+    {
+        materials::fields(ui, Owner::Base, i, m, p);
         return;
     }
     let Some(index) = state.selection.primary() else {

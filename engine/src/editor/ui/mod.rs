@@ -52,6 +52,8 @@ pub(super) struct Pending {
     pub select_set: Option<Vec<usize>>,
     /// Put this item in focus (after any selection of this pass).
     pub focus: Option<ItemRef>,
+    /// Put this item of the base file (a composed world's `common.ron`) in focus.
+    pub focus_base: Option<ItemRef>,
     pub place: Option<PaletteItem>,
     pub undo: bool,
     pub redo: bool,
@@ -223,6 +225,9 @@ fn apply(ctx: &egui::Context, state: &mut EditorState, p: Pending, out: &mut Pan
     }
     if let Some(item) = p.focus {
         state.selection.focus(Some(item));
+    }
+    if let Some(item) = p.focus_base {
+        state.selection.focus_base(item);
     }
     if let Some(item) = p.place {
         state.palette.current = Some(item.clone());

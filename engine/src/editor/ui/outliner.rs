@@ -1,8 +1,10 @@
 //! The outliner: every instance (by its name first, then its model; by model and index only
 //! when it has no name: [`instance_label`]) with a search field, then the
-//! materials, light groups, trigger volumes, lasers, clips and rules. Clicking an instance
-//! selects it (Shift adds, Ctrl toggles); clicking a light group selects its instances;
-//! clicking any other item puts it in focus (`Selection::item`), and the inspector shows it.
+//! materials, light groups, trigger volumes, lasers, clips and rules; in a composed world the
+//! base file's materials after them, under the base file's name (`Materials (common.ron)`).
+//! Clicking an instance selects it (Shift adds, Ctrl toggles); clicking a light group selects
+//! its instances; clicking any other item puts it in focus (`Selection::item`, a base
+//! material `Selection::base_item`), and the inspector shows it.
 //!
 //! Main thread, inside an egui pass. Must not: change the document (it only asks, `Pending`).
 
@@ -72,6 +74,7 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
             section(ui, "Clips", listed(names, ItemRef::Clip));
             let names = g.rules.iter().map(|r| r.name.clone()).collect();
             section(ui, "Rules", listed(names, ItemRef::Rule));
+            base_materials(ui, state, &needle, p);
             let groups: BTreeSet<u32> = level
                 .instances
                 .iter()
@@ -92,6 +95,31 @@ pub(super) fn show(ui: &mut egui::Ui, state: &EditorState, p: &mut Pending) {
                 }
             }
         });
+}
+
+/// The base file's materials (a composed world's `common.ron`), each a click from focus.
+fn base_materials(ui: &mut egui::Ui, state: &EditorState, needle: &str, p: &mut Pending) {
+    let Some(base) = state.base() else {
+        return;
+    };
+    let items: Vec<(usize, &str)> = (base.materials.iter().enumerate())
+        .map(|(i, m)| (i, m.name.as_str()))
+        .filter(|(_, n)| needle.is_empty() || n.to_lowercase().contains(needle))
+        .collect();
+    if items.is_empty() {
+        return;
+    }
+    let file = (state.base_path.as_deref())
+        .and_then(|path| path.file_name())
+        .map_or("base file".into(), |n| n.to_string_lossy());
+    ui.label(egui::RichText::new(format!("Materials ({file})")).strong());
+    let focus = state.selection.base_item();
+    for (i, name) in items {
+        let item = ItemRef::Material(i);
+        if ui.selectable_label(focus == Some(item), name).clicked() {
+            p.focus_base = Some(item);
+        }
+    }
 }
 
 /// How the outliner and the inspector name `instances[index]`: its name, then its model

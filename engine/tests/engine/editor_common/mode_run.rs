@@ -46,11 +46,13 @@ pub struct Run {
 
 impl Run {
     /// A run over `engine` and the editor `mode`, before any pass, at time 0 with no modifiers.
+    /// The palette's thumbnails are cached in the scratch folder.
     pub fn new(scratch: Scratch, engine: Engine, mode: EditMode) -> Run {
+        let cache = scratch.path().join("thumbnails");
         Run {
             _scratch: scratch,
             engine,
-            mode,
+            mode: mode.with_thumbnail_cache(Some(cache)),
             ctx: egui::Context::default(),
             time: 0.0,
             modifiers: egui::Modifiers::NONE,
