@@ -20,19 +20,14 @@
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
-use std::sync::atomic::AtomicBool;
 use std::sync::{Arc, Mutex};
 
-use candela::app::shell::{Cue, LevelStart, ShellConfig, ShellInput};
-use candela::app::{UserDirs, WindowConfig, WindowEnd, run_game};
+use candela::app::shell::{Cue, LevelStart, ShellInput};
 use candela::assets::Level;
 use candela::editor::PaletteItem;
-use candela::render::RenderConfig;
-use candela::render::scaling::ScalingTarget;
 use candela_tests::repo;
 use candela_tests::xvfb::{set_environment, start_xvfb};
 use glam::{Vec2, Vec3};
-use reflect::game::ReflectGame;
 use reflect::world::ReflectWorld;
 
 const WIDTH: u32 = 1280;
@@ -222,28 +217,7 @@ fn an_edit_session_in_reflects_window_saves_exactly_the_placed_and_moved_piece()
         Cue::screenshot(30, &shot),
         Cue::input(2, ShellInput::Quit),
     ];
-    let mut game = ReflectGame::new(world, 1);
-    game.inner_mut().use_shell_hud();
-    let config = WindowConfig {
-        title: "Reflect".into(),
-        size: (WIDTH, HEIGHT),
-        show_stats: false,
-        stop: Arc::new(AtomicBool::new(false)),
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::under(&out.join("user"), "reflect").expect("dirs"),
-        cues,
-    };
-    let render = RenderConfig {
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
-        ..RenderConfig::cpu(WIDTH, HEIGHT)
-    };
-    let environment = game.inner().environment();
-    let report = run_game(config, shell, render, environment, &mut game)
-        .expect("Reflect runs in the Xvfb window");
-    eprintln!("{} frames in {:.1} s", report.frames, report.seconds);
-    assert_eq!(report.ended_by, WindowEnd::Quit);
+    crate::editor_window::play_in_window(world, &out, cues);
 
     let seen = seen.lock().expect("seen");
     eprintln!("{seen:?}");

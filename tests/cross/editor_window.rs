@@ -120,28 +120,7 @@ fn the_editor_draws_its_windows_highlight_and_gizmo_over_the_traced_chamber() {
         Cue::screenshot(20, shot("played_from_here")),
         Cue::input(2, ShellInput::Quit),
     ];
-    let mut game = ReflectGame::new(world, 1);
-    game.inner_mut().use_shell_hud();
-    let config = WindowConfig {
-        title: "Reflect".into(),
-        size: (WIDTH, HEIGHT),
-        show_stats: false,
-        stop: Arc::new(AtomicBool::new(false)),
-        ..WindowConfig::default()
-    };
-    let shell = ShellConfig {
-        dirs: UserDirs::under(&out.join("user"), "reflect").expect("dirs"),
-        cues,
-    };
-    let render = RenderConfig {
-        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
-        ..RenderConfig::cpu(WIDTH, HEIGHT)
-    };
-    let environment = game.inner().environment();
-    let report = run_game(config, shell, render, environment, &mut game)
-        .expect("Reflect runs in the Xvfb window");
-    eprintln!("{} frames in {:.1} s", report.frames, report.seconds);
-    assert_eq!(report.ended_by, WindowEnd::Quit);
+    play_in_window(world, &out, cues);
 
     let play = open(&shot("play"));
     let edit = open(&shot("edit"));
@@ -205,4 +184,33 @@ fn the_editor_draws_its_windows_highlight_and_gizmo_over_the_traced_chamber() {
             "the {name} is drawn: {with} pixels with the selection, {without} without"
         );
     }
+}
+
+/// Plays Reflect's second chamber (index 1) in a 1280 × 720 window on the Xvfb display already
+/// set, running `cues` with the shell's user folders under `out/user`, on the CPU tracer with
+/// workload scaling holding 30 fps; asserts that the run ended by Quit. The editor tests in a
+/// window (this file's and `editor_session.rs`) share it.
+pub(crate) fn play_in_window(world: ReflectWorld, out: &Path, cues: Vec<Cue>) {
+    let mut game = ReflectGame::new(world, 1);
+    game.inner_mut().use_shell_hud();
+    let config = WindowConfig {
+        title: "Reflect".into(),
+        size: (WIDTH, HEIGHT),
+        show_stats: false,
+        stop: Arc::new(AtomicBool::new(false)),
+        ..WindowConfig::default()
+    };
+    let shell = ShellConfig {
+        dirs: UserDirs::under(&out.join("user"), "reflect").expect("dirs"),
+        cues,
+    };
+    let render = RenderConfig {
+        scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+        ..RenderConfig::cpu(WIDTH, HEIGHT)
+    };
+    let environment = game.inner().environment();
+    let report = run_game(config, shell, render, environment, &mut game)
+        .expect("Reflect runs in the Xvfb window");
+    eprintln!("{} frames in {:.1} s", report.frames, report.seconds);
+    assert_eq!(report.ended_by, WindowEnd::Quit);
 }
