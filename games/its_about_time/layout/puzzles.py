@@ -156,7 +156,7 @@ def water_stair():
     grids.append(f'(name: "pool_water", size: ({size_x:g}, {size_z:g}), divisions: (112, 80), material: "water"),')
     add("pool_water", cx, hi, (z1 + face) / 2, name="pool", dynamic=True, body=None,
         extra='waves: Some((amplitude: 0, wavelength: 2.5, speed: 0.4, '
-              'simulate: Some((wave_speed: 1.2, damping: 0.5, push: 0.12))))')
+              'simulate: Some((wave_speed: 1.2, damping: 0.5, push: 0.12, start_at_rest: true))))')
     materials.append('(name: "water", kind: Dielectric, ior: 1.33, attenuation_color: (0.5, 0.78, 0.7), '
                      'attenuation_distance: 3.5),')
     materials.append('(name: "reed", kind: Diffuse, base_color: (0.45, 0.35, 0.19)),')
