@@ -10,9 +10,8 @@
 //! * the GPU tracer agrees with the CPU one with the bit set (same paths, same weights).
 
 use candela::layout::{METHOD_DEFAULT, METHOD_INDIRECT_HALF, METHOD_INDIRECT_QUARTER};
-use candela::render::{FrameSettings, frame_uniforms};
 use candela::scene::RenderScene;
-use candela_tests::{Which, open, render_batches_with};
+use candela_tests::{Which, open, render_batches_with, uniforms_with};
 
 use crate::single_pick::{assert_same_mean, sun_and_panel};
 
@@ -40,15 +39,7 @@ fn ray_counts(method: u32) -> [u64; 3] {
     let desc = sun_and_panel(2.0);
     let scene = RenderScene::build(&desc);
     let mut tracer = open(Which::Cpu, &scene).expect("cpu tracer");
-    let mut settings = FrameSettings::new(SIZE, SIZE, 8, 5, &desc.render);
-    settings.method = method;
-    let uniforms = frame_uniforms(
-        &desc.camera,
-        desc.sun.as_ref(),
-        &desc.sky,
-        &settings,
-        &scene.header(),
-    );
+    let uniforms = uniforms_with(&desc, &scene, (SIZE, SIZE), 8, 5, method, 0);
     let stats = tracer.render(&scene, &uniforms).expect("cpu render");
     [
         stats.counts.camera,

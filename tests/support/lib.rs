@@ -134,16 +134,7 @@ pub fn render_scene_batches_with(
     let mut tracer = open(which, scene)?;
     let mut out = Vec::new();
     for b in 0..batches {
-        let mut settings = FrameSettings::new(width, height, spp, seed, &desc.render);
-        settings.sample_base = b * spp;
-        settings.method = method;
-        let uniforms = frame_uniforms(
-            &desc.camera,
-            desc.sun.as_ref(),
-            &desc.sky,
-            &settings,
-            &scene.header(),
-        );
+        let uniforms = uniforms_with(desc, scene, (width, height), spp, seed, method, b * spp);
         tracer.render(scene, &uniforms)?;
         out.push(tracer.film()?.mean);
     }
@@ -153,6 +144,29 @@ pub fn render_scene_batches_with(
         batches: out,
         spp_per_batch: spp,
     })
+}
+
+/// The frame uniforms of `spp` samples per pixel from `sample_base` of `desc`'s camera, sun,
+/// sky and render settings over `scene`, at `size` pixels, with estimator `method`.
+pub fn uniforms_with(
+    desc: &SceneDesc,
+    scene: &RenderScene,
+    size: (u32, u32),
+    spp: u32,
+    seed: u32,
+    method: u32,
+    sample_base: u32,
+) -> candela::layout::GpuFrameUniforms {
+    let mut settings = FrameSettings::new(size.0, size.1, spp, seed, &desc.render);
+    settings.sample_base = sample_base;
+    settings.method = method;
+    frame_uniforms(
+        &desc.camera,
+        desc.sun.as_ref(),
+        &desc.sky,
+        &settings,
+        &scene.header(),
+    )
 }
 
 /// Mean and standard error (per channel) of a set of pixels.
