@@ -17,6 +17,7 @@ mod demo;
 mod editor_session;
 mod editor_window;
 mod far_from_origin;
+mod first_hit_guides;
 mod furnace;
 mod gpu_matches_cpu;
 mod headless;

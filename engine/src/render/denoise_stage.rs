@@ -1,5 +1,6 @@
 //! The denoiser on the render thread: after the tracer has rendered a frame (with film blend 1,
-//! so that its film holds this frame alone), trace the guides on the CPU (`cpu::guides`),
+//! so that its film holds this frame alone), take the guides the CPU tracer recorded at its
+//! first hits ([`Tracer::take_guides`]) or trace them in a pass of their own (`cpu::guides`),
 //! hand the frame, the guides and the converging blend factor to a denoiser (whose history
 //! then does the accumulating), and keep the denoised film for the capture and the presenter.
 //!
@@ -146,10 +147,14 @@ impl DenoiseStage {
             self.svgf
                 .denoise_upscaled(traced, &guides, blend, View::of(&high), transforms)
         } else {
-            let guides = {
+            // The tracer's own first hits when it recorded them (the CPU tracer), else a pass.
+            let recorded = tracer
+                .take_guides()
+                .filter(|g| g.width == uniforms.width && g.height == uniforms.height);
+            let guides = recorded.unwrap_or_else(|| {
                 puffin::profile_scope!("guides");
                 trace_guides(scene, uniforms)
-            };
+            });
             puffin::profile_scope!("svgf");
             self.svgf
                 .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)

@@ -72,6 +72,10 @@ pub struct RenderConfig {
     /// One pixel in this many traces indirect light, overriding the level's
     /// `render.indirect_every` (`None`: the level's; 1, 2 or 4; `render/cpu/interleave.rs`).
     pub indirect_every: Option<u32>,
+    /// With the denoiser on, trace its guides in a pass of their own (one centre ray per
+    /// pixel, `cpu::guides::trace_guides`) instead of taking them from the CPU tracer's first
+    /// hits: the way before 2026-12-07, kept for side-by-side measurement.
+    pub guide_pass: bool,
     /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
     /// table always matches the commit) or `Background` (games in play: rebuilt on a worker
     /// thread while frames go on; `scene::SkyTable`).
@@ -94,6 +98,7 @@ impl RenderConfig {
             temporal_upscale: None,
             light_sampling: None,
             indirect_every: None,
+            guide_pass: false,
             sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }
     }

@@ -96,6 +96,14 @@ pub trait Tracer {
     fn device_lost(&self) -> Option<String> {
         None
     }
+    /// Take the denoiser's guides of each frame from the tracer's own first hits (the CPU
+    /// tracer does, `cpu::guides`), instead of a guide pass of their own. Tracers that cannot
+    /// ignore it.
+    fn record_guides(&mut self, _on: bool) {}
+    /// The guides the last frame recorded (see [`Tracer::record_guides`]), once.
+    fn take_guides(&mut self) -> Option<crate::render::denoise::Guides> {
+        None
+    }
     /// The wgpu device the film lives on (`None`: the film is in host memory), so that the
     /// denoiser can run on the same device and read the film in place (`denoise_stage`).
     fn gpu_context(&self) -> Option<std::sync::Arc<super::gpu::GpuContext>> {

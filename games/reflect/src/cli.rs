@@ -83,6 +83,10 @@ pub struct Args {
     /// levels' `render.indirect_every`.
     #[arg(long, value_parser = parse_every)]
     pub indirect_every: Option<u32>,
+    /// With --bench: trace the denoiser's guides in a pass of their own (one centre ray per
+    /// pixel, as before 2026-12-07) instead of taking them from the tracer's first hits.
+    #[arg(long)]
+    pub guide_pass: bool,
     /// Headless: play each chamber this many frames with random input and check every frame
     /// (see `reflect::soak`); prints a Markdown table.
     #[arg(long)]
@@ -197,6 +201,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             denoise: args.denoise,
             output: args.bench_output,
             indirect_every: args.indirect_every,
+            guide_pass: args.guide_pass,
         };
         return crate::bench::bench(&world, &root, &replays, &options);
     }

@@ -105,6 +105,14 @@ impl Tracer for KeepingTracer {
     fn clear(&mut self) {
         self.inner.clear()
     }
+
+    fn record_guides(&mut self, on: bool) {
+        self.inner.record_guides(on)
+    }
+
+    fn take_guides(&mut self) -> Option<candela::render::denoise::Guides> {
+        self.inner.take_guides()
+    }
 }
 
 /// Runs chamber `args.chamber` (from 1) for `warm_frames` frames; the last frame's scene and

@@ -46,16 +46,20 @@ pub struct Config {
     pub upscale: u32,
     /// One pixel in this many traces indirect light (`RenderConfig::indirect_every`; 1: all).
     pub indirect_every: u32,
+    /// Denoised: trace the guides in a pass of their own (`RenderConfig::guide_pass`).
+    pub guide_pass: bool,
 }
 
 impl Config {
     pub fn label(&self) -> String {
-        let base = self.plain_label();
+        let mut label = self.plain_label();
         if self.indirect_every > 1 {
-            format!("{base}, indirect 1 in {}", self.indirect_every)
-        } else {
-            base
+            label += &format!(", indirect 1 in {}", self.indirect_every);
         }
+        if self.guide_pass && self.denoise {
+            label += ", guide pass";
+        }
+        label
     }
 
     fn plain_label(&self) -> String {
@@ -140,6 +144,7 @@ pub fn play(
         denoise: config.denoise,
         temporal_upscale: (config.upscale > 1).then_some(config.upscale),
         indirect_every: (config.indirect_every > 1).then_some(config.indirect_every),
+        guide_pass: config.guide_pass,
         ..RenderConfig::cpu(config.width, config.height)
     };
     let wanted = refs.lock().expect("references lock").wanted.clone();

@@ -233,4 +233,12 @@ impl Tracer for ReferencingTracer {
     fn clear(&mut self) {
         self.inner.clear()
     }
+
+    fn record_guides(&mut self, on: bool) {
+        self.inner.record_guides(on)
+    }
+
+    fn take_guides(&mut self) -> Option<candela::render::denoise::Guides> {
+        self.inner.take_guides()
+    }
 }

@@ -206,6 +206,7 @@ pub fn run_script(
         denoise: false,
         light_sampling: options.light_sampling,
         indirect_every: None,
+        guide_pass: false,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -57,6 +57,7 @@ pub(super) fn trace_unit(
         0..u.width,
         unit_rows(unit, u.height),
         &mut counts,
+        None,
     );
     (sums, counts, thread_cpu_seconds() - start)
 }

@@ -12,7 +12,9 @@
 //! seen prefiltered along camera rays and their perfect specular turns (`lines.rs`).
 //! The path loop is read against `shaders/trace.wgsl` line by line (the same random draws in the
 //! same order); next-event estimation lives in `direct.rs`, and the pieces that stand alone
-//! beside it (`bsdf`, `light_tree`, `lines`, `surface`).
+//! beside it (`bsdf`, `light_tree`, `lines`, `surface`). It also hands the denoiser's guide
+//! of the camera ray's first hit to the caller that asks (`guides::first_hit`; CPU only: the
+//! GPU tracer's guides come from the CPU guide pass).
 //! Must not: write the film or know about tiles and threads.
 
 use glam::{Vec2, Vec3};
@@ -22,6 +24,7 @@ use super::cone::Cone;
 use super::direct::{
     NEE_RANDOMS, bsdf_hit_weight, hit_area, next_event, pick_chances, transmittance,
 };
+use super::guides::{FirstHit, SKY_GUIDE, first_hit};
 use super::interleave::indirect_weight;
 use super::lines::{past_lines, pixel_angle, seen_lines};
 use super::night::{disc_inside, disc_lit, night_radiance};
@@ -107,7 +110,8 @@ pub fn camera_ray(u: &GpuFrameUniforms, px: u32, py: u32, rng: &mut Rng) -> Ray 
 }
 
 /// One sample's radiance estimate (linear RGB) for pixel (px, py). `lines` are the scene's line
-/// emitters ([`RenderScene::lines`]), seen prefiltered by the camera (`lines.rs`).
+/// emitters ([`RenderScene::lines`]), seen prefiltered by the camera (`lines.rs`). With `first`,
+/// the denoiser's guide is taken from the camera ray's first hit on the way (`guides.rs`).
 #[allow(clippy::too_many_arguments)]
 pub fn radiance(
     scene: &RenderScene,
@@ -118,10 +122,15 @@ pub fn radiance(
     py: u32,
     sample: u32,
     counts: &mut RayCounts,
+    mut first: Option<&mut FirstHit>,
 ) -> Vec3 {
     let mut rng = Rng::new(px, py, sample, u.seed);
     let mut ray = camera_ray(u, px, py, &mut rng);
     counts.camera += 1;
+    if let Some(f) = first.as_deref_mut() {
+        *f = FirstHit::Follow(ray);
+    }
+    let camera = ray;
     let mut throughput = Vec3::ONE;
     let mut result = Vec3::ZERO;
     // Density of the direction just sampled (for MIS) and whether it was a delta lobe.
@@ -160,6 +169,11 @@ pub fn radiance(
             travelled += t_end;
         }
         let Some(hit) = hit else {
+            if bounce == 0
+                && let Some(f) = first.as_deref_mut()
+            {
+                *f = FirstHit::Known(SKY_GUIDE);
+            }
             // The cloud layer dims the sky and the disc alike (`clouds.rs`).
             let cloud = clouds::transmittance(u, &scene.sky.clouds, ray.origin, ray.direction);
             let sky = sky_radiance(u, &scene.sky.texels, ray.direction);
@@ -202,6 +216,11 @@ pub fn radiance(
             lod_random,
         );
         let shading = shade(scene, &surface, lod);
+        if bounce == 0
+            && let Some(f) = first.as_deref_mut()
+        {
+            *f = first_hit(camera, &hit, &surface, &shading);
+        }
         let wo = -ray.direction;
         let front = wo.dot(surface.geometric_normal) > 0.0;
         if medium != Vec3::ZERO {
