@@ -19,11 +19,15 @@ pub const TOP_RADIUS_KM: f32 = 6460.0;
 /// Altitude of the viewer the sky is seen from, km (10 m above the ground).
 pub const VIEW_ALTITUDE_KM: f32 = 0.01;
 
-const RAYLEIGH_SCATTERING: Vec3 = Vec3::new(5.802e-3, 13.558e-3, 33.1e-3);
-const RAYLEIGH_SCALE_HEIGHT_KM: f32 = 8.0;
+/// Rayleigh scattering coefficient at the ground per channel (R, G, B), km⁻¹.
+pub const RAYLEIGH_SCATTERING: Vec3 = Vec3::new(5.802e-3, 13.558e-3, 33.1e-3);
+/// Scale height of the molecules' exponential density, km.
+pub const RAYLEIGH_SCALE_HEIGHT_KM: f32 = 8.0;
 /// Wavelengths the three channels are taken at, nm (R, G, B).
 const CHANNEL_NM: [f32; 3] = [680.0, 550.0, 440.0];
-const OZONE_ABSORPTION: Vec3 = Vec3::new(0.650e-3, 1.881e-3, 0.085e-3);
+/// Ozone absorption coefficient per channel at the layer's peak (25 km; density a tent from
+/// 10 to 40 km) per unit `ozone`, km⁻¹.
+pub const OZONE_ABSORPTION: Vec3 = Vec3::new(0.650e-3, 1.881e-3, 0.085e-3);
 
 /// Solar spectral irradiance at the top of the atmosphere in linear Rec.709 RGB, in the
 /// CIE-Y-normalised W·m⁻²·nm⁻¹ of Mitsuba's sunsky (radiance then comes out in

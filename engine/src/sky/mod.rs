@@ -32,7 +32,10 @@ mod sky_view;
 mod solar;
 mod transmittance;
 
-pub use atmosphere::Aerosol;
+pub use atmosphere::{
+    Aerosol, GROUND_RADIUS_KM, OZONE_ABSORPTION, RAYLEIGH_SCALE_HEIGHT_KM, RAYLEIGH_SCATTERING,
+    SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM,
+};
 pub use baker::{Baked, SkyBaker, TABLE_ELEVATION_STEP_DEG, table_elevation_deg};
 pub use calendar::UtcInstant;
 pub use clouds::{

@@ -38,6 +38,14 @@ impl MultiScatteringLut {
         Self { texels }
     }
 
+    /// A table of zeros: no second or higher orders (the single-scattering table of
+    /// [`super::SkyTables::build_single_scattering`]).
+    pub fn none() -> Self {
+        Self {
+            texels: vec![Vec3::ZERO; SIZE * SIZE],
+        }
+    }
+
     /// Ψms at radius `r` (km) for a sun at zenith cosine `mu_s`.
     pub fn lookup(&self, r: f32, mu_s: f32) -> Vec3 {
         let u = (mu_s * 0.5 + 0.5).clamp(0.0, 1.0);

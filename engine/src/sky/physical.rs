@@ -280,6 +280,28 @@ impl SkyTables {
         })
     }
 
+    /// The sun's sky-view table of [`SkyTables::build`] with Hillaire's multiple-scattering term
+    /// left out (Ψms = 0): single scattering alone above the horizon (below it, also the
+    /// directly lit ground). No moon's table. A check of the tables against a reference
+    /// (`engine/tests/engine/sky_brute_force.rs`); the tracers never read it.
+    pub fn build_single_scattering(sky: &PhysicalSky) -> Result<Self, SkyError> {
+        let h = sky.sun_horizontal()?;
+        let atmosphere = sky.atmosphere();
+        let transmittance = TransmittanceLut::build(&atmosphere);
+        let elevation = (super::baker::table_elevation_deg(h.elevation_deg) as f32).to_radians();
+        let none = MultiScatteringLut::none();
+        let flat = Horizontal {
+            elevation_deg: 0.0,
+            azimuth_deg: h.azimuth_deg,
+        };
+        Ok(Self {
+            texels: build_view(&atmosphere, &transmittance, &none, elevation),
+            sun_direction: h.direction(),
+            sun_azimuth: flat.direction(),
+            moon_sky: [0.0; 4],
+        })
+    }
+
     /// Sky radiance towards unit engine-space direction `d` (sun and moon discs excluded; the
     /// moonlit sky included).
     pub fn radiance(&self, d: Vec3) -> Vec3 {

@@ -15,6 +15,7 @@ mod editor_align;
 mod editor_common;
 mod physics_common;
 mod pipeline_common;
+mod sky_common;
 
 mod accel_structure;
 mod anim_actions;
@@ -120,6 +121,8 @@ mod script_determinism;
 mod script_format;
 mod script_hold;
 mod sky_bad_input;
+mod sky_brute_force;
+mod sky_brute_force_reference;
 mod sky_clouds;
 mod sky_energy;
 mod sky_ephemeris;

