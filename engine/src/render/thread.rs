@@ -72,10 +72,13 @@ pub struct RenderConfig {
     /// One pixel in this many traces indirect light, overriding the level's
     /// `render.indirect_every` (`None`: the level's; 1, 2 or 4; `render/cpu/interleave.rs`).
     pub indirect_every: Option<u32>,
-    /// With the denoiser on, trace its guides in a pass of their own (one centre ray per
-    /// pixel, `cpu::guides::trace_guides`) instead of taking them from the CPU tracer's first
-    /// hits: the way before 2026-12-07, kept for side-by-side measurement.
-    pub guide_pass: bool,
+    /// With the denoiser on (and no temporal upscaling), take its guides from the CPU tracer's
+    /// first hits with every sample through its pixel's centre (`cpu::guides::FirstHit`)
+    /// instead of a guide pass of their own (one centre ray per pixel, samples jittered). Off
+    /// by default: faster and a lower displayed error, but thin emitters narrower than a pixel
+    /// drop out of the point-sampled picture (`docs/ACCURACY.md`, "Guides from the first
+    /// hits").
+    pub first_hit_guides: bool,
     /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
     /// table always matches the commit) or `Background` (games in play: rebuilt on a worker
     /// thread while frames go on; `scene::SkyTable`).
@@ -98,7 +101,7 @@ impl RenderConfig {
             temporal_upscale: None,
             light_sampling: None,
             indirect_every: None,
-            guide_pass: false,
+            first_hit_guides: false,
             sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }
     }

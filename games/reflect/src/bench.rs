@@ -30,9 +30,9 @@ pub struct BenchOptions {
     pub output: (u32, u32),
     /// Overrides the levels' `render.indirect_every` (`None`: the level's).
     pub indirect_every: Option<u32>,
-    /// Trace the denoiser's guides in a pass of their own, as before 2026-12-07
-    /// (`RenderConfig::guide_pass`), instead of taking them from the tracer's first hits.
-    pub guide_pass: bool,
+    /// Take the denoiser's guides from the tracer's first hits, samples through the pixel
+    /// centres (`RenderConfig::first_hit_guides`), instead of a guide pass.
+    pub first_hit_guides: bool,
 }
 
 /// Plays a chamber's replay on `world` for at most `options.seconds` of wall time, as the game
@@ -54,7 +54,7 @@ fn run(
             ..ScalingTarget::of_level(&level)
         }),
         indirect_every: options.indirect_every,
-        guide_pass: options.guide_pass,
+        first_hit_guides: options.first_hit_guides,
         ..RenderConfig::cpu(options.output.0, options.output.1)
     };
     Ok(bench_replay(world, replay, config, options.seconds)?)

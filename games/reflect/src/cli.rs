@@ -83,10 +83,11 @@ pub struct Args {
     /// levels' `render.indirect_every`.
     #[arg(long, value_parser = parse_every)]
     pub indirect_every: Option<u32>,
-    /// With --bench: trace the denoiser's guides in a pass of their own (one centre ray per
-    /// pixel, as before 2026-12-07) instead of taking them from the tracer's first hits.
+    /// With --bench: take the denoiser's guides from the tracer's first hits, every sample
+    /// through its pixel's centre, instead of a guide pass of their own (one centre ray per
+    /// pixel, samples jittered; the default).
     #[arg(long)]
-    pub guide_pass: bool,
+    pub first_hit_guides: bool,
     /// Headless: play each chamber this many frames with random input and check every frame
     /// (see `reflect::soak`); prints a Markdown table.
     #[arg(long)]
@@ -201,7 +202,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             denoise: args.denoise,
             output: args.bench_output,
             indirect_every: args.indirect_every,
-            guide_pass: args.guide_pass,
+            first_hit_guides: args.first_hit_guides,
         };
         return crate::bench::bench(&world, &root, &replays, &options);
     }

@@ -78,11 +78,11 @@ pub struct PictureArgs {
     /// light (`render/cpu/interleave.rs`), measured after the others.
     #[arg(long, default_value_t = 1)]
     pub indirect_every: u32,
-    /// Also both sizes denoised (with `--indirect-every`'s interleaving) with the guides traced
-    /// in a pass of their own (one centre ray per pixel, as before 2026-12-07) instead of taken
-    /// from the tracer's first hits, measured last.
+    /// Also both sizes denoised (with `--indirect-every`'s interleaving) with the guides taken
+    /// from the tracer's first hits, every sample through its pixel's centre
+    /// (`RenderConfig::first_hit_guides`), instead of the guide pass; measured last.
     #[arg(long)]
-    pub guide_pass: bool,
+    pub first_hit_guides: bool,
     /// Print the N pixels of each compared frame that add most to its relative MSE
     /// (`picture_outliers.rs`).
     #[arg(long, default_value_t = 0)]
@@ -124,8 +124,8 @@ impl PictureArgs {
     /// off then on; then the small size traced and upscaled ×2 to the large one by temporal
     /// upscaling, denoiser on (last: the large plain runs render the references it reuses).
     /// `--denoised-only` keeps the denoised ones; `--indirect-every N` adds both sizes denoised
-    /// with interleaved indirect light, after them; `--guide-pass` both sizes again with the
-    /// guide pass, last.
+    /// with interleaved indirect light, after them; `--first-hit-guides` both sizes again with the
+    /// guides from the first hits, last.
     pub fn configs(&self) -> Vec<Config> {
         let sizes = if self.quick {
             [(32, 18), (64, 36)]
@@ -141,7 +141,7 @@ impl PictureArgs {
                     denoise,
                     upscale: 1,
                     indirect_every: 1,
-                    guide_pass: false,
+                    first_hit_guides: false,
                 })
             })
             .collect();
@@ -151,7 +151,7 @@ impl PictureArgs {
             denoise: true,
             upscale: 2,
             indirect_every: 1,
-            guide_pass: false,
+            first_hit_guides: false,
         });
         if self.denoised_only {
             configs.retain(|c| c.denoise);
@@ -163,17 +163,17 @@ impl PictureArgs {
                 denoise: true,
                 upscale: 1,
                 indirect_every: self.indirect_every,
-                guide_pass: false,
+                first_hit_guides: false,
             }));
         }
-        if self.guide_pass {
+        if self.first_hit_guides {
             configs.extend(sizes.iter().map(|&(width, height)| Config {
                 width,
                 height,
                 denoise: true,
                 upscale: 1,
                 indirect_every: self.indirect_every.max(1),
-                guide_pass: true,
+                first_hit_guides: true,
             }));
         }
         configs

@@ -43,7 +43,7 @@ fn reference(world: &ReflectWorld, frame: u64, spp: u32) -> Reference {
         denoise: false,
         upscale: 1,
         indirect_every: 1,
-        guide_pass: false,
+        first_hit_guides: false,
     };
     let keep = BTreeSet::from([frame]);
     play(

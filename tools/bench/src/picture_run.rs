@@ -46,8 +46,9 @@ pub struct Config {
     pub upscale: u32,
     /// One pixel in this many traces indirect light (`RenderConfig::indirect_every`; 1: all).
     pub indirect_every: u32,
-    /// Denoised: trace the guides in a pass of their own (`RenderConfig::guide_pass`).
-    pub guide_pass: bool,
+    /// Denoised: guides from the tracer's first hits, samples through the pixel centres
+    /// (`RenderConfig::first_hit_guides`), not a guide pass.
+    pub first_hit_guides: bool,
 }
 
 impl Config {
@@ -56,8 +57,8 @@ impl Config {
         if self.indirect_every > 1 {
             label += &format!(", indirect 1 in {}", self.indirect_every);
         }
-        if self.guide_pass && self.denoise {
-            label += ", guide pass";
+        if self.first_hit_guides && self.denoise {
+            label += ", first-hit guides";
         }
         label
     }
@@ -144,7 +145,7 @@ pub fn play(
         denoise: config.denoise,
         temporal_upscale: (config.upscale > 1).then_some(config.upscale),
         indirect_every: (config.indirect_every > 1).then_some(config.indirect_every),
-        guide_pass: config.guide_pass,
+        first_hit_guides: config.first_hit_guides,
         ..RenderConfig::cpu(config.width, config.height)
     };
     let wanted = refs.lock().expect("references lock").wanted.clone();

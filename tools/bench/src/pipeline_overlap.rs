@@ -46,7 +46,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         denoise: false,
         light_sampling: None,
         indirect_every: None,
-        guide_pass: false,
+        first_hit_guides: false,
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -183,7 +183,7 @@ fn run_policy(
         denoise: false,
         light_sampling: None,
         indirect_every: None,
-        guide_pass: false,
+        first_hit_guides: false,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

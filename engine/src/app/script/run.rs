@@ -206,7 +206,7 @@ pub fn run_script(
         denoise: false,
         light_sampling: options.light_sampling,
         indirect_every: None,
-        guide_pass: false,
+        first_hit_guides: false,
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

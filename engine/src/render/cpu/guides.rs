@@ -1,18 +1,20 @@
 //! The denoiser's [`Guides`] from the CPU tracer: either a pass of their own, one ray per pixel
 //! through its centre (no jitter, the lens's centre) to the primary hit ([`trace_guides`]), or
 //! taken from the integrator's own first hits while it traces the frame ([`FirstHit`],
-//! [`from_first_hit`]: the tracer's camera ray, jittered as the sample was; only pixels whose
-//! first hit is a mirror or glass trace their guide again, along that same ray).
+//! [`first_hit`], [`resolve_first_hit`]: the sample's own camera ray, which goes through the
+//! pixel's centre while the denoiser is on, `render/frame_render.rs`; only pixels whose first
+//! hit is a mirror or glass trace their guide again, along that same ray).
 //!
-//! Owns: [`trace_guides`], [`FirstHit`], [`guide_along`]. The normal is the shading normal at the primary hit turned to face
-//! the camera, the depth its distance along the ray (metres), the instance the one hit; the
-//! albedo follows perfect mirrors (up to [`MAX_SPECULAR`] reflections, multiplying their tints)
-//! to the first non-specular surface and takes its base colour; smooth glass and the sky give 1
-//! (not demodulated). A pixel whose primary hit emits is flagged (the filter leaves it alone), and
-//! so is one whose primary hit is specular (a mirror or smooth glass: reprojection does not
-//! reuse its history, its picture moves unlike its surface).
-//! It runs only when the denoiser is on, so the tracer pays nothing for it
-//! otherwise; render thread, rows on rayon's pool.
+//! Owns: [`trace_guides`], [`FirstHit`], [`guide_along`]. The normal is the shading normal at
+//! the primary hit turned to face the camera, the depth its distance along the ray (metres), the
+//! instance the one hit; the albedo follows perfect mirrors (up to [`MAX_SPECULAR`] reflections,
+//! multiplying their tints) to the first non-specular surface and takes its base colour; smooth
+//! glass and the sky give 1 (not demodulated). A pixel whose primary hit emits is flagged (the
+//! filter leaves it alone), and so is one whose primary hit is specular (a mirror or smooth
+//! glass: reprojection does not reuse its history, its picture moves unlike its surface).
+//! Either way it runs only when the denoiser is on, so the tracer pays nothing for it
+//! otherwise: the pass on the render thread (rows on rayon's pool), the first hits on the
+//! tracer's tiles.
 //! Must not: shade or accumulate radiance (the integrator does), or change the scene.
 
 use glam::Vec3;

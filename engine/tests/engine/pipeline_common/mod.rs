@@ -75,7 +75,7 @@ pub fn config(spp: u32, size: u32) -> RenderConfig {
         denoise: false,
         light_sampling: None,
         indirect_every: None,
-        guide_pass: false,
+        first_hit_guides: false,
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     }
