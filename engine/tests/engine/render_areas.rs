@@ -9,7 +9,9 @@
 //!   (B out of the table) and with no areas; the region means of the two renders agree within
 //!   4.5 σ of their noise on the half of the floor B cannot reach (its contribution is zero by
 //!   occlusion) and on the half it lights (B is then reached only by BSDF rays, weighted 1: only
-//!   the noise grows), for both light pickers (power and tree).
+//!   the noise grows), for both light pickers (power and tree). With B's hits weighted as if
+//!   NEE could pick it (the integrator's `unsampled` test taken out), the lit half came out 43 %
+//!   darker with the power picker (0.108 against 0.190, 31.6 σ), and the test failed.
 //! * Bad areas are refused naming the level file and the field.
 
 use std::path::{Path, PathBuf};
