@@ -57,7 +57,11 @@ fn each_area_samples_only_the_emitters_of_the_groups_it_names() -> anyhow::Resul
             engine.set_light_group(g, true);
         }
         eprintln!("{}: {masked} of {all} emitters sampled", area.name);
-        assert!(masked > 0 && masked < all, "{}: {masked} of {all}", area.name);
+        assert!(
+            masked > 0 && masked < all,
+            "{}: {masked} of {all}",
+            area.name
+        );
         assert_eq!(masked, switched, "{}", area.name);
     }
     drop(engine.shutdown());
