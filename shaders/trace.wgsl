@@ -168,7 +168,10 @@ fn radiance(px: u32, py: u32, sample: u32) -> vec3<f32> {
         }
         if (any(shading.emission != vec3<f32>(0.0)) && (front || shading.two_sided_emission)) {
             var w = 1.0;
-            if (!last_delta && frame.light_count > 0u) {
+            // An emitter next-event estimation cannot pick (none in the table, or its light
+            // group out of sight of the camera's render area) has only this strategy: weight 1.
+            let unsampled = (instances[hit.instance].flags & INSTANCE_FLAG_UNSAMPLED) != 0u;
+            if (!last_delta && frame.light_count > 0u && !unsampled) {
                 let cos_light = abs(dot(wo, surface.geometric_normal));
                 var chance = 0.0;
                 if ((frame.method & METHOD_LIGHT_TREE) != 0u) {

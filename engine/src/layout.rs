@@ -156,6 +156,12 @@ pub const INSTANCE_FLAG_IDENTITY: u32 = 1;
 /// `GpuInstance::flags`: the instance's light group is switched off: its emissive triangles
 /// emit nothing and are absent from the light table (Brigade §6.1: not just multiplied by zero).
 pub const INSTANCE_FLAG_EMISSION_OFF: u32 = 2;
+/// `GpuInstance::flags`: the instance's light group is out of sight of the render area the
+/// camera is in (`assets::RenderArea`): its emissive triangles are absent from the light table,
+/// so next-event estimation never picks them, but they still emit when a path hits them, and
+/// that hit takes MIS weight 1 (the only strategy that can reach them), so the estimate stays
+/// unbiased (both tracers: `render/cpu/integrator.rs`, `shaders/trace.wgsl`).
+pub const INSTANCE_FLAG_UNSAMPLED: u32 = 4;
 
 /// Vertex indices (relative to the instance's `vertex_base`) and the global material index.
 /// 16 bytes.

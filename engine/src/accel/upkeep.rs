@@ -94,6 +94,12 @@ pub struct Upkeep {
     /// Rows of every entity, and its light group.
     pub(super) entities: HashMap<hecs::Entity, (Vec<u32>, Option<u32>)>,
     pub(super) groups_off: HashSet<u32>,
+    /// The light groups next-event estimation samples (`None`: every group; set from the
+    /// render area the camera is in, see [`Upkeep::set_sampled_groups`]).
+    pub(super) groups_sampled: Option<HashSet<u32>>,
+    /// The level's render areas (`assets::RenderArea`), which pick `groups_sampled` from the
+    /// camera's position ([`Upkeep::sample_from`]).
+    pub(super) render_areas: Vec<crate::assets::RenderArea>,
     pub(super) level_material_base: u32,
     /// Table rows reserved for level materials at `level_material_base` (`None`: no level
     /// has registered any yet; see `upkeep_materials.rs`).
@@ -132,6 +138,8 @@ impl Upkeep {
             rows: Vec::new(),
             entities: HashMap::new(),
             groups_off: HashSet::new(),
+            groups_sampled: None,
+            render_areas: Vec::new(),
             level_material_base: 0,
             level_material_slots: None,
             blas_node_end: 0,

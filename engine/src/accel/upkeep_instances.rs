@@ -2,15 +2,21 @@
 //! instances of entities, and keeping rows in step with their meshes and light groups.
 //!
 //! Owns: the mapping entity ↔ instance rows (one row per placement of the entity's model) and
-//! the writes of `GpuInstance` rows. Rows of removed entities are filled by swapping in the last
+//! the writes of `GpuInstance` rows, and their light-group flags (switched off; out of sight of
+//! the camera's render area). Rows of removed entities are filled by swapping in the last
 //! row, so the table stays dense. Main thread. Must not: touch BLAS data (see `upkeep.rs`).
+
+use std::collections::HashSet;
 
 use glam::Mat4;
 use hecs::Entity;
 
 use super::upkeep::Upkeep;
 use crate::ecs::ModelHandle;
-use crate::layout::{GpuInstance, INSTANCE_FLAG_EMISSION_OFF, INSTANCE_FLAG_IDENTITY, INVALID};
+use crate::layout::{
+    GpuInstance, INSTANCE_FLAG_EMISSION_OFF, INSTANCE_FLAG_IDENTITY, INSTANCE_FLAG_UNSAMPLED,
+    INVALID,
+};
 use crate::scene::Aabb;
 use crate::scene::SceneWrite;
 
@@ -31,6 +37,9 @@ impl Upkeep {
         let mut flags = 0;
         if group.is_some_and(|g| self.groups_off.contains(&g)) {
             flags |= INSTANCE_FLAG_EMISSION_OFF;
+        }
+        if group.is_some_and(|g| !self.group_sampled(g)) {
+            flags |= INSTANCE_FLAG_UNSAMPLED;
         }
         let row = GpuInstance {
             world_from_object: [[0.0; 4]; 3],
@@ -163,9 +172,61 @@ impl Upkeep {
         self.tlas_dirty = true;
     }
 
-    /// Rewrites the emission flag of every row of the entities in `group`.
+    /// The level's render areas (none: every group is sampled everywhere); every group is
+    /// sampled until the next [`Upkeep::sample_from`].
+    pub fn set_render_areas(&mut self, areas: Vec<crate::assets::RenderArea>) {
+        self.render_areas = areas;
+        self.set_sampled_groups(None);
+    }
+
+    /// Samples the light groups the render areas containing `camera` (metres, world space)
+    /// name, or every group outside them all (`assets::sampled_groups`).
+    pub fn sample_from(&mut self, camera: glam::Vec3) {
+        if self.render_areas.is_empty() {
+            return;
+        }
+        let groups = crate::assets::sampled_groups(&self.render_areas, camera.to_array());
+        self.set_sampled_groups(groups.as_deref());
+    }
+
+    /// Which light groups next-event estimation samples, from the render area the camera is in
+    /// (`assets::RenderArea`): `None`, every group (outside every area); `Some(groups)`, only
+    /// those. Emitters of the other groups leave the light table but still emit when a path
+    /// hits them (`layout::INSTANCE_FLAG_UNSAMPLED`: MIS weight 1 there, so the estimate stays
+    /// unbiased); emitters in no group are always sampled. Rewrites only the rows of groups
+    /// whose state changed (and then the light table).
+    pub fn set_sampled_groups(&mut self, sampled: Option<&[u32]>) {
+        let next: Option<HashSet<u32>> = sampled.map(|g| g.iter().copied().collect());
+        if next == self.groups_sampled {
+            return;
+        }
+        let before = std::mem::replace(&mut self.groups_sampled, next);
+        let mut groups: Vec<u32> = (self.entities.values())
+            .filter_map(|(_, g)| *g)
+            .collect::<HashSet<u32>>()
+            .into_iter()
+            .collect();
+        groups.sort_unstable();
+        for group in groups {
+            let was = before.as_ref().is_none_or(|s| s.contains(&group));
+            if was != self.group_sampled(group) {
+                self.apply_group_flags(group);
+            }
+        }
+    }
+
+    /// Whether next-event estimation samples light group `group` now (see
+    /// [`Upkeep::set_sampled_groups`]; a group switched off is in no table either way).
+    pub fn group_sampled(&self, group: u32) -> bool {
+        self.groups_sampled
+            .as_ref()
+            .is_none_or(|s| s.contains(&group))
+    }
+
+    /// Rewrites the emission and sampling flags of every row of the entities in `group`.
     pub(super) fn apply_group_flags(&mut self, group: u32) {
         let off = self.groups_off.contains(&group);
+        let sampled = self.group_sampled(group);
         let rows: Vec<u32> = self
             .entities
             .values()
@@ -174,10 +235,12 @@ impl Upkeep {
             .collect();
         for r in rows {
             let mut row = self.scene.instances[r as usize];
+            row.flags &= !(INSTANCE_FLAG_EMISSION_OFF | INSTANCE_FLAG_UNSAMPLED);
             if off {
                 row.flags |= INSTANCE_FLAG_EMISSION_OFF;
-            } else {
-                row.flags &= !INSTANCE_FLAG_EMISSION_OFF;
+            }
+            if !sampled {
+                row.flags |= INSTANCE_FLAG_UNSAMPLED;
             }
             self.push(SceneWrite::Instances {
                 first: r,

@@ -1,8 +1,8 @@
 //! The level file: a RON description of what a scene is made of and how it is rendered.
 //!
 //! Owns: the serde types of a level (models and where they are placed, level materials,
-//! camera, sun, sky, render settings) and parsing them with clear errors (file, line, column;
-//! unknown fields are refused). Must not: load the models it names (see `level_load`).
+//! camera, sun, sky, render settings and areas) and parsing them with clear errors (file,
+//! line, column; unknown fields are refused). Must not: load the models it names (see `level_load`).
 //!
 //! Paths in a level are relative to the asset root, `/`-separated, and may not leave it.
 //! Units: metres, degrees where a field name says `_deg`, linear RGB colours.
@@ -60,6 +60,10 @@ pub struct Level {
     pub sky: SkyDesc,
     #[serde(default)]
     pub render: RenderSettings,
+    /// Boxes in world space, each naming the light groups sampled while the camera is inside
+    /// (see `level_render_areas`); none: every group is sampled everywhere.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub render_areas: Vec<super::RenderArea>,
     /// Renderer features the level may use (see [`super::Needs`]); absent: derived from content.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub needs: Option<super::Needs>,
@@ -362,6 +366,7 @@ impl Level {
                 ),
             })
             .and_then(|level| level.render.check(path).map(|()| level))
+            .and_then(|level| super::check_render_areas(&level, path).map(|()| level))
     }
 
     /// Reads and parses a level file.

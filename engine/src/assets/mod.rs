@@ -63,6 +63,8 @@ pub use level_gameplay::{
 };
 mod level_load;
 mod level_render;
+mod level_render_areas;
+pub use level_render_areas::{RenderArea, check_render_areas, sampled_groups};
 mod level_water;
 pub use level_water::{VALIDATED_STEP_SECONDS, WaterSimDesc};
 mod level_shapes;

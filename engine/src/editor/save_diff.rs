@@ -231,6 +231,7 @@ impl Ctx<'_> {
         self.one(at, "sun", &old.sun, &new.sun)?;
         self.one(at, "sky", &old.sky, &new.sky)?;
         self.one(at, "render", &old.render, &new.render)?;
+        self.list(at, "render_areas", &old.render_areas, &new.render_areas)?;
         self.one(at, "needs", &old.needs, &new.needs)?;
         self.list(at, "characters", &old.characters, &new.characters)?;
         if old.gameplay == new.gameplay {

@@ -18,7 +18,7 @@ use super::document::Document;
 use super::layout::{layout, minimal};
 
 /// The level's fields in the type's order.
-const LEVEL_FIELDS: [&str; 14] = [
+const LEVEL_FIELDS: [&str; 15] = [
     "models",
     "materials",
     "grids",
@@ -30,6 +30,7 @@ const LEVEL_FIELDS: [&str; 14] = [
     "sun",
     "sky",
     "render",
+    "render_areas",
     "needs",
     "gameplay",
     "characters",
@@ -90,6 +91,7 @@ fn level_field(level: &Level, name: &str) -> Res<(Value, bool)> {
         "sun" => one(&level.sun, level.sun.is_none()),
         "sky" => one(&level.sky, level.sky == Default::default()),
         "render" => one(&level.render, level.render == Default::default()),
+        "render_areas" => list(&level.render_areas),
         "needs" => one(&level.needs, level.needs.is_none()),
         "characters" => list(&level.characters),
         _ => gameplay(&level.gameplay),

@@ -12,8 +12,8 @@
 //! merged by name and must agree where two files define the same name; instances, lasers,
 //! emitters, usables and autoplay entries are appended in file order; names that must be unique
 //! (named instances, clips, volumes, rules, characters) must not repeat across files. The
-//! base file's camera, sun, sky and render settings win (an area's camera is its own
-//! preview view, unused by the merge).
+//! base file's camera, sun, sky, render settings and render areas win (an area's camera is its
+//! own preview view, unused by the merge).
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};

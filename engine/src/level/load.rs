@@ -31,6 +31,8 @@ pub struct PlayableLevel {
     pub gameplay: GameplayPlan,
     /// Skinned characters with their bodies and animation states (`characters` in the file).
     pub characters: Vec<PlayableCharacter>,
+    /// Boxes naming the light groups sampled while the camera is inside (`render_areas`).
+    pub render_areas: Vec<crate::assets::RenderArea>,
 }
 
 impl PlayableLevel {
@@ -41,6 +43,7 @@ impl PlayableLevel {
             scene,
             gameplay: GameplayPlan::default(),
             characters: Vec::new(),
+            render_areas: Vec::new(),
         }
     }
 }
@@ -124,6 +127,7 @@ fn load_checked(
         bodies,
         gameplay,
         characters,
+        render_areas: level.render_areas.clone(),
     })
 }
 

@@ -53,7 +53,11 @@ pub fn build_lights(
     let mut lights = Vec::new();
     let mut two_sided = Vec::new();
     for (instance_index, instance) in instances.iter().enumerate() {
-        if instance.flags & crate::layout::INSTANCE_FLAG_EMISSION_OFF != 0 {
+        // Off: emits nothing. Unsampled: out of sight of the camera's render area (still
+        // emits when hit, with MIS weight 1; see `layout::INSTANCE_FLAG_UNSAMPLED`).
+        let left_out =
+            crate::layout::INSTANCE_FLAG_EMISSION_OFF | crate::layout::INSTANCE_FLAG_UNSAMPLED;
+        if instance.flags & left_out != 0 {
             continue;
         }
         let first = instance.triangle_base as usize;

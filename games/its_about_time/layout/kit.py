@@ -8,6 +8,20 @@ import math
 inst, clips, volumes, usables, events, rules = [], [], [], [], [], []
 breakables, counters, lights_off, materials = [], [], [], []
 grids, boxes = [], []
+# Render areas (`render_areas` in the level): boxes naming the light groups sampled while the
+# camera is inside. `area_group[0]` is the light group the emitters added now join (the area
+# being laid out; None: no group, always sampled).
+render_areas = []
+area_group = [None]
+EMISSIVE = ("torch_flame", "glyph_glow_")
+
+
+def area(name, group, lo, hi, sees):
+    """Starts laying out area `name`: emitters added from now on join light group `group`; the
+    camera inside the box `lo`..`hi` (metres) samples the light groups `sees` only."""
+    area_group[0] = group
+    render_areas.append(f'(name: "{name}", min: {vec(*lo)}, max: {vec(*hi)}, '
+                        f'light_groups: [{", ".join(str(g) for g in sees)}]),')
 
 BLOCK = {"block_large": (2.4, 1.2, 1.2), "block_medium": (1.6, 0.8, 0.8), "block_small": (1.0, 0.5, 0.6)}
 
@@ -22,6 +36,8 @@ def vec(*v):
 
 def add(model, x, y, z, name=None, rot=(0, 0, 0), scale=None, body="Static(shape: Box)",
         dynamic=False, material=None, light_group=None, extra=None):
+    if light_group is None and model.startswith(EMISSIVE):
+        light_group = area_group[0]
     s = f'(model: "{model}"'
     if name:
         s += f', name: "{name}"'

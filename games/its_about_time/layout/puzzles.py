@@ -4,7 +4,7 @@ and rules to the lists in kit.py, and ends in a vault holding an artifact. Metre
 x east, y up, z south (north is -Z)."""
 import math
 
-from kit import (add, artifact_rules, ashlar, boxes, breakables, clip, counters, events, glyph_upright,
+from kit import (add, area, artifact_rules, ashlar, boxes, breakables, clip, counters, events, glyph_upright,
                  grids, lever, lights_off, materials, rules, usables, vault, volumes, wall)
 
 # Glyph numbers of the kit's inlays.
@@ -17,6 +17,7 @@ def weights():
     opens while blocks weigh down the plates carved on its wall (sun and serpent) and the
     other two are empty. Block A starts in line with the sun plate; block B in line with the
     eye plate, so it must be pushed east first."""
+    area("weights", 4, (-36, -1, -10), (-20, 15, 7), [4])
     plates = [(-31.0, SUN), (-28.5, FRET), (-26.0, EYE), (-23.5, SERPENT)]
     pz = -2.0
     for x, glyph in plates:
@@ -47,6 +48,7 @@ def rolling_stone():
     """A ramp rising south from z = 19 to 2.4 m at z = 27, a boulder on it held by a stone
     chock; the lever beside the ramp's foot sinks the chock, the boulder rolls north
     and breaks the brittle wall closing the vault (`impact_speed` 3 m/s)."""
+    area("rolling_stone", 5, (13, -1, 8), (26, 15, 29), [5])
     cx = 19.0
     theta = math.atan2(2.4, 8.0)
     t, length, zc = 0.4, 9.0, 23.0
@@ -86,6 +88,7 @@ def night_shrine():
     wall shows the order (eye, sun, serpent, fret, left to right). A torch takes only after
     dark (the sun 6° below the horizon); lit in order, the vault opens; a wrong torch puts them
     all out."""
+    area("night_shrine", 6, (-34, -1, -28), (-15, 15, -10.5), [6, 11, 12, 13, 14])
     order = [EYE, SUN, SERPENT, FRET]
     torches = [(-29.5, SUN), (-26.5, FRET), (-22.5, EYE), (-19.5, SERPENT)]
     counters.append('(name: "shrine"),')
@@ -136,6 +139,7 @@ def water_stair():
     Rain Jar stands; the lever on the terrace drains it to come down, and one inside by the
     door drains it for anyone shut in. The counter `pool` holds 1 while the pool is drained.
     The water ripples where the explorer wades."""
+    area("water_stair", 3, (16, -1, -23), (26, 15, -13), [3])
     x0, x1, z0, z1 = 17.0, 25.0, -22.0, -14.0          # inner faces west / east / north / south
     T, H = 0.6, 3.6
     cx = (x0 + x1) / 2

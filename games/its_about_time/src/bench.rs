@@ -1,6 +1,7 @@
 //! `its_about_time --bench`: each area of the ruins played from its puzzle's committed replay
 //! (`assets/its_about_time/replays/<puzzle>.replay`) in real time, headless, as the game plays
-//! it — the CPU tracer at 640×360 output with workload scaling holding 30 fps, the denoiser on,
+//! it — the CPU tracer at 640×360 output with workload scaling holding the level's frame rate
+//! down to its `min_scale` (`render: (target_fps: 30, min_scale: 0.5)`), the denoiser on,
 //! the sky following turned time on a worker thread — measuring the frame time split by phase
 //! (scene upkeep is the per-frame BVH upkeep with the explorer, the water and every mover), the
 //! internal resolution and samples per pixel the scaling settles on, and the emitters the light
@@ -23,11 +24,17 @@ use crate::world::RuinsWorld;
 /// Markdown table.
 pub fn bench(world: &RuinsWorld, seconds: f64, denoise: bool) -> anyhow::Result<String> {
     let mut out = table_head("area (replay)", &[]);
+    let level = &world.level.scene.render;
     for name in NAMES.iter().filter(|n| **n != "full_game") {
         let config = RenderConfig {
             tracer: TracerChoice::Cpu,
             denoise,
-            scaling: Some(ScalingTarget::new(1.0 / 30.0)),
+            // What the level declares (`render: (target_fps, min_scale)`), started at its floor
+            // as Reflect's bench does: the steady state is measured.
+            scaling: Some(ScalingTarget {
+                start_resolution: level.min_resolution(),
+                ..ScalingTarget::of_level(level)
+            }),
             sky_rebuild: candela::scene::SkyRebuild::Background,
             ..RenderConfig::cpu(640, 360)
         };

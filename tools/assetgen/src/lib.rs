@@ -318,6 +318,7 @@ pub fn demo_level() -> Level {
             deforming: true,
             ..Default::default()
         }),
+        render_areas: Vec::new(),
         gameplay: Default::default(),
         characters: Vec::new(),
     }

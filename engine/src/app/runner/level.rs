@@ -46,6 +46,7 @@ impl Engine {
         self.environment = Environment::of(desc);
         self.set_default_camera(desc.camera);
         self.upkeep.add_level_materials(&desc.level_materials);
+        self.upkeep.set_render_areas(level.render_areas.clone());
         let models: Vec<ModelHandle> = match models {
             Some(models) if models.len() == desc.models.len() => models,
             _ => desc
@@ -251,6 +252,7 @@ impl Engine {
         for group in groups {
             self.upkeep.set_light_group(group, true);
         }
+        self.upkeep.set_render_areas(Vec::new());
         self.logic = Default::default();
     }
 

@@ -49,6 +49,8 @@ impl Engine {
         self.follow_with_audio();
         // Camera-relative rendering: keep render space's origin near the camera.
         self.upkeep.follow_camera(self.camera.position());
+        // Light groups out of sight of the camera's render area leave the light table.
+        self.upkeep.sample_from(self.camera.position());
     }
 
     /// Puts the listener at the camera (its basis as built by the extractor; a stand-in

@@ -32,8 +32,8 @@ use super::rng::Rng;
 use super::sampling::{basis, concentric_disc, to_local, to_world};
 use super::surface::{can_emit, offset_origin, reads_levels, resolve, shade};
 use crate::layout::{
-    GpuFrameUniforms, GpuLine, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER, SKY_GRADIENT,
-    SKY_PHYSICAL,
+    GpuFrameUniforms, GpuLine, INSTANCE_FLAG_UNSAMPLED, METHOD_LIGHT_TREE, METHOD_LIGHTS_BY_POWER,
+    SKY_GRADIENT, SKY_PHYSICAL,
 };
 use crate::scene::RenderScene;
 use crate::sky::sky_view_radiance;
@@ -233,7 +233,11 @@ pub fn radiance(
             throughput *= (-shading.absorption * hit.t).exp();
         }
         if shading.emission != Vec3::ZERO && (front || shading.two_sided_emission) {
-            let w = if last_delta || u.light_count == 0 {
+            // An emitter next-event estimation cannot pick (none in the table, or its light
+            // group out of sight of the camera's render area) has only this strategy: weight 1.
+            let unsampled =
+                scene.instances[hit.instance as usize].flags & INSTANCE_FLAG_UNSAMPLED != 0;
+            let w = if last_delta || u.light_count == 0 || unsampled {
                 1.0
             } else {
                 let cos_light = wo.dot(surface.geometric_normal).abs();
