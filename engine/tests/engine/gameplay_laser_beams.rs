@@ -7,6 +7,7 @@
 
 use std::path::PathBuf;
 
+use crate::common::mean_and_error;
 use candela::app::{Engine, SpawnedLevel, Step};
 use candela::assets::{AssetRoot, CameraDesc};
 use candela::ecs::{GlobalTransform, Transform};
@@ -196,14 +197,6 @@ fn camera_ray(camera: &CameraDesc, (w, h): (u32, u32), x: f32, y: f32) -> Ray {
     let sy = 1.0 - 2.0 * y / h as f32;
     let d = forward + right * (tan_half * w as f32 / h as f32 * sx) + up * (tan_half * sy);
     Ray::new(position, d.normalize())
-}
-
-/// Mean and variance of the mean of `values` (sample variance / n).
-fn mean_and_error(values: &[f64]) -> (f64, f64) {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, var / n)
 }
 
 #[test]

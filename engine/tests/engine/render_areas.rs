@@ -16,6 +16,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::common::mean_and_error;
 use candela::app::{Engine, Step};
 use candela::assets::{AssetError, AssetRoot, CameraDesc, Level, RenderArea, sampled_groups};
 use candela::level::load_level;
@@ -185,14 +186,6 @@ fn region_means(
         }
     }
     Ok(out)
-}
-
-/// Mean and variance of the mean of `values` (sample variance / n).
-fn mean_and_error(values: &[f64]) -> (f64, f64) {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
-    (mean, var / n)
 }
 
 #[test]

@@ -1,6 +1,6 @@
 //! Shared helpers of the acceleration / traversal tests: a small deterministic RNG, procedural
 //! meshes, random rays, scene assembly and the agreement check (tree kernels vs brute force);
-//! and the file walk of the robustness tests.
+//! the file walk of the robustness tests; the mean and its standard error of a set of estimates.
 #![allow(dead_code)]
 
 use candela::accel::{Aabb, Blas, build_blas, build_tlas};
@@ -10,6 +10,14 @@ use candela::trace::{Hit, Kernel, Ray, TraceScene, closest_blas_with, occluded_b
 use std::path::{Path, PathBuf};
 
 use glam::{Mat4, Quat, Vec3};
+
+/// Mean and variance of the mean of `values` (sample variance / n).
+pub fn mean_and_error(values: &[f64]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().sum::<f64>() / n;
+    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (mean, var / n)
+}
 
 /// PCG32 (O'Neill 2014): deterministic across platforms.
 pub struct Rng(u64);
