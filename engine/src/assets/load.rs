@@ -3,7 +3,10 @@
 //! [`AssetError`] naming the file.
 //!
 //! Inputs: an [`AssetRoot`] and a path relative to it (or a plain file path for tools and
-//! tests). Output: a checked [`Model`] (every mesh went through `mesh_check`).
+//! tests), or the model's bytes with a name and the [`MemoryFiles`] it references (the fuzz
+//! targets). Output: a checked [`Model`] (every mesh went through `mesh_check`). The three
+//! entry points differ only in the [`LoadContext`] they build: the same loaders parse and
+//! check the bytes.
 //! Runs on whichever thread loads assets (the main thread or a loader thread).
 //! Must not: know any file format (the `obj` and `gltf` modules do), or touch the GPU.
 //!
@@ -16,6 +19,7 @@ use std::path::Path;
 
 use super::context::LoadContext;
 use super::error::{AssetError, AssetResult};
+use super::memory::MemoryFiles;
 use super::model::Model;
 use super::root::AssetRoot;
 use super::{gltf, obj};
@@ -26,7 +30,24 @@ use super::{gltf, obj};
 /// names `path` (a level, say), for messages.
 pub fn load_model(root: &AssetRoot, referrer: &Path, path: &str) -> AssetResult<Model> {
     let file = root.resolve(referrer, None, path)?;
-    let mut context = LoadContext::new(root, file);
+    let mut model = load_caught(LoadContext::new(root, file))?;
+    model.name = path.to_string();
+    Ok(model)
+}
+
+/// Loads a model held in memory: `bytes` is the model file, `name` its file name or path
+/// (the extension picks the loader as in [`load_model`]; every error names it; its folder is
+/// the root references resolve in) and `files` holds what it references (MTL libraries,
+/// textures, glTF buffers and images) by path relative to that folder. The same loaders and
+/// checks run as for a file on disk.
+pub fn load_model_bytes(name: &Path, bytes: &[u8], files: &MemoryFiles) -> AssetResult<Model> {
+    let mut model = load_caught(LoadContext::in_memory(name, bytes, files))?;
+    model.name = name.display().to_string();
+    Ok(model)
+}
+
+/// Runs the loader of `context`'s file, turning a panic into [`AssetError::LoaderPanic`].
+fn load_caught(mut context: LoadContext) -> AssetResult<Model> {
     let loaded = catch_unwind(AssertUnwindSafe(|| dispatch(&mut context)));
     let file = context.file.clone();
     let mut model = match loaded {
@@ -43,7 +64,6 @@ pub fn load_model(root: &AssetRoot, referrer: &Path, path: &str) -> AssetResult<
             });
         }
     };
-    model.name = path.to_string();
     model.notes = std::mem::take(&mut context.notes);
     Ok(model)
 }

@@ -4,7 +4,8 @@
 //! Model loading starts at [`load_model`] (`load.rs`): OBJ + MTL (`obj`, `obj_scan`,
 //! `obj_mesh`, `mtl`, `mtl_material`), glTF 2.0 (`gltf/`), textures (`texture`, `bump`), then
 //! the checks and repairs every mesh goes through (`mesh_check`, `tangents`). Limits on sizes
-//! are in `limits`; `context` carries one load's file, root and notes.
+//! are in `limits`; `context` carries one load's file, root and notes. [`load_model_bytes`]
+//! loads from memory, the referenced files coming from a [`MemoryFiles`] (`memory`).
 
 pub(crate) mod atomic_file;
 mod bump;
@@ -15,6 +16,7 @@ pub(crate) mod gltf;
 mod grid;
 mod limits;
 mod load;
+mod memory;
 mod mesh_check;
 mod model;
 mod mtl;
@@ -29,7 +31,8 @@ mod texture;
 
 pub use city::{CityEntry, city_model};
 pub use error::{AssetError, AssetResult};
-pub use load::{load_model, load_model_file};
+pub use load::{load_model, load_model_bytes, load_model_file};
+pub use memory::MemoryFiles;
 pub use model::{Material, MaterialKind, Mesh, Model, Placement, Texture, TextureRef, Wrap};
 pub use root::AssetRoot;
 pub use shapes::{BoxEntry, TerrainEntry, box_model, terrain_model};

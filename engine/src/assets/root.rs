@@ -44,31 +44,12 @@ impl AssetRoot {
             root: self.root.clone(),
         };
         let requested_path = Path::new(requested);
-        if requested_path.is_absolute() || requested_path.has_root() {
-            return Err(outside());
-        }
-        let start = match base {
-            Some(base) => base.to_path_buf(),
-            None => self.root.clone(),
-        };
+        let start = base.unwrap_or(&self.root);
         // Lexical check first, so that a path which leaves the root is refused even when the
         // file it names does not exist.
-        let mut lexical = start.clone();
-        for component in requested_path.components() {
-            match component {
-                Component::Normal(part) => lexical.push(part),
-                Component::CurDir => {}
-                Component::ParentDir => {
-                    if !lexical.pop() {
-                        return Err(outside());
-                    }
-                }
-                Component::RootDir | Component::Prefix(_) => return Err(outside()),
-            }
-        }
-        if !lexical.starts_with(&self.root) {
+        let Some(lexical) = lexical_join(start, &self.root, requested_path) else {
             return Err(outside());
-        }
+        };
         // Then the real check, which also catches symbolic links that point out of the root.
         let real = lexical
             .canonicalize()
@@ -78,6 +59,30 @@ impl AssetRoot {
         }
         Ok(real)
     }
+}
+
+/// `start` joined with `requested` by components alone (`.` skipped, `..` removes one; no file
+/// system access), or `None` when the result leaves `root` or `requested` is absolute. The
+/// disk root ([`AssetRoot::resolve`]) and in-memory loads (`context`) both confine paths
+/// with it.
+pub(crate) fn lexical_join(start: &Path, root: &Path, requested: &Path) -> Option<PathBuf> {
+    if requested.is_absolute() || requested.has_root() {
+        return None;
+    }
+    let mut lexical = start.to_path_buf();
+    for component in requested.components() {
+        match component {
+            Component::Normal(part) => lexical.push(part),
+            Component::CurDir => {}
+            Component::ParentDir => {
+                if !lexical.pop() {
+                    return None;
+                }
+            }
+            Component::RootDir | Component::Prefix(_) => return None,
+        }
+    }
+    lexical.starts_with(root).then_some(lexical)
 }
 
 #[cfg(test)]

@@ -44,6 +44,7 @@ mod app_settings_values;
 mod app_shell_run;
 mod app_shell_states;
 mod assets_bad_input;
+mod assets_from_bytes;
 mod assets_gltf;
 mod assets_obj;
 mod assets_robustness;

@@ -6,7 +6,8 @@
 //! returns an [`AnimError`] naming the file and the item for anything wrong. Panics from a
 //! missing check are caught and returned as [`AnimError::LoaderPanic`].
 //!
-//! Owns: [`load_animation`], [`load_animation_file`], nodes and skins.
+//! Owns: [`load_animation`], [`load_animation_file`], [`load_animation_bytes`] (the same
+//! reading from memory, for the fuzz targets), nodes and skins.
 //! Must not: convert axes or units (glTF's are the engine's), or touch the renderer.
 //! Runs on whichever thread loads assets.
 
@@ -26,13 +27,28 @@ use super::skin::Skin;
 use crate::assets::context::LoadContext;
 use crate::assets::gltf::accessor::Reader;
 use crate::assets::gltf::document::open;
-use crate::assets::{AssetError, AssetRoot};
+use crate::assets::{AssetError, AssetRoot, MemoryFiles};
 
 /// Loads the animation data of the glTF/GLB file at `path` (relative to `root`; `referrer`
 /// names the file that refers to it, for messages).
 pub fn load_animation(root: &AssetRoot, referrer: &Path, path: &str) -> AnimResult<AnimatedModel> {
     let file = root.resolve(referrer, None, path)?;
-    let mut context = LoadContext::new(root, file.clone());
+    read_caught(LoadContext::new(root, file))
+}
+
+/// Loads the animation data of a glTF/GLB file held in memory (GLB known by its magic, as
+/// for a file): `name` names it in messages, `bytes` is the file and `files` holds what it references (buffers) by path relative to `name`'s folder.
+pub fn load_animation_bytes(
+    name: &Path,
+    bytes: &[u8],
+    files: &MemoryFiles,
+) -> AnimResult<AnimatedModel> {
+    read_caught(LoadContext::in_memory(name, bytes, files))
+}
+
+/// [`read`], a panic turned into [`AnimError::LoaderPanic`].
+fn read_caught(mut context: LoadContext) -> AnimResult<AnimatedModel> {
+    let file = context.file.clone();
     match catch_unwind(AssertUnwindSafe(|| read(&mut context))) {
         Ok(result) => result,
         Err(payload) => Err(AnimError::LoaderPanic {

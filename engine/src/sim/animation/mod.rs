@@ -47,7 +47,7 @@ pub use deform::{
 };
 pub use entities::EntityAnimations;
 pub use error::{AnimError, AnimResult};
-pub use gltf_anim::{load_animation, load_animation_file};
+pub use gltf_anim::{load_animation, load_animation_bytes, load_animation_file};
 pub use model::{AnimMesh, AnimPrimitive, AnimatedModel};
 pub use morph::{MorphTarget, morph_normals, morph_positions, morph_tangents};
 pub use player::{AnimationPlayer, FiredEvent, PlayMode, Playback};
