@@ -5,11 +5,18 @@
 //! catch its own panic ([`candela::assets::AssetError::LoaderPanic`]) or an accepted path
 //! outside the asset root.
 //!
-//! Owns: the [`Target`] list, [`run`], the per-thread scratch folder the file-based loaders read
-//! from ([`scratch`]) and a deterministic byte mutator ([`mutate`]) for the corpus tests. Runs
-//! on the calling thread (afl's fork server, or the tests). Must not: keep state between runs
-//! beyond the scratch folder's files, which each run rewrites.
+//! Every input stays in memory (afl's persistent mode runs thousands a second): the loaders
+//! read it from a byte slice, with the files it references in memory ([`fixed`]). Only
+//! `asset_path` and `level` read the per-thread scratch folder on disk ([`scratch`]), made
+//! once, never written per input.
+//!
+//! Owns: the [`Target`] list, [`run`], the fixed in-memory files ([`fixed`]), the scratch
+//! folder ([`scratch`]), and a deterministic byte mutator ([`mutate`]) for the corpus tests and
+//! `examples/exec_rate.rs` (executions per second). Runs on the
+//! calling thread (afl's fork server, or the tests). Must not: keep state between runs, or
+//! write files per run.
 
+pub mod fixed;
 pub mod mutate;
 pub mod scratch;
 pub mod seeds;

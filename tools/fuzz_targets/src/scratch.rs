@@ -1,6 +1,8 @@
-//! The scratch folder the file-based targets write their input into: one per process and
-//! thread, under `/dev/shm` when it exists (afl runs thousands of inputs a second), created on
-//! first use with a fixed layout that the asset-path target resolves against.
+//! The scratch folder on disk: one per process and thread, under `/dev/shm` when it exists,
+//! created once on first use with a fixed layout. Only two targets read it, and no target
+//! writes to it per execution (every input stays in memory): `asset_path`, which resolves
+//! paths against real symbolic links, and `level`, whose models, sounds and characters load
+//! through the asset root on disk as in the game.
 //!
 //! Layout: `root/` is the asset root (a level, a model and a texture inside it, a symlink
 //! `root/escape` to the folder above the root and `root/models/loop` back to `root/models`),
@@ -9,8 +11,13 @@
 use std::cell::OnceCell;
 use std::path::{Path, PathBuf};
 
+use candela::assets::AssetRoot;
+
+use crate::fixed::{FIXED_OBJ, NOT_A_PNG};
+
 thread_local! {
     static FOLDER: OnceCell<PathBuf> = const { OnceCell::new() };
+    static ROOT: OnceCell<AssetRoot> = const { OnceCell::new() };
 }
 
 /// The scratch folder of this thread (made on first use).
@@ -23,13 +30,15 @@ pub fn root() -> PathBuf {
     folder().join("root")
 }
 
-/// Writes `bytes` to `name` inside the asset root and returns the file's path.
-pub fn write(name: &str, bytes: &[u8]) -> PathBuf {
-    let path = root().join(name);
-    if let Err(e) = std::fs::write(&path, bytes) {
-        panic!("fuzz scratch: cannot write {}: {e}", path.display());
-    }
-    path
+/// The [`AssetRoot`] of [`root`] (opened once per thread).
+pub fn asset_root() -> AssetRoot {
+    ROOT.with(|cell| {
+        cell.get_or_init(|| match AssetRoot::new(root()) {
+            Ok(root) => root,
+            Err(e) => panic!("fuzz scratch root: {e}"),
+        })
+        .clone()
+    })
 }
 
 fn make() -> PathBuf {
@@ -50,7 +59,7 @@ fn make() -> PathBuf {
         std::fs::create_dir_all(folder.join("outside"))?;
         std::fs::write(folder.join("outside/secret.txt"), b"outside the root")?;
         std::fs::write(root.join("models/box.obj"), FIXED_OBJ)?;
-        std::fs::write(root.join("textures/t.png"), b"not really a png")?;
+        std::fs::write(root.join("textures/t.png"), NOT_A_PNG)?;
         std::fs::write(root.join("level.ron"), b"()")?;
         #[cfg(unix)]
         {
@@ -70,12 +79,3 @@ fn make() -> PathBuf {
     }
     folder
 }
-
-/// A one-triangle OBJ that uses material `m` from `fuzz.mtl`.
-pub const FIXED_OBJ: &[u8] = b"mtllib fuzz.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\nusemtl m\nf 1/1/1 2/2/1 3/3/1\n";
-
-/// An MTL whose material `m` takes its colour from `fuzz_texture` (the texture target's file).
-pub const TEXTURE_MTL: &[u8] = b"newmtl m\nKd 1 1 1\nmap_Kd fuzz_texture\n";
-
-/// An MTL with one plain material `m` (for the OBJ target).
-pub const PLAIN_MTL: &[u8] = b"newmtl m\nKd 0.5 0.5 0.5\n";

@@ -4,16 +4,24 @@
 //! asset paths that resolve outside the root are bugs, reported by panicking (afl records
 //! the input as a crash; the corpus tests fail naming it).
 //!
-//! Runs on the calling thread. Must not: touch files outside [`crate::scratch`].
+//! Every input stays in memory: the model, animation, texture and sound targets go through
+//! the engine's loaders from a byte slice (`load_model_bytes`, `load_animation_bytes`,
+//! `decode_sound_bytes`) with the files they reference in a [`MemoryFiles`] ([`crate::fixed`]);
+//! a level is parsed from its text and loaded against the scratch asset root, which is read,
+//! never written, per execution.
+//!
+//! Runs on the calling thread. Must not: write files.
 
 use std::path::Path;
 
 use candela::app::{ActionSet, Bindings, Progress, Recording, Script, Settings, parse_checked};
-use candela::assets::{AssetError, AssetRoot, Model, load_model_file};
+use candela::assets::{AssetError, Level, MemoryFiles, Model, load_model_bytes};
 use candela::audio::decode_sound_bytes;
-use candela::sim::animation::{AnimError, load_animation_file};
+use candela::level::playable_from_level;
+use candela::sim::animation::{AnimError, load_animation_bytes};
 
-use crate::scratch::{self, FIXED_OBJ, PLAIN_MTL, TEXTURE_MTL};
+use crate::fixed::{FIXED_OBJ, PLAIN_MTL, TEXTURE_MTL, files};
+use crate::scratch;
 use crate::{Outcome, Target};
 
 /// Runs `target` on `bytes`. Panics on a bug (see the module doc).
@@ -42,22 +50,16 @@ pub fn run(target: Target, bytes: &[u8]) -> Outcome {
             let text = String::from_utf8_lossy(bytes);
             refused(Bindings::parse(Path::new("fuzz_bindings.ron"), &text, &set))
         }
-        Target::Gltf => model(scratch::write("fuzz.gltf", bytes)),
-        Target::Glb => model(scratch::write("fuzz.glb", bytes)),
+        Target::Gltf => model("fuzz.gltf", bytes, &files(&[])),
+        Target::Glb => model("fuzz.glb", bytes, &files(&[])),
         Target::Animation => animation(bytes),
-        Target::Obj => {
-            scratch::write("fuzz.mtl", PLAIN_MTL);
-            model(scratch::write("fuzz.obj", bytes))
-        }
-        Target::Mtl => {
-            scratch::write("fuzz.mtl", bytes);
-            model(scratch::write("fuzz.obj", FIXED_OBJ))
-        }
-        Target::Texture => {
-            scratch::write("fuzz_texture", bytes);
-            scratch::write("fuzz.mtl", TEXTURE_MTL);
-            model(scratch::write("fuzz.obj", FIXED_OBJ))
-        }
+        Target::Obj => model("fuzz.obj", bytes, &files(&[("fuzz.mtl", PLAIN_MTL)])),
+        Target::Mtl => model("fuzz.obj", FIXED_OBJ, &files(&[("fuzz.mtl", bytes)])),
+        Target::Texture => model(
+            "fuzz.obj",
+            FIXED_OBJ,
+            &files(&[("fuzz.mtl", TEXTURE_MTL), ("fuzz_texture", bytes)]),
+        ),
         Target::Sound => refused(decode_sound_bytes("fuzz_sound", bytes)),
         Target::AssetPath => asset_path(bytes),
     }
@@ -70,13 +72,15 @@ fn refused<T, E: std::fmt::Display>(result: Result<T, E>) -> Outcome {
     }
 }
 
+/// What `load_level` does after reading the file: parse, then load against the asset root.
 fn level(bytes: &[u8]) -> Outcome {
-    let path = scratch::write("fuzz_level.ron", bytes);
-    let root = match AssetRoot::new(scratch::root()) {
-        Ok(root) => root,
-        Err(e) => panic!("fuzz scratch root: {e}"),
+    let path = scratch::root().join("fuzz_level.ron");
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return Outcome::Refused("the level is not UTF-8".to_string());
     };
-    match candela::level::load_level(&path, &root) {
+    let loaded = Level::parse(&path, text)
+        .and_then(|level| playable_from_level(&path, &level, &scratch::asset_root()));
+    match loaded {
         Ok(_) => Outcome::Accepted,
         Err(e) => asset_refusal(e),
     }
@@ -89,8 +93,9 @@ fn asset_refusal(e: AssetError) -> Outcome {
     Outcome::Refused(e.to_string())
 }
 
-fn model(path: std::path::PathBuf) -> Outcome {
-    match load_model_file(&path) {
+/// Loads `bytes` as the model `name` (its extension picks the loader), beside `files`.
+fn model(name: &str, bytes: &[u8], files: &MemoryFiles) -> Outcome {
+    match load_model_bytes(Path::new(name), bytes, files) {
         Ok(model) => {
             check_model(&model);
             Outcome::Accepted
@@ -134,13 +139,13 @@ fn check_model(model: &Model) {
 }
 
 fn animation(bytes: &[u8]) -> Outcome {
-    // GLB by its magic, glTF JSON otherwise: the loader picks the format by extension.
+    // The loader knows GLB by its magic; the name only appears in messages.
     let name = if bytes.starts_with(b"glTF") {
         "fuzz_anim.glb"
     } else {
         "fuzz_anim.gltf"
     };
-    match load_animation_file(&scratch::write(name, bytes)) {
+    match load_animation_bytes(Path::new(name), bytes, &files(&[])) {
         Ok(_) => Outcome::Accepted,
         Err(AnimError::LoaderPanic { file, message }) => {
             panic!(
@@ -174,10 +179,7 @@ fn asset_path(bytes: &[u8]) -> Outcome {
     let text = String::from_utf8_lossy(bytes);
     let requested = text.lines().next().unwrap_or_default();
     let root_dir = scratch::root();
-    let root = match AssetRoot::new(&root_dir) {
-        Ok(root) => root,
-        Err(e) => panic!("fuzz scratch root: {e}"),
-    };
+    let root = scratch::asset_root();
     match root.resolve(&root_dir.join("level.ron"), None, requested) {
         Ok(resolved) => {
             let inside = match (resolved.canonicalize(), root_dir.canonicalize()) {
