@@ -25,7 +25,7 @@ impl MemoryFiles {
     }
 
     /// Adds (or replaces) the file at `path` (relative to the model's folder; `.` components
-    /// and backslashes are accepted and normalised).
+    /// and backslashes are accepted and normalised, `..` components are dropped).
     pub fn insert(&mut self, path: &str, bytes: impl Into<Vec<u8>>) -> &mut Self {
         self.files
             .insert(key(Path::new(&path.replace('\\', "/"))), bytes.into());
