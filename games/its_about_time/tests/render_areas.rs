@@ -3,7 +3,10 @@
 //! holds fewer emitters than with the camera on the plaza (outside every area), and exactly as
 //! many as with the camera on the plaza and every group the area does not name switched off
 //! (the light-switching mechanism, counted independently of the areas). With
-//! `Upkeep::sample_from` made a no-op the temple holds all 3,476 and the test fails.
+//! `Upkeep::sample_from` made a no-op the temple holds all 3,476 and the test fails. And each
+//! area lists every group that can light what a camera in its box sees: the fireflies the
+//! groups it leaves out could make stay under a few a frame (an estimate by rays cast on the
+//! committed scene, see [`every_group_that_can_light_an_areas_view_is_listed`]).
 
 use candela::app::{Engine, Environment, Step};
 use candela::assets::{CameraDesc, sampled_groups};
@@ -179,8 +182,7 @@ fn cameras(area: &candela::assets::RenderArea) -> Vec<glam::Vec3> {
 /// frame at one sample, summed over the groups the camera's areas do not list, must stay under
 /// [`MOST_FIREFLIES`]. With the lists as they were before issue 36's fix (each area its own
 /// group, the temple and the shrine each other's) this failed for every area: 48.9 a frame from
-/// the sun gate court's torches seen from the rolling stone over the court's wall (the orange
-/// dots of its replay), 62.3 from the temple's torches seen from the water stair, 132.5 from
+/// the sun gate court's torches seen from the rolling stone over the court's wall, 62.3 from the temple's torches seen from the water stair, 132.5 from
 /// the shrine's torches seen from the court of weights.
 #[test]
 fn every_group_that_can_light_an_areas_view_is_listed() -> anyhow::Result<()> {
