@@ -220,8 +220,10 @@ Level(
         ground_albedo: (0.45, 0.36, 0.26),
     )),
     // Workload scaling holds 30 fps down to a quarter of the window per axis (320×180 of
-    // 1280×720), as Reflect's chambers do.
-    render: (max_bounces: 2, roulette_start: 1, target_fps: 30, min_scale: 0.25),
+    // 1280×720), as Reflect's chambers do. No Russian roulette within the two bounces: from the
+    // first bounce it ended half the paths off the shaded sandstone and doubled the rest, whose
+    // bounce onto sunlit sand then showed as orange dots (docs/PERFORMANCE.md, issue 36).
+    render: (max_bounces: 2, roulette_start: 2, target_fps: 30, min_scale: 0.25),
     render_areas: [
 {chr(10).join('        ' + a for a in render_areas)}
     ],
