@@ -17,7 +17,7 @@ def weights():
     opens while blocks weigh down the plates carved on its wall (sun and serpent) and the
     other two are empty. Block A starts in line with the sun plate; block B in line with the
     eye plate, so it must be pushed east first."""
-    area("weights", 4, (-36, -1, -10), (-20, 15, 7), [4])
+    area("weights", 4, (-36, -1, -10), (-20, 15, 10), [1, 2, 4, 6, 11, 12, 13, 14])
     plates = [(-31.0, SUN), (-28.5, FRET), (-26.0, EYE), (-23.5, SERPENT)]
     pz = -2.0
     for x, glyph in plates:
@@ -48,7 +48,7 @@ def rolling_stone():
     """A ramp rising south from z = 19 to 2.4 m at z = 27, a boulder on it held by a stone
     chock; the lever beside the ramp's foot sinks the chock, the boulder rolls north
     and breaks the brittle wall closing the vault (`impact_speed` 3 m/s)."""
-    area("rolling_stone", 5, (13, -1, 8), (26, 15, 29), [5])
+    area("rolling_stone", 5, (10, -1, 8), (29, 15, 29), [1, 2, 4, 5, 6])
     cx = 19.0
     theta = math.atan2(2.4, 8.0)
     t, length, zc = 0.4, 9.0, 23.0
@@ -88,7 +88,7 @@ def night_shrine():
     wall shows the order (eye, sun, serpent, fret, left to right). A torch takes only after
     dark (the sun 6° below the horizon); lit in order, the vault opens; a wrong torch puts them
     all out."""
-    area("night_shrine", 6, (-34, -1, -28), (-15, 15, -10.5), [6, 11, 12, 13, 14])
+    area("night_shrine", 6, (-34, -1, -28), (-13, 15, -3), [1, 2, 4, 6, 11, 12, 13, 14])
     order = [EYE, SUN, SERPENT, FRET]
     torches = [(-29.5, SUN), (-26.5, FRET), (-22.5, EYE), (-19.5, SERPENT)]
     counters.append('(name: "shrine"),')
@@ -139,7 +139,7 @@ def water_stair():
     Rain Jar stands; the lever on the terrace drains it to come down, and one inside by the
     door drains it for anyone shut in. The counter `pool` holds 1 while the pool is drained.
     The water ripples where the explorer wades."""
-    area("water_stair", 3, (16, -1, -23), (26, 15, -13), [3])
+    area("water_stair", 3, (12, -1, -24), (29, 15, -7), [1, 2, 3, 6, 14])
     x0, x1, z0, z1 = 17.0, 25.0, -22.0, -14.0          # inner faces west / east / north / south
     T, H = 0.6, 3.6
     cx = (x0 + x1) / 2

@@ -22,12 +22,16 @@ OUT = pathlib.Path("assets/its_about_time/ruins.ron")
 # --- Render areas (`render_areas`): one per puzzle and the temple, each with its emitters in a
 # light group of its own (1 temple, 2 sun gate, 3 water stair, 4 weights, 5 rolling stone,
 # 6 night shrine; the shrine's torches are 11-14); the camera inside an area samples only the
-# groups seen from it. The plaza between them is in no area: every group is sampled there.
-# Y spans the follow camera's heights (metres).
+# groups it lists, which must be every group that can light what the camera sees from the box
+# (the plaza is open: most are), else those emitters show as fireflies. The test
+# `games/its_about_time/tests/render_areas.rs` checks the lists and names a group missing. Each
+# box holds its puzzle's camera way (`its_about_time --replay R --headless --camera-path OUT`),
+# the sun gate's the plaza's sun altar where time is turned. The plaza's south, where play
+# starts, is in no area: every group is sampled there. Y spans the follow camera's heights
+# (metres).
 Y0, Y1 = -1, 15
-# --- The temple to the north: three tiers, steps, carved panels, torches, its altar. Seen from
-# it: the night shrine's flames to the west.
-area("temple", 1, (-12, Y0, -36), (12, Y1, -8), [1, 6, 11, 12, 13, 14])
+# --- The temple to the north: three tiers, steps, carved panels, torches, its altar.
+area("temple", 1, (-12, Y0, -36), (12, Y1, -8), [1, 2, 3, 4, 6, 11, 12, 13, 14])
 TZ = -26
 for i, (scale, y) in enumerate([(1.6, 0.0), (1.2, 1.5), (0.8, 3.0)]):
     add("temple_tier", 0, y, TZ, scale=(scale, 1, scale))
@@ -58,7 +62,7 @@ add("lintel", -4.5, 3.0, 3.2, rot=(0, 90, 0), scale=(1, 1, 1))
 add("sun_altar", 5, 0, 5, name="sun_altar")
 add("sun_disc", 5, 1.45, 5, rot=(90, -60, 0), body=None)
 
-area("sun_gate", 2, (8, Y0, -7), (27, Y1, 7), [2])
+area("sun_gate", 2, (0, Y0, -7), (27, Y1, 12), [1, 2, 3, 4, 6, 12, 14])
 # --- The shrine of the sun glyph: a closed stone room (3 x 3 m inside) whose only opening is a
 # slot in its west wall, aimed at where the sun stands at about 15:15 local time on 21 March
 # (azimuth 254.5 deg, elevation 38 deg at 19.69 N, 98.84 W). Inside, the glyph (a sensor: the
@@ -216,8 +220,10 @@ Level(
         ground_albedo: (0.45, 0.36, 0.26),
     )),
     // Workload scaling holds 30 fps down to a quarter of the window per axis (320×180 of
-    // 1280×720), as Reflect's chambers do.
-    render: (max_bounces: 2, roulette_start: 1, target_fps: 30, min_scale: 0.25),
+    // 1280×720), as Reflect's chambers do. No Russian roulette within the two bounces: from the
+    // first bounce it ended half the paths off the shaded sandstone and doubled the rest, whose
+    // bounce onto sunlit sand then showed as orange dots (docs/PERFORMANCE.md, issue 36).
+    render: (max_bounces: 2, roulette_start: 2, target_fps: 30, min_scale: 0.25),
     render_areas: [
 {chr(10).join('        ' + a for a in render_areas)}
     ],

@@ -7,7 +7,7 @@
 
 use std::path::PathBuf;
 
-use anyhow::bail;
+use anyhow::{Context, bail};
 use candela::app::StepInput;
 use candela::app::harness::{WindowedPlay, play_shots, play_windowed, tour_shots};
 use clap::Parser;
@@ -57,6 +57,14 @@ pub struct Args {
     /// Windowed: denoise each frame before it is shown (`--denoise false`: the raw film).
     #[arg(long, default_value_t = true, action = clap::ArgAction::Set)]
     pub denoise: bool,
+    /// Sample every light group everywhere, as if the level declared no `render_areas` (the
+    /// level file, and so the replays' level hash, stay as they are): to compare with areas.
+    #[arg(long)]
+    pub no_render_areas: bool,
+    /// With --headless: write the camera's position after each frame, and the render areas
+    /// holding it, to this CSV file (`frame,x,y,z,areas`).
+    #[arg(long)]
+    pub camera_path: Option<PathBuf>,
 }
 
 /// The title, then play from the start with a shot `play_<frame>.png` at each of `frames`
@@ -81,7 +89,10 @@ fn replay_shots(dir: &std::path::Path, frames: &[u32]) -> Vec<candela::app::shel
 
 /// Runs what `args` asks; returns the line to print.
 pub fn run(args: &Args) -> anyhow::Result<String> {
-    let world = RuinsWorld::open(args.level.as_deref())?;
+    let mut world = RuinsWorld::open(args.level.as_deref())?;
+    if args.no_render_areas {
+        world.level.render_areas.clear();
+    }
     if args.bench {
         return crate::bench::bench(&world, args.bench_seconds, args.denoise);
     }
@@ -90,6 +101,18 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
             bail!("--headless plays a recording: give --replay FILE");
         };
         let summary = play_replay(&world, replay)?;
+        if let Some(out) = &args.camera_path {
+            let areas = &world.level.render_areas;
+            std::fs::write(
+                out,
+                crate::camera_areas::path_csv(areas, &summary.camera_path),
+            )
+            .with_context(|| format!("writing the camera path {}", out.display()))?;
+            eprintln!(
+                "{}",
+                crate::camera_areas::shares_line(areas, &summary.camera_path)
+            );
+        }
         let line = summary.line();
         if !summary.solved() {
             bail!(

@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use candela::app::harness::{ReplayPace, play_replay as play_replay_with};
+use candela::app::harness::{ReplayPace, play_replay_watching};
 
 use crate::game::soundscape::Surface;
 use crate::game::{TimeEvent, day};
@@ -39,6 +39,8 @@ pub struct RunSummary {
     /// The name of every sound started, oldest first (the engine keeps the latest
     /// `candela::audio::MAX_PLAYED_RECORDS`; a whole game starts far fewer).
     pub sounds: Vec<String>,
+    /// Where the camera stood after each frame (one a fixed step), metres, world space.
+    pub camera_path: Vec<[f32; 3]>,
 }
 
 impl RunSummary {
@@ -77,27 +79,35 @@ impl RunSummary {
 
 /// Replays `replay` on `world` headless at 60 frames per second (one fixed step a frame).
 pub fn play_replay(world: &RuinsWorld, replay: &Path) -> anyhow::Result<RunSummary> {
-    let summary = play_replay_with(world, replay, ReplayPace::default(), |end| RunSummary {
-        artifacts: end.game.artifacts().to_vec(),
-        artifacts_total: end.game.artifacts_in_level().len(),
-        ending: end.game.ended(),
-        seconds: end.game.play_seconds(),
-        local_hours: end.engine.sky_now().as_ref().and_then(day::local_hours),
-        steps: end.engine.clock().steps,
-        state_hash: end.engine.state_hash(),
-        log: end.game.log().to_vec(),
-        broken: (0..)
-            .map_while(|i| end.engine.physics().broken(i))
-            .filter(|&b| b)
-            .count(),
-        footsteps: end.game.soundscape().footsteps().to_vec(),
-        sounds: end
-            .engine
-            .audio()
-            .played()
-            .iter()
-            .map(|p| p.name.to_string())
-            .collect(),
+    let mut camera_path = Vec::new();
+    let watch = |engine: &candela::app::Engine| {
+        camera_path.push(engine.camera_position().to_array());
+    };
+    let mut summary = play_replay_watching(world, replay, ReplayPace::default(), watch, |end| {
+        RunSummary {
+            artifacts: end.game.artifacts().to_vec(),
+            artifacts_total: end.game.artifacts_in_level().len(),
+            ending: end.game.ended(),
+            seconds: end.game.play_seconds(),
+            local_hours: end.engine.sky_now().as_ref().and_then(day::local_hours),
+            steps: end.engine.clock().steps,
+            state_hash: end.engine.state_hash(),
+            log: end.game.log().to_vec(),
+            broken: (0..)
+                .map_while(|i| end.engine.physics().broken(i))
+                .filter(|&b| b)
+                .count(),
+            footsteps: end.game.soundscape().footsteps().to_vec(),
+            sounds: end
+                .engine
+                .audio()
+                .played()
+                .iter()
+                .map(|p| p.name.to_string())
+                .collect(),
+            camera_path: Vec::new(),
+        }
     })?;
+    summary.camera_path = camera_path;
     Ok(summary)
 }

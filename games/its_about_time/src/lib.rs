@@ -5,12 +5,13 @@
 //!
 //! Modules: `world` (loading the ruins), `game` (the rules: artifacts, the sun altar that
 //! turns time, the ending), `replays`, `harness` (the game as the engine's harness runs it),
-//! `headless` (a replay's summary), `bot` (the scripted explorer that records the committed
+//! `headless` (a replay's summary), `camera_areas` (the render areas along its camera path), `bot` (the scripted explorer that records the committed
 //! replays) and `routes` (its ways through the ruins), `bench` (`--bench`), `cli`.
 //! Main thread throughout. Must not: reach into the renderer.
 
 pub mod bench;
 pub mod bot;
+pub mod camera_areas;
 pub mod cli;
 pub mod game;
 pub mod harness;

@@ -42,7 +42,7 @@ pub use first_person::FirstPersonLevel;
 pub use fixed_steps::{FixedSteps, StepsEnd, run_fixed_steps};
 pub use ghosting::{GhostError, GhostSetup, measure_ghosting};
 pub use menu_monkey::{Episode, MenuMonkey, MenuStep};
-pub use replay_run::{ReplayEnd, ReplayPace, play_replay};
+pub use replay_run::{ReplayEnd, ReplayPace, play_replay, play_replay_watching};
 pub use shots::{play_shots, start_cue, tour_shots};
 pub use soak_levels::{LevelSoak, soak_levels};
 pub use soak_shell::{ShellSoak, soak_shell};

@@ -1,7 +1,8 @@
 //! Replaying a game's recording without a window: [`play_replay`] runs the recording step by
 //! step on a tiny CPU-traced frame (16×9: rules that query the scene still see it committed
 //! every frame) and hands the engine and the game, once the recording finished, to the game's
-//! own summary. The summary line and the exit code are the game binary's.
+//! own summary; [`play_replay_watching`] also shows the engine to the caller after every frame
+//! (the camera's way through a level). The summary line and the exit code are the game binary's.
 //!
 //! Main thread (the render thread renders). Must not: open windows or devices, or judge what
 //! the run did (the game's summary does).
@@ -51,6 +52,18 @@ pub fn play_replay<C: HarnessGame, S>(
     pace: ReplayPace,
     summarise: impl FnOnce(ReplayEnd<'_, C::Game>) -> S,
 ) -> Result<S, HarnessError> {
+    play_replay_watching(config, path, pace, |_| {}, summarise)
+}
+
+/// [`play_replay`], calling `watch` with the engine after every frame (read-only: the
+/// camera's position, the clock).
+pub fn play_replay_watching<C: HarnessGame, S>(
+    config: &C,
+    path: &Path,
+    pace: ReplayPace,
+    mut watch: impl FnMut(&Engine),
+    summarise: impl FnOnce(ReplayEnd<'_, C::Game>) -> S,
+) -> Result<S, HarnessError> {
     let Started {
         mut engine,
         mut game,
@@ -63,6 +76,7 @@ pub fn play_replay<C: HarnessGame, S>(
     for _ in 0..most_frames {
         engine.frame(pace.frame_seconds, &mut game)?;
         let _ = engine.rendered();
+        watch(&engine);
         if engine.replay_finished() && engine.clock().steps >= pace.at_least_steps {
             break;
         }

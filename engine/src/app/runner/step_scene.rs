@@ -9,7 +9,7 @@
 //!
 //! Owns: [`Engine::settle_step_scene`] and [`Engine::update_scene`] (typed scene changes into
 //! the flattened scene, the camera, the listener, the render-space origin, and the motion
-//! summed for the next commit). Main thread, inside `Engine::frame`.
+//! summed for the next commit); [`Engine::camera_position`] (where the camera those left is). Main thread, inside `Engine::frame`.
 //! Must not: seal or hand off commits (the scene writes stay pending for the frame's commit),
 //! or run game hooks.
 
@@ -17,6 +17,12 @@ use super::engine::Engine;
 use crate::audio::sync_emitters;
 
 impl Engine {
+    /// Where the camera the last frame rendered from stands (metres, world space): the one an
+    /// entity carries, else the default camera. The render areas sample from here.
+    pub fn camera_position(&self) -> glam::Vec3 {
+        self.camera.position()
+    }
+
     /// Makes the world's transforms and the query scene what fixed step `index` needs: posed
     /// as of the end of the step before (physics not interpolated, level waves at `index`
     /// steps of simulated time), the changes in the flattened scene and its TLAS rebuilt. The
