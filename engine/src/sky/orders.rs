@@ -168,7 +168,7 @@ struct Context<'a> {
 
 impl ScatteringOrders {
     /// The table for `atmosphere`, from a cache of the latest four atmospheres (built on a miss:
-    /// about a second on one core).
+    /// about 4 s on two loaded cores, `docs/PERFORMANCE.md`).
     pub fn shared(atmosphere: &Atmosphere, transmittance: &TransmittanceLut) -> Arc<Self> {
         static CACHE: Mutex<Vec<(Atmosphere, Arc<ScatteringOrders>)>> = Mutex::new(Vec::new());
         if let Ok(cache) = CACHE.lock()
