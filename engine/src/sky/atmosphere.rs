@@ -218,3 +218,28 @@ pub fn ray_sphere(r: f32, mu: f32, radius: f32, near: bool) -> Option<f32> {
     let t = if near { -r * mu - s } else { -r * mu + s };
     (t >= 0.0).then_some(t)
 }
+
+/// Distances along the ray from `origin` along `dir` (both unit-free km, planet centred) within
+/// (0, `length`) where it enters or leaves the planet's shadow (a cylinder of the ground's
+/// radius behind the planet, away from `sun`), in increasing order.
+pub fn shadow_edges(origin: Vec3, dir: Vec3, sun: Vec3, length: f32) -> Vec<f32> {
+    // |p|² − (p·s)² = R² with p = o + t·d, in f64: |o|² and R² are 4·10⁷ km² apart by ~100.
+    let (o, d, s) = (origin.as_dvec3(), dir.as_dvec3(), sun.as_dvec3());
+    let (ds, os) = (d.dot(s), o.dot(s));
+    let a = 1.0 - ds * ds;
+    let b = 2.0 * (o.dot(d) - os * ds);
+    let ground = GROUND_RADIUS_KM as f64;
+    let c = o.length_squared() - os * os - ground * ground;
+    let disc = b * b - 4.0 * a * c;
+    if a < 1e-12 || disc < 0.0 {
+        return Vec::new();
+    }
+    let q = disc.sqrt();
+    let mut edges: Vec<f32> = [(-b - q) / (2.0 * a), (-b + q) / (2.0 * a)]
+        .into_iter()
+        .filter(|&t| t > 0.0 && t < length as f64 && os + t * ds < 0.0)
+        .map(|t| t as f32)
+        .collect();
+    edges.sort_by(f32::total_cmp);
+    edges
+}

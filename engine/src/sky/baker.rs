@@ -28,7 +28,7 @@ use glam::Vec3;
 
 use super::atmosphere::Atmosphere;
 use super::error::SkyError;
-use super::multiscatter::MultiScatteringLut;
+use super::orders::ScatteringOrders;
 use super::physical::PhysicalSky;
 use super::sky_view::{VIEW_HEIGHT, VIEW_WIDTH, build_view};
 use super::transmittance::TransmittanceLut;
@@ -71,7 +71,7 @@ struct Luts {
     key: AtmosphereKey,
     atmosphere: Atmosphere,
     transmittance: TransmittanceLut,
-    multiple: MultiScatteringLut,
+    multiple: Arc<ScatteringOrders>,
 }
 
 /// What [`SkyBaker::update`] did.
@@ -127,7 +127,7 @@ fn view(luts: &Luts, elevation_deg: f64) -> Vec<[f32; 4]> {
     build_view(
         &luts.atmosphere,
         &luts.transmittance,
-        &luts.multiple,
+        Some(&luts.multiple),
         (elevation_deg as f32).to_radians(),
     )
 }
@@ -163,7 +163,7 @@ impl SkyBaker {
                 baked = Baked::All;
                 let atmosphere = sky.atmosphere();
                 let transmittance = TransmittanceLut::build(&atmosphere);
-                let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
+                let multiple = ScatteringOrders::shared(&atmosphere, &transmittance);
                 let l = Arc::new(Luts {
                     key: k,
                     atmosphere,

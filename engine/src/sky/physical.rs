@@ -3,8 +3,8 @@
 //! (direction and direct normal irradiance through the air) and [`SkyTables`], the
 //! precomputed sky-view texels both tracers read.
 //!
-//! Any thread. Building the tables costs about 0.3 s on one core: done when the sky
-//! changes, never per frame. Directions are in engine space (north = −Z, east = +X, up = +Y);
+//! Any thread. Building the tables costs about 0.3 s on one core, plus the scattering orders
+//! once per atmosphere (`orders`, cached): done when the sky changes, never per frame. Directions are in engine space (north = −Z, east = +X, up = +Y);
 //! radiance and irradiance in linear RGB, W·m⁻²·sr⁻¹·nm⁻¹ and W·m⁻²·nm⁻¹ (the spectral units of
 //! Mitsuba's sunsky, which `docs/ACCURACY.md` compares against). Must not: know levels, scenes
 //! or tracers (the level loader names the file beside a [`SkyError`]).
@@ -18,7 +18,7 @@ use super::atmosphere::{
 use super::calendar::UtcInstant;
 use super::error::SkyError;
 use super::horizon::{Horizontal, Observer};
-use super::multiscatter::MultiScatteringLut;
+use super::orders::ScatteringOrders;
 use super::sky_view::{build_view, lookup_view};
 use super::solar::sun_position;
 use super::transmittance::{TransmittanceLut, transmittance_exact};
@@ -253,20 +253,20 @@ pub struct SkyTables {
 }
 
 impl SkyTables {
-    /// Precomputes the transmittance, multiple-scattering and sky-view tables (the sky-view one
+    /// Precomputes the transmittance, scattering-orders and sky-view tables (the sky-view one
     /// for the sun's elevation rounded to `TABLE_ELEVATION_STEP_DEG`, as [`super::SkyBaker`]).
     pub fn build(sky: &PhysicalSky) -> Result<Self, SkyError> {
         let h = sky.sun_horizontal()?;
         let atmosphere = sky.atmosphere();
         let transmittance = TransmittanceLut::build(&atmosphere);
-        let multiple = MultiScatteringLut::build(&atmosphere, &transmittance);
+        let multiple = ScatteringOrders::shared(&atmosphere, &transmittance);
         // The table's elevation step (`baker`), so a table built here equals the render side's.
         let elevation = (super::baker::table_elevation_deg(h.elevation_deg) as f32).to_radians();
-        let mut texels = build_view(&atmosphere, &transmittance, &multiple, elevation);
+        let mut texels = build_view(&atmosphere, &transmittance, Some(&multiple), elevation);
         let moon = sky.moon_sky()?;
         if let Some(m) = moon {
             let e = (m.table_elevation_deg as f32).to_radians();
-            texels.extend(build_view(&atmosphere, &transmittance, &multiple, e));
+            texels.extend(build_view(&atmosphere, &transmittance, Some(&multiple), e));
         }
         let flat = Horizontal {
             elevation_deg: 0.0,
@@ -280,22 +280,21 @@ impl SkyTables {
         })
     }
 
-    /// The sun's sky-view table of [`SkyTables::build`] with Hillaire's multiple-scattering term
-    /// left out (Ψms = 0): single scattering alone above the horizon (below it, also the
-    /// directly lit ground). No moon's table. A check of the tables against a reference
+    /// The sun's sky-view table of [`SkyTables::build`] with the second and higher scattering
+    /// orders left out (`sky/orders.rs`): single scattering alone above the horizon (below it,
+    /// also the ground lit by the sun alone). No moon's table. A check of the tables against a reference
     /// (`engine/tests/engine/sky_brute_force.rs`); the tracers never read it.
     pub fn build_single_scattering(sky: &PhysicalSky) -> Result<Self, SkyError> {
         let h = sky.sun_horizontal()?;
         let atmosphere = sky.atmosphere();
         let transmittance = TransmittanceLut::build(&atmosphere);
         let elevation = (super::baker::table_elevation_deg(h.elevation_deg) as f32).to_radians();
-        let none = MultiScatteringLut::none();
         let flat = Horizontal {
             elevation_deg: 0.0,
             azimuth_deg: h.azimuth_deg,
         };
         Ok(Self {
-            texels: build_view(&atmosphere, &transmittance, &none, elevation),
+            texels: build_view(&atmosphere, &transmittance, None, elevation),
             sun_direction: h.direction(),
             sun_azimuth: flat.direction(),
             moon_sky: [0.0; 4],

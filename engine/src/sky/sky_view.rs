@@ -15,22 +15,24 @@ use rayon::prelude::*;
 
 use super::atmosphere::{
     Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, ray_sphere,
-    rayleigh_phase,
+    rayleigh_phase, shadow_edges,
 };
-use super::multiscatter::MultiScatteringLut;
+use super::orders::ScatteringOrders;
 use super::transmittance::TransmittanceLut;
 
 /// Columns of the sky-view table (azimuth from the sun, 0..π).
 pub const VIEW_WIDTH: usize = 128;
 /// Rows of the sky-view table (elevation, nadir to zenith; odd so the horizon is a row).
 pub const VIEW_HEIGHT: usize = 129;
+/// Steps of the march (128 in twilight moved the brute-force figures by a few points either
+/// way at twice the cost: `docs/ACCURACY.md`).
 const STEPS: usize = 64;
 
 /// Builds the sky-view texels for a sun at `sun_elevation` radians.
 pub fn build_view(
     atmosphere: &Atmosphere,
     transmittance: &TransmittanceLut,
-    multiple: &MultiScatteringLut,
+    multiple: Option<&ScatteringOrders>,
     sun_elevation: f32,
 ) -> Vec<[f32; 4]> {
     let sun = Vec3::new(sun_elevation.cos(), 0.0, sun_elevation.sin());
@@ -58,7 +60,7 @@ pub fn build_view(
 fn march(
     atmosphere: &Atmosphere,
     transmittance: &TransmittanceLut,
-    multiple: &MultiScatteringLut,
+    multiple: Option<&ScatteringOrders>,
     dir: Vec3,
     sun: Vec3,
 ) -> Vec3 {
@@ -74,28 +76,42 @@ fn march(
         atmosphere.aerosol.phase(cos_theta),
     );
     let (mut radiance, mut throughput) = (Vec3::ZERO, Vec3::ONE);
-    // Quadratic spacing: short steps near the viewer where the air is dense.
+    // Quadratic spacing: short steps near the viewer where the air is dense; a step that the
+    // planet shadow's edge crosses is cut there, so each piece is lit or dark throughout.
+    let edges = shadow_edges(origin, dir, sun, length);
     let mut t_prev = 0.0;
     for k in 0..STEPS {
-        let t_next = length * ((k + 1) as f32 / STEPS as f32).powi(2);
-        let dt = t_next - t_prev;
-        let p = origin + dir * (0.5 * (t_prev + t_next));
-        t_prev = t_next;
-        let rp = p.length();
-        let mu_s = p.dot(sun) / rp;
-        let m = atmosphere.medium(rp - GROUND_RADIUS_KM);
-        let sun_t = transmittance.lookup(rp, mu_s);
-        let source = sun_t * (m.rayleigh * phase_r + m.mie * phase_m)
-            + multiple.lookup(rp, mu_s) * (m.rayleigh + m.mie);
-        let step = (-m.extinction * dt).exp();
-        radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
-        throughput *= step;
+        let t_end = length * ((k + 1) as f32 / STEPS as f32).powi(2);
+        while t_prev < t_end {
+            let t_next = edges
+                .iter()
+                .copied()
+                .find(|&e| e > t_prev && e < t_end)
+                .unwrap_or(t_end);
+            let dt = t_next - t_prev;
+            let p = origin + dir * (0.5 * (t_prev + t_next));
+            t_prev = t_next;
+            let rp = p.length();
+            let mu_s = p.dot(sun) / rp;
+            let m = atmosphere.medium(rp - GROUND_RADIUS_KM);
+            let sun_t = transmittance.lookup(rp, mu_s);
+            let mut source = sun_t * (m.rayleigh * phase_r + m.mie * phase_m);
+            if let Some(orders) = multiple {
+                source += orders.source(rp, mu_s, p.dot(dir) / rp, cos_theta, &m);
+            }
+            let step = (-m.extinction * dt).exp();
+            radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
+            throughput *= step;
+        }
     }
     if let Some(t) = ground {
         let p = origin + dir * t;
         let normal = p.normalize();
-        let sun_t = transmittance.lookup(p.length(), normal.dot(sun));
-        radiance += throughput * sun_t * normal.dot(sun).max(0.0) * atmosphere.ground_albedo
+        let mu_s = normal.dot(sun);
+        let sun_t = transmittance.lookup(p.length(), mu_s);
+        // The sun's light and (with the orders) the sky's.
+        let sky = multiple.map_or(Vec3::ZERO, |o| o.ground_irradiance(mu_s));
+        radiance += throughput * (sun_t * mu_s.max(0.0) + sky) * atmosphere.ground_albedo
             / std::f32::consts::PI;
     }
     radiance

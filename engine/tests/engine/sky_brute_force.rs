@@ -9,15 +9,17 @@
 //! with the multiple-scattering term zeroed (`SkyTables::build_single_scattering`).
 //!
 //! The issue's bands — single scattering within 1 %, all orders within 5 % by day and 10 % in
-//! twilight (2°, −6°), plus 4.5 standard errors of the reference's Monte Carlo part — hold for
-//! single scattering by day and fail for all orders: Hillaire's multiple-scattering
-//! approximation (Ψms, `sky/multiscatter.rs`) gives too little light, most in blue near the
-//! horizon, and in twilight the single scattering is too bright at a few views lit through
-//! long grazing paths. So CI checks single scattering by day in the issue's band and all orders
-//! by day in a guard around the measured gap; the issue's bands are the `#[ignore]`d
-//! `tables_match_brute_force_in_the_issue_bands` (fails today; it prints the figures of
-//! `docs/ACCURACY.md`, "Brute force against the tables"). `SKY_BRUTE_FORCE_VERBOSE=1` prints
-//! every direction.
+//! twilight (2°, −6°), plus 4.5 standard errors of the reference's Monte Carlo part. Since the
+//! tables' multiple scattering is iterated by orders (`sky/orders.rs`) the totals hold at every
+//! sun elevation but −6° (a few views away from the sun, the tables above a reference whose own
+//! error there is 14–27 %); single scattering holds by day and misses in twilight at channels
+//! far fainter than their view's brightest (blue at 2° through the haze, −6°). So CI checks
+//! single scattering by day in the issue's band, all orders by day in a guard at the measured
+//! gap, and the issue's bands at 90°–2° on a lighter grid (4096 paths per view, single
+//! scattering by day only);
+//! the full grid with the exact bands is the `#[ignore]`d
+//! `tables_match_brute_force_in_the_issue_bands` (it prints the figures of `docs/ACCURACY.md`,
+//! "Brute force against the tables"). `SKY_BRUTE_FORCE_VERBOSE=1` prints every direction.
 
 use candela::sky::{
     Aerosol, HAZE_TURBIDITY_3, Horizontal, PhysicalSky, SOLAR_IRRADIANCE, SkyTables,
@@ -30,6 +32,9 @@ use crate::sky_common::{Reference, reference};
 
 const DAY_DEG: [f64; 3] = [90.0, 30.0, 10.0];
 const ALL_DEG: [f64; 5] = [90.0, 30.0, 10.0, 2.0, -6.0];
+/// CI's lighter grid: −6° left out (the reference's own standard error there is 14–27 %, median,
+/// at 32768 paths, and the tables sit 21–36 % above it, median: not settled either way).
+const LIGHTER_DEG: [f64; 4] = [90.0, 30.0, 10.0, 2.0];
 const DIRECTIONS: usize = 48;
 /// Nodes of the reference's quadrature (converged to 1e-4: `sky_brute_force_reference`).
 pub const FINE: Fineness = Fineness {
@@ -242,11 +247,12 @@ fn single_scattering_by_day_matches_brute_force() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// All orders by day, in a guard around the measured gap — not the issue's 5 % (which fails,
-/// `docs/ACCURACY.md`): no channel more than 5 % above the reference or 50 % below it, and the
-/// median over the views of the worst channel's error at most 20 % (measured at 4096 paths: at
-/// most 40 % below, medians 3.7–17.5 %). Catches a table without its multiple scattering
-/// (medians 42–63 %, seen) or with it doubled.
+/// All orders by day at the measured gap (iterated orders, `sky/orders.rs`): every channel
+/// within the issue's 5 % of the reference (± 4.5 standard errors, 4096 paths per view), and the
+/// median over the views of the worst channel's error at most 5 % (measured: 0.4–0.9 % at 32768
+/// paths, 1.1–2.6 % at these 4096 with the reference's noise). Hillaire's Ψms, which this
+/// replaced, failed it at every sun (medians 3.5–17 %); the orders cut after the second fail it
+/// at 17–36 %.
 #[test]
 fn all_orders_by_day_stay_within_the_measured_gap() -> anyhow::Result<()> {
     let mut failures = Vec::new();
@@ -254,12 +260,12 @@ fn all_orders_by_day_stay_within_the_measured_gap() -> anyhow::Result<()> {
         for sun_deg in DAY_DEG {
             let v = views(sun_deg, aerosol, haze, 4096)?;
             print_figures(name, sun_deg, &v, 4096);
-            failures.extend(total_failures(&v, 0.5, 0.05));
+            failures.extend(total_failures(&v, 0.05, 0.05));
             let errors: Vec<f64> = v
                 .iter()
                 .map(|v| worst(v.total_table, v.reference.total))
                 .collect();
-            if median(&errors) > 0.2 {
+            if median(&errors) > 0.05 {
                 failures.push(format!(
                     "{name}, sun {sun_deg}°: median error {:.3}",
                     median(&errors)
@@ -275,18 +281,37 @@ fn all_orders_by_day_stay_within_the_measured_gap() -> anyhow::Result<()> {
     Ok(())
 }
 
-/// The issue's bands at every sun elevation, both atmospheres, 32768 paths per view; prints
-/// the figures of `docs/ACCURACY.md`. Fails today (known gap: Hillaire's multiple-scattering
-/// approximation by day and in twilight, the twilight single scattering).
+/// The issue's bands at 90°, 30°, 10° and 2°, both atmospheres, on a lighter grid (4096 paths
+/// per view, so 4.5 standard errors are about 2.8 times the full grid's): all orders within 5 %
+/// by day and 10 % at 2°, single scattering within 1 % by day (at 2° it misses in blue through
+/// the haze, 1.5–5.0 %: `docs/ACCURACY.md`). −6° and twilight single scattering: the ignored
+/// full grid.
 #[test]
-#[ignore = "known gap: the tables' multiple scattering leaves them 3.5–19 % (median) below brute force by day and the twilight single scattering misses (docs/ACCURACY.md); slow (75 s on two loaded cores)"]
+fn tables_match_brute_force_in_the_issue_bands_on_a_lighter_grid() -> anyhow::Result<()> {
+    issue_bands(&LIGHTER_DEG, 4096, false)
+}
+
+/// The issue's exact bands at every sun elevation, both atmospheres, 32768 paths per view;
+/// prints the figures of `docs/ACCURACY.md`. Fails in twilight: single scattering in channels
+/// 10²–10⁴ fainter than their view's brightest (blue at 2° through the haze, −6°), and at −6°
+/// the totals at a few views away from the sun (tables above a noisy reference); slow.
+#[test]
+#[ignore = "known gap: twilight single scattering misses the 1 % band in faint channels, and −6° totals at a few views (docs/ACCURACY.md); slow (50–100 s on two loaded cores); CI runs the lighter grid"]
 fn tables_match_brute_force_in_the_issue_bands() -> anyhow::Result<()> {
+    issue_bands(&ALL_DEG, 32768, true)
+}
+
+/// The issue's bands at sun elevations `suns` with `paths` per view; single scattering in
+/// twilight (below 5°) only when `twilight_single`.
+fn issue_bands(suns: &[f64], paths: usize, twilight_single: bool) -> anyhow::Result<()> {
     let mut failures = Vec::new();
     for (name, aerosol, haze) in ATMOSPHERES {
-        for sun_deg in ALL_DEG {
-            let v = views(sun_deg, aerosol, haze, 32768)?;
-            print_figures(name, sun_deg, &v, 32768);
-            failures.extend(single_failures(&v));
+        for &sun_deg in suns {
+            let v = views(sun_deg, aerosol, haze, paths)?;
+            print_figures(name, sun_deg, &v, paths);
+            if sun_deg > 5.0 || twilight_single {
+                failures.extend(single_failures(&v));
+            }
             let band = total_band(sun_deg);
             failures.extend(total_failures(&v, band, band));
         }
