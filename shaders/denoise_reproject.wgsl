@@ -1,13 +1,17 @@
 // The denoiser's per-pixel reprojection (twin: engine/src/render/denoise/reproject.rs, the
 // reference): where each pixel of this frame was in the previous one, and whether the history
-// found there is the same surface. A pixel's world position is its depth along its centre ray;
-// a point on an instance moves with the instance (its GpuMotion), then projects into the
-// previous view; the history is gathered bilinearly from the 2×2 previous pixels around it,
-// each tap kept only if it saw the same instance, a normal within NORMAL_COS and the expected
-// depth within DEPTH_TOLERANCE; a point within SNAP_PIXELS of a pixel centre takes that pixel
-// alone. Nothing kept, a specular pixel or a point off screen: length 0. Formulas and their
-// order match the Rust twin (glam's Vec3 dot, normalize and Affine3A::transform_point3), so
-// the two differ only by f32 rounding. Entry point denoise_reproject.
+// found there is the same surface. A pixel's guide point is its depth along its guide's ray
+// (through the frame's jitter offset in the pixel: the centre for the guide pass); a point on
+// an instance moves with the instance (its GpuMotion), then projects into the previous view;
+// that motion applied to the pixel's centre finds where the pixel was (the history lives on
+// pixel centres). The history is gathered bilinearly from the 2×2 previous pixels around that
+// place, each tap kept only if it saw the same instance, a normal within NORMAL_COS and a plane
+// through its own guide point within PLANE_TOLERANCE of this point; where no tap is kept but
+// the surface is within one pixel of the place (an edge), the taps are taken as they are; a
+// place within SNAP_PIXELS of a pixel centre takes that pixel alone. Nothing found, a specular
+// pixel or a point off screen: length 0. Formulas and their order match the Rust twin (glam's
+// Vec3 dot, normalize and Affine3A::transform_point3), so the two differ only by f32 rounding.
+// Entry point denoise_reproject.
 //
 // Bindings besides the shared ones (0 uniforms, 1 guides: its xyz is the raw normal): 3 the
 // reprojection uniforms; 4 this frame's and 6 the previous frame's ids (instance, specular,
@@ -24,7 +28,7 @@
 @group(0) @binding(10) var<storage, read_write> moments: array<vec4<f32>>;
 
 const NORMAL_COS: f32 = 0.9;
-const DEPTH_TOLERANCE: f32 = 0.05;
+const PLANE_TOLERANCE: f32 = 0.02;
 const SNAP_PIXELS: f32 = 1e-2;
 const NO_INSTANCE: u32 = 0xffffffffu;
 
@@ -33,11 +37,19 @@ fn dot3(a: vec3<f32>, b: vec3<f32>) -> f32 {
     return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-// Unit direction through the centre of pixel (x, y) of this frame (View::centre_direction).
-fn centre_direction(x: u32, y: u32) -> vec3<f32> {
-    let sx = 2.0 * (f32(x) + 0.5) / f32(du.width) - 1.0;
-    let sy = 1.0 - 2.0 * (f32(y) + 0.5) / f32(du.height);
+// Unit direction of pixel (x, y)'s guide in this frame (View::sample_direction).
+fn sample_direction(x: u32, y: u32) -> vec3<f32> {
+    let sx = 2.0 * (f32(x) + ru.jitter_x) / f32(du.width) - 1.0;
+    let sy = 1.0 - 2.0 * (f32(y) + ru.jitter_y) / f32(du.height);
     let d = ru.camera_forward + ru.camera_right * sx + ru.camera_up * sy;
+    return d * (1.0 / sqrt(dot3(d, d)));
+}
+
+// Unit direction of previous pixel (x, y)'s guide (View::sample_direction, previous view).
+fn prev_sample_direction(x: u32, y: u32) -> vec3<f32> {
+    let sx = 2.0 * (f32(x) + ru.prev_jitter_x) / f32(ru.prev_width) - 1.0;
+    let sy = 1.0 - 2.0 * (f32(y) + ru.prev_jitter_y) / f32(ru.prev_height);
+    let d = ru.prev_forward + ru.prev_right * sx + ru.prev_up * sy;
     return d * (1.0 / sqrt(dot3(d, d)));
 }
 
@@ -82,6 +94,79 @@ fn reset_pixel(i: u32) {
     moments[i] = vec4<f32>(0.0);
 }
 
+// What this pixel saw (reproject.rs's Seen): sky, instance, normal, its guide point relative
+// to the previous camera where it was then, and that point's distance.
+struct Seen {
+    sky: bool,
+    instance: u32,
+    normal: vec3<f32>,
+    before: vec3<f32>,
+    expected: f32,
+}
+
+// Whether previous pixel j saw the same surface as `seen` (reproject.rs's same_surface).
+fn same_surface(j: u32, seen: Seen) -> bool {
+    let other = prev_ids[j];
+    if seen.sky {
+        return other.x == NO_INSTANCE;
+    }
+    let n = prev_guides[j].xyz;
+    if other.x != seen.instance || other.y != 0u || dot3(n, seen.normal) < NORMAL_COS {
+        return false;
+    }
+    let tap = prev_sample_direction(j % ru.prev_width, j / ru.prev_width) * bitcast<f32>(other.z);
+    return abs(dot3(n, seen.before - tap)) <= PLANE_TOLERANCE * seen.expected;
+}
+
+// Whether a previous pixel within one pixel of (cx, cy) saw the same surface (surface_near).
+fn surface_near(cx: i32, cy: i32, seen: Seen) -> bool {
+    for (var ny = cy - 1; ny <= cy + 1; ny++) {
+        for (var nx = cx - 1; nx <= cx + 1; nx++) {
+            if nx >= 0 && ny >= 0 && nx < i32(ru.prev_width) && ny < i32(ru.prev_height)
+                && same_surface(u32(ny) * ru.prev_width + u32(nx), seen) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+var<private> tap_x: array<f32, 4>;
+var<private> tap_y: array<f32, 4>;
+var<private> tap_w: array<f32, 4>;
+
+// The taps' weighted history (reproject.rs's gather): every tap with history when `edge`,
+// else those that saw the same surface. Writes pixel i; false when no tap was taken.
+fn gather(i: u32, n: u32, seen: Seen, edge: bool) -> bool {
+    var il = vec4<f32>(0.0);
+    var mo = vec4<f32>(0.0);
+    var weight = 0.0;
+    var shortest = 3.40282347e38;
+    for (var k = 0; k < 4; k++) {
+        let wt = tap_w[k];
+        if wt <= 0.0 || tap_x[k] < 0.0 || tap_y[k] < 0.0
+            || tap_x[k] >= f32(ru.prev_width) || tap_y[k] >= f32(ru.prev_height) {
+            continue;
+        }
+        let j = u32(tap_y[k]) * ru.prev_width + u32(tap_x[k]);
+        let hist = prev_history[j];
+        if hist.w <= 0.0 || !(edge || same_surface(j, seen)) {
+            continue;
+        }
+        il = il + hist * wt;
+        mo = mo + prev_history[n + j] * wt;
+        weight = weight + wt;
+        shortest = min(shortest, hist.w);
+    }
+    if weight <= 0.0 {
+        return false;
+    }
+    let mean = il / weight;
+    history[i] = vec4<f32>(mean.xyz, shortest);
+    moments[i] = mo / weight;
+    return true;
+}
+
 @compute @workgroup_size(8, 8)
 fn denoise_reproject(@builtin(global_invocation_id) id: vec3<u32>) {
     if id.x >= du.width || id.y >= du.height {
@@ -98,74 +183,44 @@ fn denoise_reproject(@builtin(global_invocation_id) id: vec3<u32>) {
     let depth = bitcast<f32>(me.z);
     let normal = guides[i].xyz;
     let sky = instance == NO_INSTANCE || !(depth > 0.0);
-    let dir = centre_direction(id.x, id.y);
-    var prev_dir = dir;
+    let dir = sample_direction(id.x, id.y);
+    var before = dir;
     var expected = 0.0;
     if !sky {
         let world = ru.camera_position + dir * depth;
-        let before = moved_point(instance, world) - ru.prev_position;
-        prev_dir = before;
+        before = moved_point(instance, world) - ru.prev_position;
         expected = sqrt(dot3(before, before));
     }
-    let q = project_previous(prev_dir);
+    let q = project_previous(before);
     if q.z == 0.0 {
         reset_pixel(i);
         return;
     }
-    let fx = q.x - 0.5;
-    let fy = q.y - 0.5;
+    let seen = Seen(sky, instance, normal, before, expected);
+    let fx = q.x - ru.jitter_x;
+    let fy = q.y - ru.jitter_y;
     let x0 = floor(fx);
     let y0 = floor(fy);
     let ax = fx - x0;
     let ay = fy - y0;
-    var tx = array<f32, 4>(x0, x0 + 1.0, x0, x0 + 1.0);
-    var ty = array<f32, 4>(y0, y0, y0 + 1.0, y0 + 1.0);
-    var tw = array<f32, 4>((1.0 - ax) * (1.0 - ay), ax * (1.0 - ay), (1.0 - ax) * ay, ax * ay);
+    tap_x = array<f32, 4>(x0, x0 + 1.0, x0, x0 + 1.0);
+    tap_y = array<f32, 4>(y0, y0, y0 + 1.0, y0 + 1.0);
+    tap_w = array<f32, 4>((1.0 - ax) * (1.0 - ay), ax * (1.0 - ay), (1.0 - ax) * ay, ax * ay);
     if max(min(ax, 1.0 - ax), min(ay, 1.0 - ay)) < SNAP_PIXELS {
         // Rust's f32::round (half away from zero); a snapped point is never halfway.
-        tx = array<f32, 4>(round(fx), 0.0, 0.0, 0.0);
-        ty = array<f32, 4>(round(fy), 0.0, 0.0, 0.0);
-        tw = array<f32, 4>(1.0, 0.0, 0.0, 0.0);
+        tap_x = array<f32, 4>(round(fx), 0.0, 0.0, 0.0);
+        tap_y = array<f32, 4>(round(fy), 0.0, 0.0, 0.0);
+        tap_w = array<f32, 4>(1.0, 0.0, 0.0, 0.0);
     }
-    var il = vec4<f32>(0.0);
-    var mo = vec4<f32>(0.0);
-    var weight = 0.0;
-    var shortest = 3.40282347e38;
-    for (var k = 0; k < 4; k++) {
-        let wt = tw[k];
-        if wt <= 0.0 || tx[k] < 0.0 || ty[k] < 0.0 {
-            continue;
-        }
-        let px = u32(tx[k]);
-        let py = u32(ty[k]);
-        if px >= ru.prev_width || py >= ru.prev_height {
-            continue;
-        }
-        let j = py * ru.prev_width + px;
-        let other = prev_ids[j];
-        var same = false;
-        if sky {
-            same = other.x == NO_INSTANCE;
-        } else {
-            let g_depth = bitcast<f32>(other.z);
-            same = other.x == instance && other.y == 0u
-                && dot3(prev_guides[j].xyz, normal) >= NORMAL_COS
-                && abs(g_depth - expected) <= DEPTH_TOLERANCE * expected;
-        }
-        let hist = prev_history[j];
-        if !same || hist.w <= 0.0 {
-            continue;
-        }
-        il = il + hist * wt;
-        mo = mo + prev_history[n + j] * wt;
-        weight = weight + wt;
-        shortest = min(shortest, hist.w);
-    }
-    if weight <= 0.0 {
-        reset_pixel(i);
+    if gather(i, n, seen, false) {
         return;
     }
-    let mean = il / weight;
-    history[i] = vec4<f32>(mean.xyz, shortest);
-    moments[i] = mo / weight;
+    // An edge: the surface is a pixel away from where this pixel was.
+    let cx = floor(fx + 0.5);
+    let cy = floor(fy + 0.5);
+    if cx >= 0.0 && cy >= 0.0 && cx < f32(ru.prev_width) && cy < f32(ru.prev_height)
+        && surface_near(i32(cx), i32(cy), seen) && gather(i, n, seen, true) {
+        return;
+    }
+    reset_pixel(i);
 }

@@ -568,7 +568,8 @@ const _: () = assert!(size_of::<GpuDenoiseUniforms>() == 32);
 /// Uniforms of the denoiser's reprojection (`shaders/denoise_reproject.wgsl`, and the temporal
 /// pass's `mode`; render thread): this frame's and the previous frame's pinhole cameras as
 /// `render::denoise::View` holds them (position, metres, in the frame uniforms' space; the
-/// pre-scaled `forward`, `right`, `up`), the previous image's size, how many instance motions
+/// pre-scaled `forward`, `right`, `up`; where in their pixels each frame's guides were taken,
+/// `jitter`, pixels from the top left corner), the previous image's size, how many instance motions
 /// the motion buffer holds, and `mode` (0: identity, each pixel keeps its own history; 1: the
 /// history was reprojected, the temporal weight is at least 1/(length + 1)). Twin of
 /// `render::denoise::reproject`'s inputs. 128 bytes.
@@ -580,17 +581,17 @@ pub struct GpuReprojectUniforms {
     pub camera_forward: [f32; 3],
     pub instances: u32,
     pub camera_right: [f32; 3],
-    pub _padding0: u32,
+    pub jitter_x: f32,
     pub camera_up: [f32; 3],
-    pub _padding1: u32,
+    pub jitter_y: f32,
     pub prev_position: [f32; 3],
     pub prev_width: u32,
     pub prev_forward: [f32; 3],
     pub prev_height: u32,
     pub prev_right: [f32; 3],
-    pub _padding2: u32,
+    pub prev_jitter_x: f32,
     pub prev_up: [f32; 3],
-    pub _padding3: u32,
+    pub prev_jitter_y: f32,
 }
 const _: () = assert!(size_of::<GpuReprojectUniforms>() == 128);
 

@@ -256,17 +256,17 @@ struct GpuReprojectUniforms {
     camera_forward: vec3<f32>,
     instances: u32,
     camera_right: vec3<f32>,
-    _padding0: u32,
+    jitter_x: f32,
     camera_up: vec3<f32>,
-    _padding1: u32,
+    jitter_y: f32,
     prev_position: vec3<f32>,
     prev_width: u32,
     prev_forward: vec3<f32>,
     prev_height: u32,
     prev_right: vec3<f32>,
-    _padding2: u32,
+    prev_jitter_x: f32,
     prev_up: vec3<f32>,
-    _padding3: u32,
+    prev_jitter_y: f32,
 }
 
 struct GpuMotion {

@@ -199,17 +199,17 @@ fn rust_layouts() -> Vec<RustLayout> {
             camera_forward,
             instances,
             camera_right,
-            _padding0,
+            jitter_x,
             camera_up,
-            _padding1,
+            jitter_y,
             prev_position,
             prev_width,
             prev_forward,
             prev_height,
             prev_right,
-            _padding2,
+            prev_jitter_x,
             prev_up,
-            _padding3
+            prev_jitter_y
         }),
         rust_layout!(GpuMotion { prev_from_now }),
     ]
@@ -325,6 +325,34 @@ fn triangle_test_constants_agree() {
             .find_map(|l| l.trim().strip_prefix(&prefix))
             .and_then(|rest| rest.trim_end_matches(';').parse().ok())
             .unwrap_or_else(|| panic!("{name} not found as an f32 literal in traverse.wgsl"));
+        assert_eq!(
+            wgsl.to_bits(),
+            value.to_bits(),
+            "{name}: WGSL {wgsl} vs Rust {value}"
+        );
+    }
+}
+
+/// The reprojection's thresholds are the same numbers in both twins.
+#[test]
+fn reprojection_constants_agree() {
+    use candela::render::denoise::{NORMAL_COS, PLANE_TOLERANCE, SNAP_PIXELS};
+    let path = candela_tests::repo().join("shaders/denoise_reproject.wgsl");
+    let source =
+        std::fs::read_to_string(&path).expect("shaders/denoise_reproject.wgsl is readable");
+    for (name, value) in [
+        ("NORMAL_COS", NORMAL_COS),
+        ("PLANE_TOLERANCE", PLANE_TOLERANCE),
+        ("SNAP_PIXELS", SNAP_PIXELS),
+    ] {
+        let prefix = format!("const {name}: f32 = ");
+        let wgsl: f32 = source
+            .lines()
+            .find_map(|l| l.trim().strip_prefix(&prefix))
+            .and_then(|rest| rest.trim_end_matches(';').parse().ok())
+            .unwrap_or_else(|| {
+                panic!("{name} not found as an f32 literal in denoise_reproject.wgsl")
+            });
         assert_eq!(
             wgsl.to_bits(),
             value.to_bits(),

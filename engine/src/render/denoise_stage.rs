@@ -148,16 +148,23 @@ impl DenoiseStage {
                 .denoise_upscaled(traced, &guides, blend, View::of(&high), transforms)
         } else {
             // The tracer's own first hits when it recorded them (the CPU tracer), else a pass.
+            // Recorded guides sit where the samples were: at the frame's offset in each pixel.
             let recorded = tracer
                 .take_guides()
                 .filter(|g| g.width == uniforms.width && g.height == uniforms.height);
-            let guides = recorded.unwrap_or_else(|| {
-                puffin::profile_scope!("guides");
-                trace_guides(scene, uniforms)
-            });
+            let (guides, view) = match recorded {
+                Some(g) => {
+                    let at = unpack(uniforms.pixel_jitter).unwrap_or((0.5, 0.5));
+                    (g, View::of(uniforms).with_jitter(at))
+                }
+                None => {
+                    puffin::profile_scope!("guides");
+                    (trace_guides(scene, uniforms), View::of(uniforms))
+                }
+            };
             puffin::profile_scope!("svgf");
             self.svgf
-                .denoise_moving(&frame.mean, &guides, blend, View::of(uniforms), transforms)
+                .denoise_moving(&frame.mean, &guides, blend, view, transforms)
         }
         .map_err(|e| RenderError::Device(format!("denoiser: {e}")))?;
         self.film = film;

@@ -71,15 +71,16 @@ fn trace(
     if upscale > 1 {
         uniforms.pixel_jitter = jitter::pack(jitter::frame_jitter(commit.frame));
     }
-    // Opt-in: the CPU tracer hands the denoiser the guides of its own first hits (not when
-    // upscaling: those guides are at the upscaled size), its samples through the pixel
-    // centres: each sample is then demodulated by the albedo of the very surface it saw, and a
-    // still view's guides stay the same from frame to frame (`docs/ACCURACY.md`, "Guides from
-    // the first hits"). A tracer that cannot record them gets a guide pass (`denoise_stage`).
+    // The CPU tracer hands the denoiser the guides of its own first hits (not when upscaling:
+    // those guides are at the upscaled size), every sample of the frame at one offset in its
+    // pixel (the frame's jitter, which the reprojection knows): each sample is then
+    // demodulated by the albedo of the very surface it saw, and over the jitter's frames a
+    // pixel's history still covers its whole area (`docs/ACCURACY.md`, "Guides from the first
+    // hits"). A tracer that cannot record them gets a guide pass (`denoise_stage`).
     let record = denoiser.is_some() && upscale <= 1 && config.first_hit_guides;
     tracer.record_guides(record);
     if record {
-        uniforms.pixel_jitter = jitter::pack((0.5, 0.5));
+        uniforms.pixel_jitter = jitter::pack(jitter::frame_jitter(commit.frame));
     }
     let started = Instant::now();
     let stats = {

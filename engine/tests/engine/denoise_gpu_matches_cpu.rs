@@ -254,6 +254,7 @@ fn gpu_and_cpu_denoisers_agree_while_an_object_moves() -> anyhow::Result<()> {
             up: Vec3::Y * (H as f32 / W as f32),
             width: W,
             height: H,
+            jitter: (0.5, 0.5),
         };
         let shift = 0.23 * k as f32;
         let guides = wall(&view, -1.0 + shift, 1.0 + shift);

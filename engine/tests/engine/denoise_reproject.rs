@@ -126,6 +126,7 @@ fn a_moving_board_carries_its_history_and_what_it_covers_or_uncovers_restarts() 
         up: Vec3::Y * 0.75,
         width: 64,
         height: 48,
+        jitter: (0.5, 0.5),
     };
     // A pixel is 2·5/64 = 0.156 m wide on the wall; the board moves 0.5 m (3.2 pixels).
     let shift = 0.5;
@@ -149,7 +150,10 @@ fn a_moving_board_carries_its_history_and_what_it_covers_or_uncovers_restarts() 
         &view,
         &[board(shift), Affine3A::IDENTITY],
     );
-    let margin = 0.2; // more than a pixel on the wall
+    // More than two pixels on the wall (0.156 m each): a pixel whose place is within one pixel
+    // of the surface it now sees keeps the taps' history as an edge (`reproject`'s edge rule),
+    // and its taps reach one pixel further.
+    let margin = 0.3;
     let (mut checked_kept, mut checked_reset) = (0, 0);
     for i in 0..guides.len() {
         let h = moved.illumination[i];
@@ -175,7 +179,7 @@ fn a_moving_board_carries_its_history_and_what_it_covers_or_uncovers_restarts() 
         }
     }
     assert!(
-        checked_kept > 1000 && checked_reset > 60,
+        checked_kept > 1000 && checked_reset > 40,
         "{checked_kept} kept, {checked_reset} reset checked"
     );
     assert_eq!(stats.kept + stats.reset, guides.len());

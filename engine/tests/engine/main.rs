@@ -61,6 +61,7 @@ mod balance_schemes;
 mod balance_simulate;
 mod blas_params_scene;
 mod denoise_gpu_matches_cpu;
+mod denoise_jitter;
 mod denoise_kernels;
 mod denoise_quality;
 mod denoise_reproject;

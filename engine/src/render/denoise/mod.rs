@@ -16,15 +16,17 @@ mod svgf;
 mod temporal;
 mod upscale;
 mod variance;
+mod view;
 pub mod weights;
 
 pub use atrous::{Pass, atrous_pixel};
 pub use guides::{Guides, NO_INSTANCE};
 pub use reproject::{
-    DEPTH_TOLERANCE, NORMAL_COS, PrevFrame, ReprojectStats, SNAP_PIXELS, View, motions, reproject,
+    NORMAL_COS, PLANE_TOLERANCE, PrevFrame, ReprojectStats, SNAP_PIXELS, motions, reproject,
     world_from_object,
 };
 pub use svgf::{DenoiseError, Svgf, SvgfParams};
-pub use temporal::{History, Reprojection, temporal_pixel};
+pub use temporal::{History, Reprojection, accumulate_albedo, temporal_pixel};
 pub use upscale::{Traced, filled, splat};
 pub use variance::variance_pixel;
+pub use view::View;

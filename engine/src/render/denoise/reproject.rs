@@ -2,19 +2,25 @@
 //! this frame was in the previous one, and whether the history found there is the same
 //! surface.
 //!
-//! Owns: [`View`] (a frame's camera as the guide pass uses it: pixel centres, pinhole),
-//! [`PrevFrame`] (what reprojection keeps of the previous frame: its view, guides and the
-//! instances' transforms) and [`reproject`]. A pixel's world position is its guide depth along
-//! its centre ray; a point on an instance moves with the instance (previous world-from-object
-//! times this frame's object-from-world), then projects into the previous view. The history
-//! is gathered bilinearly from the 2×2 previous pixels around that point, each tap kept only
-//! if it saw the same instance, a normal within [`NORMAL_COS`] and the expected depth within
-//! [`DEPTH_TOLERANCE`]; no kept tap, a specular first hit (its reflection moves differently
-//! from its surface) or a point off screen resets the pixel's history (length 0). A point that
-//! lands within [`SNAP_PIXELS`] of a pixel centre takes that pixel alone, so a still camera
-//! over a still scene reprojects every pixel onto itself exactly and converges as before.
-//! Positions are in the frame uniforms' space (camera-relative to the scene origin; a moved
-//! origin is a cut). Render thread (rows on rayon's pool).
+//! Owns: [`PrevFrame`] (what reprojection keeps of the previous frame: its view, guides and
+//! the instances' transforms) and [`reproject`]. A pixel's guide point is its guide depth
+//! along its guide's ray (through the pixel's [`View::jitter`] offset: the centre for the
+//! guide pass, the frame's jitter for guides recorded at the tracer's first hits); a point on
+//! an instance moves with the instance (previous world-from-object times this frame's
+//! object-from-world), then projects into the previous view. That motion, applied to the
+//! pixel's centre, finds where the pixel was: the history lives on pixel centres (each pixel's
+//! history is the mean of the samples inside it). The history is gathered bilinearly from the
+//! 2×2 previous pixels around that place, each tap kept only if it saw the same instance, a
+//! normal within [`NORMAL_COS`] and a plane through its own guide point within
+//! [`PLANE_TOLERANCE`] of this point. Where no tap is kept but the surface is within one pixel
+//! of the place (a pixel on an edge, whose jittered guide saw the other side last frame), the
+//! taps are taken as they are: a pixel across an edge keeps the mean of both sides instead of
+//! restarting whenever its guide changes side. Nothing found, a specular first hit (its
+//! reflection moves differently from its surface) or a point off screen resets the pixel's
+//! history (length 0). A place within [`SNAP_PIXELS`] of a pixel centre takes that pixel
+//! alone, so a still camera over a still scene reprojects every pixel onto itself exactly and
+//! converges as before. Positions are in the frame uniforms' space (camera-relative to the
+//! scene origin; a moved origin is a cut). Render thread (rows on rayon's pool).
 //! Must not: trace rays or blend (see `temporal`).
 
 use glam::{Affine3A, Mat3A, Vec3, Vec3A, Vec4};
@@ -22,68 +28,18 @@ use rayon::prelude::*;
 
 use super::guides::{Guides, NO_INSTANCE};
 use super::temporal::History;
-use crate::layout::{GpuFrameUniforms, GpuInstance};
+use super::view::View;
+use crate::layout::GpuInstance;
 
 /// Smallest cosine between a pixel's normal and a history tap's normal (about 25°).
 pub const NORMAL_COS: f32 = 0.9;
-/// Largest relative difference between the expected and the stored depth of a tap.
-pub const DEPTH_TOLERANCE: f32 = 0.05;
+/// Largest distance of a pixel's point from a history tap's surface plane (through the tap's
+/// point, along the tap's normal), relative to the point's distance from the previous camera.
+/// A plane rather than a depth: a tap a pixel away on a floor seen at a grazing angle lies
+/// much nearer or farther along its ray, but on the same plane.
+pub const PLANE_TOLERANCE: f32 = 0.02;
 /// A reprojected point this close to a pixel centre (in pixels) takes that pixel alone.
 pub const SNAP_PIXELS: f32 = 1e-2;
-
-/// A frame's pinhole camera: position and the pre-scaled basis of the frame uniforms (a pixel
-/// centre's direction is `forward + right·sx + up·sy`, `sx, sy ∈ [−1, 1]`), image size.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct View {
-    pub position: Vec3,
-    pub forward: Vec3,
-    pub right: Vec3,
-    pub up: Vec3,
-    pub width: u32,
-    pub height: u32,
-}
-
-impl View {
-    pub fn of(u: &GpuFrameUniforms) -> Self {
-        Self {
-            position: Vec3::from(u.camera_position),
-            forward: Vec3::from(u.camera_forward),
-            right: Vec3::from(u.camera_right),
-            up: Vec3::from(u.camera_up),
-            width: u.width,
-            height: u.height,
-        }
-    }
-
-    /// Unit direction through the centre of pixel (x, y).
-    pub fn centre_direction(&self, x: u32, y: u32) -> Vec3 {
-        let sx = 2.0 * (x as f32 + 0.5) / self.width as f32 - 1.0;
-        let sy = 1.0 - 2.0 * (y as f32 + 0.5) / self.height as f32;
-        (self.forward + self.right * sx + self.up * sy).normalize()
-    }
-
-    /// Continuous image coordinates (pixels, (0, 0) the top left corner, centres at +0.5) of
-    /// the direction `d` from the camera; `None` behind the camera or for a degenerate basis.
-    pub fn project_direction(&self, d: Vec3) -> Option<(f32, f32)> {
-        let (f2, r2, u2) = (
-            self.forward.length_squared(),
-            self.right.length_squared(),
-            self.up.length_squared(),
-        );
-        if f2 <= 0.0 || r2 <= 0.0 || u2 <= 0.0 {
-            return None;
-        }
-        let t = d.dot(self.forward) / f2;
-        if !(t > 0.0) {
-            return None;
-        }
-        let sx = d.dot(self.right) / r2 / t;
-        let sy = d.dot(self.up) / u2 / t;
-        let x = (sx + 1.0) * 0.5 * self.width as f32;
-        let y = (1.0 - sy) * 0.5 * self.height as f32;
-        (x.is_finite() && y.is_finite()).then_some((x, y))
-    }
-}
 
 /// An instance's world-from-object transform (its three packed rows), as [`PrevFrame`] and
 /// [`reproject`] take them.
@@ -139,7 +95,6 @@ pub fn reproject(
 ) -> (History, ReprojectStats) {
     let (w, h) = (guides.width, guides.height);
     let mut out = History::new(w, h);
-    let pw = prev.view.width as usize;
     if history.width != prev.view.width
         || history.height != prev.view.height
         || !prev.guides.is_consistent()
@@ -151,20 +106,25 @@ pub fn reproject(
     }
     // Each instance's motion, once per frame rather than once per pixel.
     let moved = motions(&prev.world_from_object, world_from_object);
-    let rows: Vec<Vec<(Vec4, Vec4)>> = (0..h)
+    let with_albedo = history.albedo.len() == history.illumination.len()
+        && history.normal_depth.len() == history.illumination.len();
+    let rows: Vec<Vec<Gathered>> = (0..h)
         .into_par_iter()
         .map(|y| {
             (0..w)
                 .map(|x| {
                     let i = y as usize * w as usize + x as usize;
-                    let dir = view.centre_direction(x, y);
-                    pixel(history, prev, guides, i, dir, view, &moved, pw)
+                    pixel(history, prev, guides, (x, y), i, view, &moved, with_albedo)
                 })
                 .collect()
         })
         .collect();
     let mut stats = ReprojectStats::default();
-    for (i, (il, m)) in rows.into_iter().flatten().enumerate() {
+    if with_albedo {
+        out.albedo = vec![Vec4::ONE; out.illumination.len()];
+        out.normal_depth = vec![Vec4::ZERO; out.illumination.len()];
+    }
+    for (i, (il, m, a, nd)) in rows.into_iter().flatten().enumerate() {
         if il.w > 0.0 {
             stats.kept += 1;
         } else {
@@ -172,31 +132,85 @@ pub fn reproject(
         }
         out.illumination[i] = il;
         out.moments[i] = m;
+        if with_albedo {
+            out.albedo[i] = a;
+            out.normal_depth[i] = nd;
+        }
     }
     (out, stats)
 }
 
-/// One pixel's gathered (illumination with length, moments); length 0 when nothing matched.
-/// `moved` is each instance's motion since the previous frame (identity where unknown).
+/// A pixel's gathered (illumination with length, moments, albedo); length 0 when nothing
+/// matched (the albedo is 1 when the history keeps none).
+type Gathered = (Vec4, Vec4, Vec4, Vec4);
+
+/// What a pixel saw, as the previous frame's taps are tested against it.
+struct Seen {
+    sky: bool,
+    instance: u32,
+    normal: Vec3,
+    /// The guide point relative to the previous camera, where it was then (metres).
+    before: Vec3,
+    /// Its distance from the previous camera (metres; 0 for the sky).
+    expected: f32,
+}
+
+/// Whether the previous frame's pixel `j` saw the same surface as `seen`.
+fn same_surface(prev: &PrevFrame, j: usize, seen: &Seen) -> bool {
+    let g = &prev.guides;
+    if seen.sky {
+        return g.instance[j] == NO_INSTANCE;
+    }
+    if g.instance[j] != seen.instance || g.specular[j] || g.normal[j].dot(seen.normal) < NORMAL_COS
+    {
+        return false;
+    }
+    let pw = prev.view.width as usize;
+    let (tx, ty) = ((j % pw) as u32, (j / pw) as u32);
+    let tap = prev.view.sample_direction(tx, ty) * g.depth[j];
+    g.normal[j].dot(seen.before - tap).abs() <= PLANE_TOLERANCE * seen.expected
+}
+
+/// Whether any previous pixel within one pixel of (cx, cy) (previous pixel indices) saw the
+/// same surface as `seen`.
+fn surface_near(prev: &PrevFrame, cx: f32, cy: f32, seen: &Seen) -> bool {
+    let (pw, ph) = (prev.view.width as i64, prev.view.height as i64);
+    let (cx, cy) = (cx as i64, cy as i64);
+    for ny in cy - 1..=cy + 1 {
+        for nx in cx - 1..=cx + 1 {
+            if (0..pw).contains(&nx)
+                && (0..ph).contains(&ny)
+                && same_surface(prev, (ny * pw + nx) as usize, seen)
+            {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// One pixel's [`Gathered`] history. `moved` is each instance's motion since the previous
+/// frame (identity where unknown); `with_albedo`: the history keeps an albedo too.
 #[allow(clippy::too_many_arguments)]
 fn pixel(
     history: &History,
     prev: &PrevFrame,
     guides: &Guides,
+    (x, y): (u32, u32),
     i: usize,
-    dir: Vec3,
     view: &View,
     moved: &[Affine3A],
-    pw: usize,
-) -> (Vec4, Vec4) {
-    let none = (Vec4::ZERO, Vec4::ZERO);
+    with_albedo: bool,
+) -> Gathered {
+    let none = (Vec4::ZERO, Vec4::ZERO, Vec4::ONE, Vec4::ZERO);
     if guides.specular.get(i).copied().unwrap_or(true) {
         return none;
     }
     let (instance, depth, normal) = (guides.instance[i], guides.depth[i], guides.normal[i]);
     let sky = instance == NO_INSTANCE || !(depth > 0.0);
+    let dir = view.sample_direction(x, y);
     // Where the point was, and the direction and distance it had from the previous camera.
-    let (prev_dir, expected) = if sky {
+    let (before, expected) = if sky {
         (dir, 0.0)
     } else {
         let world = view.position + dir * depth;
@@ -207,10 +221,19 @@ fn pixel(
         let before = moved.transform_point3(world) - prev.view.position;
         (before, before.length())
     };
-    let Some((qx, qy)) = prev.view.project_direction(prev_dir) else {
+    let Some((qx, qy)) = prev.view.project_direction(before) else {
         return none;
     };
-    let (fx, fy) = (qx - 0.5, qy - 0.5);
+    let seen = Seen {
+        sky,
+        instance,
+        normal,
+        before,
+        expected,
+    };
+    // The guide point's motion moves the pixel's centre: (x + 0.5, y + 0.5) + (q − (x, y) −
+    // jitter), whose previous pixel index coordinates are q − jitter.
+    let (fx, fy) = (qx - view.jitter.0, qy - view.jitter.1);
     let (x0, y0) = (fx.floor(), fy.floor());
     let (ax, ay) = (fx - x0, fy - y0);
     let taps: [(f32, f32, f32); 4] = if (ax.min(1.0 - ax)).max(ay.min(1.0 - ay)) < SNAP_PIXELS {
@@ -228,37 +251,56 @@ fn pixel(
             (x0 + 1.0, y0 + 1.0, ax * ay),
         ]
     };
-    let (mut il, mut mo, mut weight, mut length) = (Vec4::ZERO, Vec4::ZERO, 0.0f32, f32::MAX);
-    for (tx, ty, wt) in taps {
-        if wt <= 0.0 || tx < 0.0 || ty < 0.0 {
-            continue;
+    let inside = |tx: f32, ty: f32| {
+        tx >= 0.0 && ty >= 0.0 && tx < prev.view.width as f32 && ty < prev.view.height as f32
+    };
+    let gather = |edge: bool| {
+        let (mut il, mut mo, mut al, mut nd, mut weight, mut length) = (
+            Vec4::ZERO,
+            Vec4::ZERO,
+            Vec4::ZERO,
+            Vec4::ZERO,
+            0.0f32,
+            f32::MAX,
+        );
+        for (tx, ty, wt) in taps {
+            if wt <= 0.0 || !inside(tx, ty) {
+                continue;
+            }
+            let j = ty as usize * prev.view.width as usize + tx as usize;
+            let hist = history.illumination[j];
+            if hist.w <= 0.0 || !(edge || same_surface(prev, j, &seen)) {
+                continue;
+            }
+            il += hist * wt;
+            mo += history.moments[j] * wt;
+            if with_albedo {
+                al += history.albedo[j] * wt;
+                nd += history.normal_depth[j] * wt;
+            }
+            weight += wt;
+            length = length.min(hist.w);
         }
-        let (tx, ty) = (tx as usize, ty as usize);
-        if tx >= pw || ty >= prev.view.height as usize {
-            continue;
-        }
-        let j = ty * pw + tx;
-        let g = &prev.guides;
-        let same = if sky {
-            g.instance[j] == NO_INSTANCE
-        } else {
-            g.instance[j] == instance
-                && !g.specular[j]
-                && g.normal[j].dot(normal) >= NORMAL_COS
-                && (g.depth[j] - expected).abs() <= DEPTH_TOLERANCE * expected
+        let (albedo, nd) = match with_albedo {
+            true => (al / weight, nd / weight),
+            false => (Vec4::ONE, Vec4::ZERO),
         };
-        let hist = history.illumination[j];
-        if !same || hist.w <= 0.0 {
-            continue;
-        }
-        il += hist * wt;
-        mo += history.moments[j] * wt;
-        weight += wt;
-        length = length.min(hist.w);
+        (weight > 0.0).then(|| {
+            (
+                (il / weight).truncate().extend(length),
+                mo / weight,
+                albedo,
+                nd,
+            )
+        })
+    };
+    if let Some(found) = gather(false) {
+        return found;
     }
-    if weight <= 0.0 {
-        return none;
+    // An edge: the surface is a pixel away from where this pixel was.
+    let (cx, cy) = ((fx + 0.5).floor(), (fy + 0.5).floor());
+    if inside(cx, cy) && surface_near(prev, cx, cy, &seen) {
+        return gather(true).unwrap_or(none);
     }
-    let il = il / weight;
-    (il.truncate().extend(length), mo / weight)
+    none
 }

@@ -12,14 +12,15 @@
 //! render thread (its passes on rayon's pool).
 //! Must not: trace rays or touch the tracer's film.
 
-use glam::{Affine3A, Vec3};
+use glam::{Affine3A, Vec3, Vec4};
 
 use super::atrous::{Pass, filter};
 use super::guides::Guides;
 use super::planes::{ColourPlanes, GuidePlanes};
-use super::reproject::{PrevFrame, ReprojectStats, View, reproject};
-use super::temporal::{History, Reprojection, accumulate};
+use super::reproject::{PrevFrame, ReprojectStats, reproject};
+use super::temporal::{History, Reprojection, accumulate, accumulate_albedo};
 use super::variance::{HistoryPlanes, estimate};
+use super::view::View;
 use crate::render::film::Film;
 
 /// The filter's knobs (Schied et al.'s defaults; σ_n = 128 is fixed, see `weights`).
@@ -149,15 +150,41 @@ impl Svgf {
         self.check(frame, guides)?;
         let albedo = &guides.albedo;
         let restart = blend.is_nan() || blend >= 1.0;
+        // Guides at a jittered offset (the tracer's first hits): remodulate by the albedo's
+        // mean over the pixel's frames. Guides at the centres keep no albedo history.
+        let jittered = view.jitter != (0.5, 0.5);
+        if !jittered {
+            self.history.albedo.clear();
+            self.history.normal_depth.clear();
+        }
+        let (surface, normal_depth): (Vec<Vec4>, Vec<Vec4>) = match jittered {
+            true => (
+                (guides.albedo.iter().zip(&guides.emissive))
+                    .map(|(a, &e)| a.extend(if e { 1.0 } else { 0.0 }))
+                    .collect(),
+                (guides.normal.iter().zip(&guides.depth))
+                    .map(|(n, &z)| n.extend(z))
+                    .collect(),
+            ),
+            false => (Vec::new(), Vec::new()),
+        };
         let stats = match self.prev.take() {
             Some(prev) if !restart => {
                 let (moved, stats) =
                     reproject(&self.history, &prev, guides, &view, &world_from_object);
                 self.history = moved;
+                if jittered {
+                    let moved = Reprojection::Moved;
+                    accumulate_albedo(&mut self.history, &surface, &normal_depth, blend, moved);
+                }
                 accumulate(&mut self.history, frame, albedo, blend, Reprojection::Moved);
                 Some(stats)
             }
             _ => {
+                if jittered {
+                    let same = Reprojection::Identity;
+                    accumulate_albedo(&mut self.history, &surface, &normal_depth, blend, same);
+                }
                 accumulate(
                     &mut self.history,
                     frame,
@@ -173,6 +200,33 @@ impl Svgf {
             guides: guides.clone(),
             world_from_object,
         });
+        if jittered
+            && self.history.albedo.len() == guides.albedo.len()
+            && self.history.normal_depth.len() == guides.depth.len()
+        {
+            // The filter sees the pixels' means over their frames: albedo, normal and depth, and
+            // emissive where most of the frames' guides were.
+            let mut mean = guides.clone();
+            for ((a, e), s) in mean
+                .albedo
+                .iter_mut()
+                .zip(mean.emissive.iter_mut())
+                .zip(&self.history.albedo)
+            {
+                *a = s.truncate();
+                *e = s.w >= 0.5;
+            }
+            for ((n, z), nd) in mean
+                .normal
+                .iter_mut()
+                .zip(mean.depth.iter_mut())
+                .zip(&self.history.normal_depth)
+            {
+                *n = nd.truncate().normalize_or_zero();
+                *z = nd.w;
+            }
+            return Ok((self.filter_history(&mean), stats));
+        }
         Ok((self.filter_history(guides), stats))
     }
 

@@ -29,13 +29,20 @@ pub enum Reprojection {
 }
 
 /// The denoiser's memory between frames: per pixel (illumination rgb, history length in
-/// frames) and (luminance mean, mean of squared luminance, 0, 0).
+/// frames) and (luminance mean, mean of squared luminance, 0, 0); with jittered guides also
+/// the albedo blended over the same frames ([`accumulate_albedo`]; empty otherwise).
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct History {
     pub width: u32,
     pub height: u32,
     pub illumination: Vec<Vec4>,
     pub moments: Vec<Vec4>,
+    /// The demodulation albedo blended with each pixel's frames (linear rgb) and the share of
+    /// them whose guide was emissive (a), or empty.
+    pub albedo: Vec<Vec4>,
+    /// The guides' normal (xyz, not renormalised) and depth (w, metres) blended the same way,
+    /// or empty (with `albedo`).
+    pub normal_depth: Vec<Vec4>,
 }
 
 impl History {
@@ -47,6 +54,8 @@ impl History {
             height,
             illumination: vec![Vec4::ZERO; n],
             moments: vec![Vec4::ZERO; n],
+            albedo: Vec::new(),
+            normal_depth: Vec::new(),
         }
     }
 }
@@ -77,6 +86,56 @@ pub fn temporal_pixel(history: Vec4, moments: Vec4, c: Vec3, demod: Vec3, blend:
     let cap = (1.0 / blend + 0.5).floor().max(1.0);
     let length = (history.w + 1.0).min(cap);
     [mixed.extend(length), Vec4::new(m1, m2, 0.0, 0.0)]
+}
+
+/// Blends this frame's `albedo` into the history's albedo with the weight [`accumulate`] is
+/// about to give the frame's illumination (call it first: the weight depends on the length
+/// before the frame), starting afresh where the history is empty or restarts. With guides
+/// taken at a jittered offset in each pixel, each frame's albedo is one point of the pixel's
+/// texture; the remodulation takes this mean instead, as the illumination's history is a mean
+/// over the pixel, so a still view's textures do not shimmer with the jitter.
+/// `albedo` holds this frame's (albedo rgb, 1 where the guide is emissive else 0). The normal
+/// and depth of the guides are blended the same way (`normal_depth`, this frame's
+/// `normal_depth` as (normal, depth)), so that the filter's edge-stopping weights of a still
+/// view settle instead of following each frame's offset.
+pub fn accumulate_albedo(
+    history: &mut History,
+    albedo: &[Vec4],
+    normal_depth: &[Vec4],
+    blend: f32,
+    reprojection: Reprojection,
+) {
+    let restart = blend.is_nan() || blend >= 1.0;
+    if history.albedo.len() != history.illumination.len()
+        || history.normal_depth.len() != history.illumination.len()
+    {
+        history.albedo = albedo.to_vec();
+        history.normal_depth = normal_depth.to_vec();
+        return;
+    }
+    history
+        .albedo
+        .par_iter_mut()
+        .zip(history.normal_depth.par_iter_mut())
+        .zip(history.illumination.par_iter())
+        .zip(albedo.par_iter().zip(normal_depth.par_iter()))
+        .for_each(|(((old, old_nd), h), (a, nd))| {
+            let blend = match reprojection {
+                Reprojection::Identity => blend,
+                Reprojection::Moved => blend.max(1.0 / (h.w.max(0.0) + 1.0)),
+            };
+            let fresh = restart
+                || h.w <= 0.0
+                || !old.is_finite()
+                || !old_nd.is_finite()
+                || (old_nd.w > 0.0) != (nd.w > 0.0);
+            if fresh {
+                (*old, *old_nd) = (*a, *nd);
+            } else {
+                *old += (*a - *old) * blend;
+                *old_nd += (*nd - *old_nd) * blend;
+            }
+        });
 }
 
 /// Blends `frame` (mean radiance per pixel, rows top to bottom) into `history` with weight
@@ -120,6 +179,41 @@ mod tests {
         assert_eq!(h.w, 4.0);
         let mean_sq = samples.iter().map(|s| s * s).sum::<f32>() / 4.0;
         assert!((m.y - mean_sq).abs() < 1e-5);
+    }
+
+    #[test]
+    fn the_albedo_history_is_the_exact_mean_of_its_frames_and_restarts_with_them() {
+        let mut h = History::new(1, 1);
+        let albedos = [0.2f32, 0.8, 0.5, 0.1];
+        for (k, &a) in albedos.iter().enumerate() {
+            let blend = 1.0 / (k + 1) as f32;
+            let surface = [Vec4::new(a, a, a, (k % 2) as f32)];
+            let nd = [Vec4::new(0.0, 1.0, 0.0, 2.0 + k as f32)];
+            accumulate_albedo(&mut h, &surface, &nd, blend, Reprojection::Identity);
+            let frame = [Vec3::ONE];
+            accumulate(
+                &mut h,
+                &frame,
+                &[Vec3::splat(a)],
+                blend,
+                Reprojection::Identity,
+            );
+        }
+        assert!((h.albedo[0].x - 0.4).abs() < 1e-6, "{}", h.albedo[0]);
+        assert!(
+            (h.albedo[0].w - 0.5).abs() < 1e-6,
+            "emissive share {}",
+            h.albedo[0].w
+        );
+        assert!(
+            (h.normal_depth[0].w - 3.5).abs() < 1e-5,
+            "{}",
+            h.normal_depth[0]
+        );
+        let fresh = [Vec4::new(0.9, 0.9, 0.9, 0.0)];
+        let nd = [Vec4::new(0.0, 1.0, 0.0, 7.0)];
+        accumulate_albedo(&mut h, &fresh, &nd, 1.0, Reprojection::Identity);
+        assert_eq!(h.albedo[0], fresh[0], "a restart takes the frame's own");
     }
 
     #[test]

@@ -21,9 +21,10 @@ use glam::{Affine3A, Vec3, Vec4};
 use rayon::prelude::*;
 
 use super::guides::Guides;
-use super::reproject::{PrevFrame, ReprojectStats, View, reproject};
+use super::reproject::{PrevFrame, ReprojectStats, reproject};
 use super::svgf::{DenoiseError, Svgf};
 use super::temporal::{History, temporal_pixel};
+use super::view::View;
 use super::weights::{demodulator, finite3, luminance};
 use crate::render::film::Film;
 

@@ -17,6 +17,7 @@ fn view(width: u32, height: u32) -> View {
         up: Vec3::Y * (height as f32 / width as f32),
         width,
         height,
+        jitter: (0.5, 0.5),
     }
 }
 

@@ -175,14 +175,17 @@ pub(super) fn reproject_uniforms(
         camera_forward: view.forward.into(),
         instances,
         camera_right: view.right.into(),
+        jitter_x: view.jitter.0,
         camera_up: view.up.into(),
+        jitter_y: view.jitter.1,
         prev_position: p.position.into(),
         prev_width: p.width,
         prev_forward: p.forward.into(),
         prev_height: p.height,
         prev_right: p.right.into(),
+        prev_jitter_x: p.jitter.0,
         prev_up: p.up.into(),
-        ..Default::default()
+        prev_jitter_y: p.jitter.1,
     }
 }
 
