@@ -6,9 +6,7 @@
 // that motion applied to the pixel's centre finds where the pixel was (the history lives on
 // pixel centres). The history is gathered bilinearly from the 2×2 previous pixels around that
 // place, each tap kept only if it saw the same instance, a normal within NORMAL_COS and a plane
-// through its own guide point within PLANE_TOLERANCE of this point; where no tap is kept but
-// the surface is within one pixel of the place (an edge), the taps are taken as they are; a
-// place within SNAP_PIXELS of a pixel centre takes that pixel alone. Nothing found, a specular
+// through its own guide point within PLANE_TOLERANCE of this point; a place within SNAP_PIXELS of a pixel centre takes that pixel alone. Nothing found, a specular
 // pixel or a point off screen: length 0. Formulas and their order match the Rust twin (glam's
 // Vec3 dot, normalize and Affine3A::transform_point3), so the two differ only by f32 rounding.
 // Entry point denoise_reproject.
@@ -118,26 +116,13 @@ fn same_surface(j: u32, seen: Seen) -> bool {
     return abs(dot3(n, seen.before - tap)) <= PLANE_TOLERANCE * seen.expected;
 }
 
-// Whether a previous pixel within one pixel of (cx, cy) saw the same surface (surface_near).
-fn surface_near(cx: i32, cy: i32, seen: Seen) -> bool {
-    for (var ny = cy - 1; ny <= cy + 1; ny++) {
-        for (var nx = cx - 1; nx <= cx + 1; nx++) {
-            if nx >= 0 && ny >= 0 && nx < i32(ru.prev_width) && ny < i32(ru.prev_height)
-                && same_surface(u32(ny) * ru.prev_width + u32(nx), seen) {
-                return true;
-            }
-        }
-    }
-    return false;
-}
-
 var<private> tap_x: array<f32, 4>;
 var<private> tap_y: array<f32, 4>;
 var<private> tap_w: array<f32, 4>;
 
-// The taps' weighted history (reproject.rs's gather): every tap with history when `edge`,
-// else those that saw the same surface. Writes pixel i; false when no tap was taken.
-fn gather(i: u32, n: u32, seen: Seen, edge: bool) -> bool {
+// The taps' weighted history (reproject.rs's gather): the taps with history that saw the
+// same surface. Writes pixel i; false when no tap was taken.
+fn gather(i: u32, n: u32, seen: Seen) -> bool {
     var il = vec4<f32>(0.0);
     var mo = vec4<f32>(0.0);
     var weight = 0.0;
@@ -150,7 +135,7 @@ fn gather(i: u32, n: u32, seen: Seen, edge: bool) -> bool {
         }
         let j = u32(tap_y[k]) * ru.prev_width + u32(tap_x[k]);
         let hist = prev_history[j];
-        if hist.w <= 0.0 || !(edge || same_surface(j, seen)) {
+        if hist.w <= 0.0 || !same_surface(j, seen) {
             continue;
         }
         il = il + hist * wt;
@@ -212,15 +197,7 @@ fn denoise_reproject(@builtin(global_invocation_id) id: vec3<u32>) {
         tap_y = array<f32, 4>(round(fy), 0.0, 0.0, 0.0);
         tap_w = array<f32, 4>(1.0, 0.0, 0.0, 0.0);
     }
-    if gather(i, n, seen, false) {
-        return;
+    if !gather(i, n, seen) {
+        reset_pixel(i);
     }
-    // An edge: the surface is a pixel away from where this pixel was.
-    let cx = floor(fx + 0.5);
-    let cy = floor(fy + 0.5);
-    if cx >= 0.0 && cy >= 0.0 && cx < f32(ru.prev_width) && cy < f32(ru.prev_height)
-        && surface_near(i32(cx), i32(cy), seen) && gather(i, n, seen, true) {
-        return;
-    }
-    reset_pixel(i);
 }

@@ -243,3 +243,28 @@ pub fn shadow_edges(origin: Vec3, dir: Vec3, sun: Vec3, length: f32) -> Vec<f32>
     edges.sort_by(f32::total_cmp);
     edges
 }
+
+/// The pieces of a march over [0, `length`] km in `steps` quadratically spaced steps (short near
+/// the origin, where the air is dense), each step cut where it crosses one of `edges` (km along
+/// the ray, e.g. [`shadow_edges`]) so that every piece is lit or dark throughout: (the piece's
+/// middle, its length), km, in order.
+pub fn march_pieces(length: f32, steps: usize, edges: &[f32]) -> impl Iterator<Item = (f32, f32)> {
+    let (mut k, mut t_prev) = (0usize, 0.0f32);
+    std::iter::from_fn(move || {
+        while k < steps {
+            let t_end = length * ((k + 1) as f32 / steps as f32).powi(2);
+            if t_prev < t_end {
+                let t_next = edges
+                    .iter()
+                    .copied()
+                    .find(|&e| e > t_prev && e < t_end)
+                    .unwrap_or(t_end);
+                let piece = (0.5 * (t_prev + t_next), t_next - t_prev);
+                t_prev = t_next;
+                return Some(piece);
+            }
+            k += 1;
+        }
+        None
+    })
+}

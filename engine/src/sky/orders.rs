@@ -27,7 +27,8 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::atmosphere::{
-    Atmosphere, GROUND_RADIUS_KM, Medium, TOP_RADIUS_KM, ray_sphere, rayleigh_phase, shadow_edges,
+    Atmosphere, GROUND_RADIUS_KM, Medium, TOP_RADIUS_KM, march_pieces, ray_sphere, rayleigh_phase,
+    shadow_edges,
 };
 use super::transmittance::TransmittanceLut;
 
@@ -427,31 +428,20 @@ fn march(cx: &Context, source: &Source, r: f32, sun_elevation: f32, dir: Vec3) -
         Source::Sun => (SUN_STEPS, shadow_edges(origin, dir, sun, length)),
         Source::Field(_) => (STEPS, Vec::new()),
     };
-    let mut t_prev = 0.0;
-    for s in 0..steps {
-        let t_end = length * ((s + 1) as f32 / steps as f32).powi(2);
-        while t_prev < t_end {
-            let t_next = edges
-                .iter()
-                .copied()
-                .find(|&e| e > t_prev && e < t_end)
-                .unwrap_or(t_end);
-            let dt = t_next - t_prev;
-            let p = origin + dir * (0.5 * (t_prev + t_next));
-            t_prev = t_next;
-            let rp = p.length();
-            let (mu_s, mu) = (p.dot(sun) / rp, p.dot(dir) / rp);
-            let m = a.medium(rp - GROUND_RADIUS_KM);
-            let light = match source {
-                Source::Sun => {
-                    cx.transmittance.lookup(rp, mu_s) * (m.rayleigh * phase_r + m.mie * phase_m)
-                }
-                Source::Field(f) => f.source(rp, mu_s, mu, nu, &m),
-            };
-            let step = (-m.extinction * dt).exp();
-            radiance += throughput * (light - light * step) / m.extinction.max(Vec3::splat(1e-9));
-            throughput *= step;
-        }
+    for (t, dt) in march_pieces(length, steps, &edges) {
+        let p = origin + dir * t;
+        let rp = p.length();
+        let (mu_s, mu) = (p.dot(sun) / rp, p.dot(dir) / rp);
+        let m = a.medium(rp - GROUND_RADIUS_KM);
+        let light = match source {
+            Source::Sun => {
+                cx.transmittance.lookup(rp, mu_s) * (m.rayleigh * phase_r + m.mie * phase_m)
+            }
+            Source::Field(f) => f.source(rp, mu_s, mu, nu, &m),
+        };
+        let step = (-m.extinction * dt).exp();
+        radiance += throughput * (light - light * step) / m.extinction.max(Vec3::splat(1e-9));
+        throughput *= step;
     }
     if let Some(t) = ground {
         let normal = (origin + dir * t).normalize();

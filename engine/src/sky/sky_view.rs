@@ -14,8 +14,8 @@ use glam::Vec3;
 use rayon::prelude::*;
 
 use super::atmosphere::{
-    Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, ray_sphere,
-    rayleigh_phase, shadow_edges,
+    Atmosphere, GROUND_RADIUS_KM, SOLAR_IRRADIANCE, TOP_RADIUS_KM, VIEW_ALTITUDE_KM, march_pieces,
+    ray_sphere, rayleigh_phase, shadow_edges,
 };
 use super::orders::ScatteringOrders;
 use super::transmittance::TransmittanceLut;
@@ -79,30 +79,19 @@ fn march(
     // Quadratic spacing: short steps near the viewer where the air is dense; a step that the
     // planet shadow's edge crosses is cut there, so each piece is lit or dark throughout.
     let edges = shadow_edges(origin, dir, sun, length);
-    let mut t_prev = 0.0;
-    for k in 0..STEPS {
-        let t_end = length * ((k + 1) as f32 / STEPS as f32).powi(2);
-        while t_prev < t_end {
-            let t_next = edges
-                .iter()
-                .copied()
-                .find(|&e| e > t_prev && e < t_end)
-                .unwrap_or(t_end);
-            let dt = t_next - t_prev;
-            let p = origin + dir * (0.5 * (t_prev + t_next));
-            t_prev = t_next;
-            let rp = p.length();
-            let mu_s = p.dot(sun) / rp;
-            let m = atmosphere.medium(rp - GROUND_RADIUS_KM);
-            let sun_t = transmittance.lookup(rp, mu_s);
-            let mut source = sun_t * (m.rayleigh * phase_r + m.mie * phase_m);
-            if let Some(orders) = multiple {
-                source += orders.source(rp, mu_s, p.dot(dir) / rp, cos_theta, &m);
-            }
-            let step = (-m.extinction * dt).exp();
-            radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
-            throughput *= step;
+    for (t, dt) in march_pieces(length, STEPS, &edges) {
+        let p = origin + dir * t;
+        let rp = p.length();
+        let mu_s = p.dot(sun) / rp;
+        let m = atmosphere.medium(rp - GROUND_RADIUS_KM);
+        let sun_t = transmittance.lookup(rp, mu_s);
+        let mut source = sun_t * (m.rayleigh * phase_r + m.mie * phase_m);
+        if let Some(orders) = multiple {
+            source += orders.source(rp, mu_s, p.dot(dir) / rp, cos_theta, &m);
         }
+        let step = (-m.extinction * dt).exp();
+        radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
+        throughput *= step;
     }
     if let Some(t) = ground {
         let p = origin + dir * t;

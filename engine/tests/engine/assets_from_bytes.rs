@@ -9,13 +9,7 @@ use candela::sim::animation::{load_animation_bytes, load_animation_file};
 
 type TestResult = Result<(), Box<dyn std::error::Error>>;
 
-fn external(relative: &str) -> PathBuf {
-    Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/external"
-    ))
-    .join(relative)
-}
+use super::common::external;
 
 /// Every file below `folder`, keyed by its path relative to `folder`.
 fn folder_files(folder: &Path) -> Result<MemoryFiles, std::io::Error> {

@@ -9,13 +9,7 @@ use glam::{Vec2, Vec3};
 
 type TestResult = Result<(), Box<dyn std::error::Error>>;
 
-fn external(relative: &str) -> PathBuf {
-    Path::new(concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../../shared/external"
-    ))
-    .join(relative)
-}
+use super::common::external;
 
 /// A fresh temporary folder for one test.
 fn temp_dir(name: &str) -> Result<PathBuf, std::io::Error> {

@@ -150,10 +150,7 @@ fn a_moving_board_carries_its_history_and_what_it_covers_or_uncovers_restarts() 
         &view,
         &[board(shift), Affine3A::IDENTITY],
     );
-    // More than two pixels on the wall (0.156 m each): a pixel whose place is within one pixel
-    // of the surface it now sees keeps the taps' history as an edge (`reproject`'s edge rule),
-    // and its taps reach one pixel further.
-    let margin = 0.3;
+    let margin = 0.2; // more than a pixel on the wall
     let (mut checked_kept, mut checked_reset) = (0, 0);
     for i in 0..guides.len() {
         let h = moved.illumination[i];
@@ -179,7 +176,7 @@ fn a_moving_board_carries_its_history_and_what_it_covers_or_uncovers_restarts() 
         }
     }
     assert!(
-        checked_kept > 1000 && checked_reset > 40,
+        checked_kept > 1000 && checked_reset > 60,
         "{checked_kept} kept, {checked_reset} reset checked"
     );
     assert_eq!(stats.kept + stats.reset, guides.len());

@@ -12,10 +12,10 @@
 //! history is the mean of the samples inside it). The history is gathered bilinearly from the
 //! 2×2 previous pixels around that place, each tap kept only if it saw the same instance, a
 //! normal within [`NORMAL_COS`] and a plane through its own guide point within
-//! [`PLANE_TOLERANCE`] of this point. Where no tap is kept but the surface is within one pixel
-//! of the place (a pixel on an edge, whose jittered guide saw the other side last frame), the
-//! taps are taken as they are: a pixel across an edge keeps the mean of both sides instead of
-//! restarting whenever its guide changes side. Nothing found, a specular first hit (its
+//! [`PLANE_TOLERANCE`] of this point. (Taking the taps of a pixel whose surface lay within one
+//! pixel, for edges whose jittered guide changed side, was tried: it left a trail behind a
+//! moving object, `upscale_tests::a_moving_object_leaves_no_trail`.) Nothing found, a specular
+//! first hit (its
 //! reflection moves differently from its surface) or a point off screen resets the pixel's
 //! history (length 0). A place within [`SNAP_PIXELS`] of a pixel centre takes that pixel
 //! alone, so a still camera over a still scene reprojects every pixel onto itself exactly and
@@ -171,24 +171,6 @@ fn same_surface(prev: &PrevFrame, j: usize, seen: &Seen) -> bool {
     g.normal[j].dot(seen.before - tap).abs() <= PLANE_TOLERANCE * seen.expected
 }
 
-/// Whether any previous pixel within one pixel of (cx, cy) (previous pixel indices) saw the
-/// same surface as `seen`.
-fn surface_near(prev: &PrevFrame, cx: f32, cy: f32, seen: &Seen) -> bool {
-    let (pw, ph) = (prev.view.width as i64, prev.view.height as i64);
-    let (cx, cy) = (cx as i64, cy as i64);
-    for ny in cy - 1..=cy + 1 {
-        for nx in cx - 1..=cx + 1 {
-            if (0..pw).contains(&nx)
-                && (0..ph).contains(&ny)
-                && same_surface(prev, (ny * pw + nx) as usize, seen)
-            {
-                return true;
-            }
-        }
-    }
-    false
-}
-
 /// One pixel's [`Gathered`] history. `moved` is each instance's motion since the previous
 /// frame (identity where unknown); `with_albedo`: the history keeps an albedo too.
 #[allow(clippy::too_many_arguments)]
@@ -254,7 +236,7 @@ fn pixel(
     let inside = |tx: f32, ty: f32| {
         tx >= 0.0 && ty >= 0.0 && tx < prev.view.width as f32 && ty < prev.view.height as f32
     };
-    let gather = |edge: bool| {
+    let gather = || {
         let (mut il, mut mo, mut al, mut nd, mut weight, mut length) = (
             Vec4::ZERO,
             Vec4::ZERO,
@@ -269,7 +251,7 @@ fn pixel(
             }
             let j = ty as usize * prev.view.width as usize + tx as usize;
             let hist = history.illumination[j];
-            if hist.w <= 0.0 || !(edge || same_surface(prev, j, &seen)) {
+            if hist.w <= 0.0 || !same_surface(prev, j, &seen) {
                 continue;
             }
             il += hist * wt;
@@ -294,13 +276,5 @@ fn pixel(
             )
         })
     };
-    if let Some(found) = gather(false) {
-        return found;
-    }
-    // An edge: the surface is a pixel away from where this pixel was.
-    let (cx, cy) = ((fx + 0.5).floor(), (fy + 0.5).floor());
-    if inside(cx, cy) && surface_near(prev, cx, cy, &seen) {
-        return gather(true).unwrap_or(none);
-    }
-    none
+    gather().unwrap_or(none)
 }

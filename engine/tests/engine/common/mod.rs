@@ -1,6 +1,6 @@
 //! Shared helpers of the acceleration / traversal tests: a small deterministic RNG, procedural
 //! meshes, random rays, scene assembly and the agreement check (tree kernels vs brute force);
-//! the file walk of the robustness tests; the mean and its standard error of a set of estimates.
+//! the file walk of the robustness tests; the third-party data's folder; the mean and its standard error of a set of estimates.
 #![allow(dead_code)]
 
 use candela::accel::{Aabb, Blas, build_blas, build_tlas};
@@ -10,6 +10,15 @@ use candela::trace::{Hit, Kernel, Ray, TraceScene, closest_blas_with, occluded_b
 use std::path::{Path, PathBuf};
 
 use glam::{Mat4, Quat, Vec3};
+
+/// `relative` inside the third-party test data, `../shared/external` (read in place).
+pub fn external(relative: &str) -> PathBuf {
+    Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../shared/external"
+    ))
+    .join(relative)
+}
 
 /// Mean and variance of the mean of `values` (sample variance / n).
 pub fn mean_and_error(values: &[f64]) -> (f64, f64) {
