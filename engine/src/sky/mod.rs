@@ -6,7 +6,7 @@
 //! ch. 25), [`moon_position`] (Schlyter's series, topocentric, with the phase), and the mapping
 //! from the local horizon to engine space (north = −Z, east = +X, up = +Y, azimuth from north
 //! towards east; [`Horizontal::direction`]), and the physical sky: the Earth preset's media
-//! (`atmosphere`), the transmittance table, the scattering orders' table (multiple scattering, `orders`), the sky-view table and
+//! (`atmosphere`), the transmittance table, the scattering orders' table (multiple scattering, `orders`, its grid `orders_grid`), the sky-view table and
 //! its lookup (`sky_view`), and [`PhysicalSky`] / [`SkyTables`] that a level's sky turns into;
 //! turning the time of day ([`SkyTime::advanced`], [`SkyNow`], `day`), the tables kept while
 //! the sun moves ([`SkyBaker`]), the exposure the sky calls for (`exposure`) and the night's
@@ -27,6 +27,7 @@ mod horizon;
 mod lunar;
 mod night;
 mod orders;
+mod orders_grid;
 mod physical;
 mod sky_view;
 mod solar;

@@ -30,21 +30,11 @@ use super::atmosphere::{
     Atmosphere, GROUND_RADIUS_KM, Medium, TOP_RADIUS_KM, march_pieces, ray_sphere, rayleigh_phase,
     shadow_edges,
 };
+use super::orders_grid::*;
 use super::transmittance::TransmittanceLut;
 
-use std::f32::consts::{FRAC_PI_2, PI};
+use std::f32::consts::PI;
 
-/// Altitude nodes, h = H·(k/(N−1))² (dense near the ground).
-const ALTITUDES: usize = 16;
-/// Sun elevation nodes, c uniform, elevation = sign(c)·c²·90° from −18° to 90° (dense near the
-/// horizon and in twilight).
-const SUNS: usize = 40;
-/// Direction cells in elevation (c-mapped about the local horizon, which is a cell boundary at
-/// every altitude: e = e_h + c²(90° − e_h) above it, e_h − c²(90° + e_h) below) and in azimuth
-/// from the sun (0..π; the field is symmetric about the sun's vertical plane).
-const ELEVATIONS: usize = 16;
-const AZIMUTHS: usize = 12;
-const DIRECTIONS: usize = ELEVATIONS * AZIMUTHS;
 /// Steps along each node's ray (quadratic spacing; the single-scattering order, which reads
 /// no table, takes more, cut at the planet shadow's edge).
 const STEPS: usize = 32;
@@ -55,92 +45,6 @@ const SUB: usize = 4;
 /// last), and the rest of the series is added as a geometric tail.
 pub const CONVERGED: f32 = 0.02;
 const MAX_ORDER: usize = 8;
-/// The lowest sun node's c (−18°).
-fn sun_c0() -> f32 {
-    -(18.0f32 / 90.0).sqrt()
-}
-
-fn c_to_angle(c: f32) -> f32 {
-    c.signum() * c * c * FRAC_PI_2
-}
-
-fn angle_to_c(angle: f32) -> f32 {
-    angle.signum() * (angle.abs() / FRAC_PI_2).sqrt()
-}
-
-fn radius(k: usize) -> f32 {
-    let u = k as f32 / (ALTITUDES - 1) as f32;
-    GROUND_RADIUS_KM + (TOP_RADIUS_KM - GROUND_RADIUS_KM) * u * u
-}
-
-fn sun_elevation(j: usize) -> f32 {
-    let c0 = sun_c0();
-    c_to_angle(c0 + (1.0 - c0) * j as f32 / (SUNS - 1) as f32)
-}
-
-/// The local horizon's elevation at radius `r` (radians, ≤ 0).
-fn horizon(r: f32) -> f32 {
-    -(GROUND_RADIUS_KM / r).min(1.0).acos()
-}
-
-/// Elevation (radians) at cell coordinate `c` ∈ [−1, 1] about a horizon at `e_h`.
-fn cell_elevation(c: f32, e_h: f32) -> f32 {
-    if c >= 0.0 {
-        e_h + c * c * (FRAC_PI_2 - e_h)
-    } else {
-        e_h - c * c * (FRAC_PI_2 + e_h)
-    }
-}
-
-/// The cell coordinate of elevation `e` (radians) about a horizon at `e_h`.
-fn cell_c(e: f32, e_h: f32) -> f32 {
-    if e >= e_h {
-        ((e - e_h) / (FRAC_PI_2 - e_h)).max(0.0).sqrt()
-    } else {
-        -((e_h - e) / (FRAC_PI_2 + e_h)).max(0.0).sqrt()
-    }
-}
-
-/// Centre of elevation cell `m` (radians) about a horizon at `e_h`, and the cell's bounds in
-/// sin(elevation).
-fn elevation_cell(m: usize, e_h: f32) -> (f32, f32, f32) {
-    let c = |b: f32| -1.0 + 2.0 * b / ELEVATIONS as f32;
-    (
-        cell_elevation(c(m as f32 + 0.5), e_h),
-        cell_elevation(c(m as f32), e_h).sin(),
-        cell_elevation(c(m as f32 + 1.0), e_h).sin(),
-    )
-}
-
-fn azimuth_cell(n: usize) -> f32 {
-    PI * (n as f32 + 0.5) / AZIMUTHS as f32
-}
-
-fn direction(elevation: f32, azimuth: f32) -> Vec3 {
-    Vec3::new(
-        elevation.cos() * azimuth.cos(),
-        elevation.cos() * azimuth.sin(),
-        elevation.sin(),
-    )
-}
-
-/// Linear interpolation position: (lower node, upper node, weight of the upper).
-fn position(f: f32, n: usize) -> (usize, usize, f32) {
-    let f = f.clamp(0.0, (n - 1) as f32);
-    let i = (f.floor() as usize).min(n - 2);
-    (i, i + 1, f - i as f32)
-}
-
-/// Azimuth (0..π) between a direction of zenith cosine `mu` and the sun of zenith cosine `mu_s`
-/// whose scattering-angle cosine is `nu`.
-pub fn local_azimuth(nu: f32, mu: f32, mu_s: f32) -> f32 {
-    let d = ((1.0 - mu * mu) * (1.0 - mu_s * mu_s)).max(0.0).sqrt();
-    if d < 1e-6 {
-        return 0.0;
-    }
-    ((nu - mu * mu_s) / d).clamp(-1.0, 1.0).acos()
-}
-
 /// The phase integrals of orders ≥ 2 per node and the sky's irradiance on the ground.
 pub struct ScatteringOrders {
     /// S_R, S_A per (altitude, sun, direction) node: in-scattering per unit Rayleigh and
