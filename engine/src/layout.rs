@@ -597,10 +597,13 @@ const _: () = assert!(size_of::<GpuReprojectUniforms>() == 128);
 
 /// One instance's motion since the previous frame, for the denoiser's reprojection: its
 /// previous world-from-object times this frame's object-from-world (a point on the instance
-/// now, in world space, to where it was), three rows of a 3×4 affine matrix. 48 bytes.
+/// now, in world space, to where it was), and that motion's inverse (where a point of the
+/// previous frame is now: the edge rule, `denoise::reproject_edge`), each three rows of a 3×4
+/// affine matrix. 96 bytes.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
 pub struct GpuMotion {
     pub prev_from_now: [[f32; 4]; 3],
+    pub now_from_prev: [[f32; 4]; 3],
 }
-const _: () = assert!(size_of::<GpuMotion>() == 48);
+const _: () = assert!(size_of::<GpuMotion>() == 96);

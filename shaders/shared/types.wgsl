@@ -271,4 +271,5 @@ struct GpuReprojectUniforms {
 
 struct GpuMotion {
     prev_from_now: array<vec4<f32>, 3>,
+    now_from_prev: array<vec4<f32>, 3>,
 }

@@ -211,7 +211,10 @@ fn rust_layouts() -> Vec<RustLayout> {
             prev_up,
             prev_jitter_y
         }),
-        rust_layout!(GpuMotion { prev_from_now }),
+        rust_layout!(GpuMotion {
+            prev_from_now,
+            now_from_prev
+        }),
     ]
 }
 

@@ -73,11 +73,12 @@ pub struct RenderConfig {
     /// `render.indirect_every` (`None`: the level's; 1, 2 or 4; `render/cpu/interleave.rs`).
     pub indirect_every: Option<u32>,
     /// With the denoiser on (and no temporal upscaling), take its guides from the CPU tracer's
-    /// first hits with every sample through its pixel's centre (`cpu::guides::FirstHit`)
-    /// instead of a guide pass of their own (one centre ray per pixel, samples jittered). Off
-    /// by default: faster and a lower displayed error, but thin emitters narrower than a pixel
-    /// drop out of the point-sampled picture (`docs/ACCURACY.md`, "Guides from the first
-    /// hits").
+    /// first hits at the frame's jitter (`cpu::guides::FirstHit`) instead of a guide pass of
+    /// their own (one centre ray per pixel). Windowed play and the games' benches turn it on
+    /// (`harness::windowed_render`): no guide pass, a lower displayed error, and a still view
+    /// as steady as with the pass since the reprojection keeps edge pixels' history
+    /// (`denoise::reproject_edge`; `docs/ACCURACY.md`). Off in [`RenderConfig::cpu`], which
+    /// tests and tools start from.
     pub first_hit_guides: bool,
     /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
     /// table always matches the commit) or `Background` (games in play: rebuilt on a worker

@@ -36,6 +36,8 @@ pub fn bench(world: &RuinsWorld, seconds: f64, denoise: bool) -> anyhow::Result<
                 ..ScalingTarget::of_level(level)
             }),
             sky_rebuild: candela::scene::SkyRebuild::Background,
+            // As in play (`windowed_render`): guides from the tracer's first hits.
+            first_hit_guides: true,
             ..RenderConfig::cpu(640, 360)
         };
         let replay = named(world.root.path(), name);

@@ -31,7 +31,7 @@ pub struct BenchOptions {
     /// Overrides the levels' `render.indirect_every` (`None`: the level's).
     pub indirect_every: Option<u32>,
     /// Take the denoiser's guides from the tracer's first hits, samples through the pixel
-    /// centres (`RenderConfig::first_hit_guides`), instead of a guide pass.
+    /// frame's jitter (`RenderConfig::first_hit_guides`), instead of a guide pass.
     pub first_hit_guides: bool,
 }
 

@@ -83,10 +83,11 @@ pub struct Args {
     /// levels' `render.indirect_every`.
     #[arg(long, value_parser = parse_every)]
     pub indirect_every: Option<u32>,
-    /// With --bench: take the denoiser's guides from the tracer's first hits, every sample
-    /// through its pixel's centre, instead of a guide pass of their own (one centre ray per
-    /// pixel, samples jittered; the default).
-    #[arg(long)]
+    /// With --bench: take the denoiser's guides from the tracer's first hits at the frame's
+    /// jitter (the default, as in play), or with `--first-hit-guides false` from a guide pass of
+    /// their own (one centre ray per pixel).
+    #[arg(long, default_value_t = true, num_args = 0..=1, default_missing_value = "true",
+          action = clap::ArgAction::Set)]
     pub first_hit_guides: bool,
     /// Headless: play each chamber this many frames with random input and check every frame
     /// (see `reflect::soak`); prints a Markdown table.

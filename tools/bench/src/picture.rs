@@ -79,8 +79,8 @@ pub struct PictureArgs {
     #[arg(long, default_value_t = 1)]
     pub indirect_every: u32,
     /// Also both sizes denoised (with `--indirect-every`'s interleaving) with the guides taken
-    /// from the tracer's first hits, every sample through its pixel's centre
-    /// (`RenderConfig::first_hit_guides`), instead of the guide pass; measured last.
+    /// from the tracer's first hits at the frame's jitter (`RenderConfig::first_hit_guides`,
+    /// what the games play with since 2026-12-07), instead of the guide pass; measured last.
     #[arg(long)]
     pub first_hit_guides: bool,
     /// Print the N pixels of each compared frame that add most to its relative MSE
@@ -90,7 +90,9 @@ pub struct PictureArgs {
     /// Compare exactly these frames of each replay (overrides `--every` and `--per-chamber`).
     #[arg(long, value_delimiter = ',')]
     pub frames: Vec<u64>,
-    /// Write each compared frame and its reference as zoomed PNGs into this folder.
+    /// Write each compared frame and its reference as zoomed PNGs into this folder, and for the
+    /// stability figures each pair's first displayed frame and its change map (the absolute
+    /// sRGB change summed over the channels, ×4, white = large).
     #[arg(long)]
     pub dump_dir: Option<PathBuf>,
 }

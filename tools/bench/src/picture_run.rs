@@ -46,7 +46,7 @@ pub struct Config {
     pub upscale: u32,
     /// One pixel in this many traces indirect light (`RenderConfig::indirect_every`; 1: all).
     pub indirect_every: u32,
-    /// Denoised: guides from the tracer's first hits, samples through the pixel centres
+    /// Denoised: guides from the tracer's first hits, samples at the frame's jitter
     /// (`RenderConfig::first_hit_guides`), not a guide pass.
     pub first_hit_guides: bool,
 }

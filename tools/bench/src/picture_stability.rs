@@ -90,6 +90,10 @@ pub fn stability(
                 let (d1, r1) = pick(pair[1])?;
                 let (r0, r1) = (r0.at_width(config.width), r1.at_width(config.width));
                 shown.push(mean_change(&srgb(d0), &srgb(d1)));
+                if let Some(dir) = &args.dump_dir {
+                    let tag = format!("{name}_{}_{}", config.label(), pair[0]);
+                    dump_change(dir, &tag, d0, d1, config.width)?;
+                }
                 reference.push(mean_change(&srgb(&r0.mean()), &srgb(&r1.mean())));
                 let forward = |c: &[f32; 12]| glam::Vec3::new(c[9], c[10], c[11]).normalize();
                 let cos = forward(&r0.camera)
@@ -137,4 +141,24 @@ pub fn table(rows: &[Stability]) -> String {
         );
     }
     out
+}
+
+/// Writes the displayed frame `d0` and the map of its change to `d1` (the absolute sRGB change
+/// summed over the channels, ×4, as grey) as zoomed PNGs named after `tag`.
+fn dump_change(
+    dir: &std::path::Path,
+    tag: &str,
+    d0: &[glam::Vec3],
+    d1: &[glam::Vec3],
+    width: u32,
+) -> anyhow::Result<()> {
+    use super::picture_outliers::dump;
+    let change: Vec<glam::Vec3> = srgb(d0)
+        .iter()
+        .zip(srgb(d1))
+        .map(|(a, b)| glam::Vec3::splat((0..3).map(|c| (a[c] - b[c]).abs()).sum::<f32>() * 4.0))
+        .collect();
+    dump(dir, &format!("{tag}_change"), &change, width)?;
+    dump(dir, &format!("{tag}_shown"), d0, width)?;
+    Ok(())
 }

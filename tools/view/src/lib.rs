@@ -231,7 +231,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
         denoise: args.denoise,
         light_sampling: None,
         indirect_every: None,
-        first_hit_guides: false,
+        first_hit_guides: true,
         sky_rebuild: candela::scene::SkyRebuild::Background,
         temporal_upscale: None,
     };

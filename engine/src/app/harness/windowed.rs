@@ -61,7 +61,8 @@ pub fn play_windowed<C: HarnessGame>(
 }
 
 /// The render configuration of windowed play in a level of `environment`: the tracer `auto`
-/// picks at 640×360, 1 spp, workload scaling holding what the level declares.
+/// picks at 640×360, 1 spp, workload scaling holding what the level declares; the denoiser's
+/// guides from the CPU tracer's first hits (no guide pass).
 pub fn windowed_render(environment: &Environment, denoise: bool) -> RenderConfig {
     RenderConfig {
         tracer: TracerChoice::Auto,
@@ -70,6 +71,7 @@ pub fn windowed_render(environment: &Environment, denoise: bool) -> RenderConfig
         // A sun turned fast (an altar) must not stall the frames: the sky's table follows on a
         // worker thread.
         sky_rebuild: crate::scene::SkyRebuild::Background,
+        first_hit_guides: true,
         ..RenderConfig::cpu(640, 360)
     }
 }
@@ -112,6 +114,17 @@ mod tests {
             .scaling
             .ok_or("windowed play without workload scaling")?;
         assert_eq!(target, ScalingTarget::new(1.0 / 30.0));
+        Ok(())
+    }
+
+    /// Play takes the denoiser's guides from the CPU tracer's first hits (no guide pass;
+    /// `docs/PERFORMANCE.md`), and denoises unless told not to.
+    #[test]
+    fn play_denoises_with_the_first_hits_guides() -> Result<(), Box<dyn std::error::Error>> {
+        let level = environment("(max_bounces: 3)")?;
+        let on = windowed_render(&level, true);
+        assert!(on.denoise && on.first_hit_guides);
+        assert!(!windowed_render(&level, false).denoise);
         Ok(())
     }
 }

@@ -12,6 +12,7 @@ mod atrous;
 mod guides;
 mod planes;
 mod reproject;
+mod reproject_edge;
 mod svgf;
 mod temporal;
 mod upscale;

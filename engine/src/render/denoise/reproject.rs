@@ -12,9 +12,9 @@
 //! history is the mean of the samples inside it). The history is gathered bilinearly from the
 //! 2×2 previous pixels around that place, each tap kept only if it saw the same instance, a
 //! normal within [`NORMAL_COS`] and a plane through its own guide point within
-//! [`PLANE_TOLERANCE`] of this point. (Taking the taps of a pixel whose surface lay within one
-//! pixel, for edges whose jittered guide changed side, was tried: it left a trail behind a
-//! moving object, `upscale_tests::a_moving_object_leaves_no_trail`.) Nothing found, a specular
+//! [`PLANE_TOLERANCE`] of this point. Where no tap saw this surface, the taps whose own
+//! surface still covers part of the pixel are taken (`reproject_edge`: a pixel on an edge
+//! whose jittered guide changed side keeps the mean of both sides). Nothing found, a specular
 //! first hit (its
 //! reflection moves differently from its surface) or a point off screen resets the pixel's
 //! history (length 0). A place within [`SNAP_PIXELS`] of a pixel centre takes that pixel
@@ -27,6 +27,7 @@ use glam::{Affine3A, Mat3A, Vec3, Vec3A, Vec4};
 use rayon::prelude::*;
 
 use super::guides::{Guides, NO_INSTANCE};
+use super::reproject_edge::mixed_tap;
 use super::temporal::History;
 use super::view::View;
 use crate::layout::GpuInstance;
@@ -100,44 +101,95 @@ pub fn reproject(
         || !prev.guides.is_consistent()
         || prev.guides.width != prev.view.width
         || prev.guides.height != prev.view.height
+        || w == 0
+        || h == 0
     {
         let n = w as usize * h as usize;
         return (out, ReprojectStats { kept: 0, reset: n });
     }
-    // Each instance's motion, once per frame rather than once per pixel.
+    // Each instance's motion, once per frame rather than once per pixel, both ways.
     let moved = motions(&prev.world_from_object, world_from_object);
+    let forward: Vec<Affine3A> = moved.iter().map(|m| m.inverse()).collect();
     let with_albedo = history.albedo.len() == history.illumination.len()
         && history.normal_depth.len() == history.illumination.len();
-    let rows: Vec<Vec<Gathered>> = (0..h)
-        .into_par_iter()
-        .map(|y| {
-            (0..w)
-                .map(|x| {
-                    let i = y as usize * w as usize + x as usize;
-                    pixel(history, prev, guides, (x, y), i, view, &moved, with_albedo)
-                })
-                .collect()
-        })
-        .collect();
-    let mut stats = ReprojectStats::default();
-    if with_albedo {
-        out.albedo = vec![Vec4::ONE; out.illumination.len()];
-        out.normal_depth = vec![Vec4::ZERO; out.illumination.len()];
-    }
-    for (i, (il, m, a, nd)) in rows.into_iter().flatten().enumerate() {
-        if il.w > 0.0 {
-            stats.kept += 1;
-        } else {
-            stats.reset += 1;
+    let frame = Frame {
+        history,
+        prev,
+        guides,
+        view,
+        moved: &moved,
+        forward: &forward,
+        with_albedo,
+    };
+    let row = w as usize;
+    let n = out.illumination.len();
+    let rows = out
+        .illumination
+        .par_chunks_mut(row)
+        .zip(out.moments.par_chunks_mut(row));
+    let kept: usize = if with_albedo {
+        out.albedo = vec![Vec4::ONE; n];
+        out.normal_depth = vec![Vec4::ZERO; n];
+        let extra = out
+            .albedo
+            .par_chunks_mut(row)
+            .zip(out.normal_depth.par_chunks_mut(row));
+        rows.zip(extra)
+            .enumerate()
+            .map(|(y, ((il, mo), (al, nd)))| frame.row(y as u32, il, mo, Some((al, nd))))
+            .sum()
+    } else {
+        rows.enumerate()
+            .map(|(y, (il, mo))| frame.row(y as u32, il, mo, None))
+            .sum()
+    };
+    (
+        out,
+        ReprojectStats {
+            kept,
+            reset: n - kept,
+        },
+    )
+}
+
+/// One frame's reprojection inputs, shared by its rows.
+struct Frame<'a> {
+    history: &'a History,
+    prev: &'a PrevFrame,
+    guides: &'a Guides,
+    view: &'a View,
+    /// Each instance's motion from this frame back to the previous one, and forward.
+    moved: &'a [Affine3A],
+    forward: &'a [Affine3A],
+    /// The history keeps an albedo and normal/depth too.
+    with_albedo: bool,
+}
+
+impl Frame<'_> {
+    /// Row `y` of the reprojected history into `il`, `mo` (and the albedo and normal/depth
+    /// planes when kept); returns how many of its pixels kept a history.
+    fn row(
+        &self,
+        y: u32,
+        il: &mut [Vec4],
+        mo: &mut [Vec4],
+        mut extra: Option<(&mut [Vec4], &mut [Vec4])>,
+    ) -> usize {
+        let w = self.guides.width;
+        let mut kept = 0;
+        for x in 0..w {
+            let i = y as usize * w as usize + x as usize;
+            let (h, m, a, nd) = pixel(self, (x, y), i);
+            kept += usize::from(h.w > 0.0);
+            il[x as usize] = h;
+            mo[x as usize] = m;
+            if let Some((al, nds)) = extra.as_mut() {
+                al[x as usize] = a;
+                nds[x as usize] = nd;
+            }
         }
-        out.illumination[i] = il;
-        out.moments[i] = m;
-        if with_albedo {
-            out.albedo[i] = a;
-            out.normal_depth[i] = nd;
-        }
+        kept
     }
-    (out, stats)
 }
 
 /// A pixel's gathered (illumination with length, moments, albedo); length 0 when nothing
@@ -171,19 +223,18 @@ fn same_surface(prev: &PrevFrame, j: usize, seen: &Seen) -> bool {
     g.normal[j].dot(seen.before - tap).abs() <= PLANE_TOLERANCE * seen.expected
 }
 
-/// One pixel's [`Gathered`] history. `moved` is each instance's motion since the previous
-/// frame (identity where unknown); `with_albedo`: the history keeps an albedo too.
-#[allow(clippy::too_many_arguments)]
-fn pixel(
-    history: &History,
-    prev: &PrevFrame,
-    guides: &Guides,
-    (x, y): (u32, u32),
-    i: usize,
-    view: &View,
-    moved: &[Affine3A],
-    with_albedo: bool,
-) -> Gathered {
+/// One pixel's [`Gathered`] history: the taps that saw its surface, else the taps whose
+/// surface still covers part of it (`reproject_edge`), else none.
+fn pixel(frame: &Frame, (x, y): (u32, u32), i: usize) -> Gathered {
+    let Frame {
+        history,
+        prev,
+        guides,
+        view,
+        moved,
+        forward,
+        with_albedo,
+    } = *frame;
     let none = (Vec4::ZERO, Vec4::ZERO, Vec4::ONE, Vec4::ZERO);
     if guides.specular.get(i).copied().unwrap_or(true) {
         return none;
@@ -236,7 +287,7 @@ fn pixel(
     let inside = |tx: f32, ty: f32| {
         tx >= 0.0 && ty >= 0.0 && tx < prev.view.width as f32 && ty < prev.view.height as f32
     };
-    let gather = || {
+    let gather = |edge: bool| {
         let (mut il, mut mo, mut al, mut nd, mut weight, mut length) = (
             Vec4::ZERO,
             Vec4::ZERO,
@@ -251,7 +302,14 @@ fn pixel(
             }
             let j = ty as usize * prev.view.width as usize + tx as usize;
             let hist = history.illumination[j];
-            if hist.w <= 0.0 || !same_surface(prev, j, &seen) {
+            if hist.w <= 0.0 {
+                continue;
+            }
+            let taken = match edge {
+                false => same_surface(prev, j, &seen),
+                true => mixed_tap(prev, j, guides, view, forward, (x, y)),
+            };
+            if !taken {
                 continue;
             }
             il += hist * wt;
@@ -276,5 +334,5 @@ fn pixel(
             )
         })
     };
-    gather().unwrap_or(none)
+    gather(false).or_else(|| gather(true)).unwrap_or(none)
 }

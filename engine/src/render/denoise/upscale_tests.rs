@@ -156,7 +156,13 @@ fn a_moving_object_leaves_no_trail() {
         };
         // Moving objects: `Converge` floors the blend (an exact mean up to 5 samples).
         let blend = if k == 0 { 1.0 } else { 0.2 };
-        let transforms = vec![Affine3A::IDENTITY; 2];
+        // The object's instance carries its motion (two columns a frame, about 0.625 m at its
+        // 5 m), as every moving instance does: the reprojection's edge rule tells its old
+        // points from a still edge by it (`reproject_edge`).
+        let transforms = vec![
+            Affine3A::IDENTITY,
+            Affine3A::from_translation(Vec3::X * 0.625 * k as f32),
+        ];
         let (film, _) = svgf
             .denoise_upscaled(traced, &guides, blend, view(w, h), transforms)
             .expect("sizes fit");

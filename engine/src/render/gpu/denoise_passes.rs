@@ -189,19 +189,22 @@ pub(super) fn reproject_uniforms(
     }
 }
 
-/// Each motion as three rows of a 3×4 matrix.
+/// Each motion and its inverse (glam's, as the CPU reference takes it) as three rows of a 3×4
+/// matrix each.
 pub(super) fn motion_rows(motions: &[Affine3A]) -> Vec<GpuMotion> {
+    let rows = |m: &Affine3A| {
+        let (c, t) = (m.matrix3, m.translation);
+        [
+            [c.x_axis.x, c.y_axis.x, c.z_axis.x, t.x],
+            [c.x_axis.y, c.y_axis.y, c.z_axis.y, t.y],
+            [c.x_axis.z, c.y_axis.z, c.z_axis.z, t.z],
+        ]
+    };
     motions
         .iter()
-        .map(|m| {
-            let (c, t) = (m.matrix3, m.translation);
-            GpuMotion {
-                prev_from_now: [
-                    [c.x_axis.x, c.y_axis.x, c.z_axis.x, t.x],
-                    [c.x_axis.y, c.y_axis.y, c.z_axis.y, t.y],
-                    [c.x_axis.z, c.y_axis.z, c.z_axis.z, t.z],
-                ],
-            }
+        .map(|m| GpuMotion {
+            prev_from_now: rows(m),
+            now_from_prev: rows(&m.inverse()),
         })
         .collect()
 }
