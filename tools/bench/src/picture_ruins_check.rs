@@ -16,7 +16,7 @@ use its_about_time::replays::named;
 use its_about_time::world::RuinsWorld;
 
 use super::picture_metrics::{rel_mse, rmse, srgb_at};
-use super::picture_ruins::{RuinsPictureArgs, measure};
+use super::picture_ruins::{RuinsPictureArgs, chosen_frames, measure};
 use super::picture_ruins_run::{RuinsRun, play_ruins};
 use super::picture_tracer::References;
 
@@ -94,4 +94,32 @@ fn quick_ruins_figures_are_finite_and_the_reference_is_not_black() {
     let mean = picture.iter().map(|p| p[0] + p[1] + p[2]).sum::<f32>() / (3 * picture.len()) as f32;
     assert!(mean > 0.05 && mean < 0.95, "mean sRGB {mean} at {ev} EV");
     assert!(rmse(&srgb_at(&black, ev), &picture) > 0.05);
+}
+
+#[test]
+fn chosen_frames_are_in_the_area_spread_and_apart() {
+    let area = candela::assets::RenderArea {
+        name: "a".into(),
+        min: [0.0; 3],
+        max: [1.0; 3],
+        light_groups: Vec::new(),
+    };
+    // Inside from frame 20 to 79, outside before and after.
+    let cameras: Vec<[f32; 3]> = (0..100)
+        .map(|f| {
+            if (20..80).contains(&f) {
+                [0.5; 3]
+            } else {
+                [2.0; 3]
+            }
+        })
+        .collect();
+    // Candidates 20, 25, …, 75: three spread evenly.
+    let picked = chosen_frames(&cameras, &area, 5, 10, 3);
+    assert_eq!(picked, BTreeSet::from([30, 50, 70]));
+    // A 25-frame warm-up: a frame within 25 of the one before is dropped.
+    let picked = chosen_frames(&cameras, &area, 5, 25, 3);
+    assert_eq!(picked, BTreeSet::from([30, 70]));
+    let outside = vec![[2.0; 3]; 100];
+    assert!(chosen_frames(&outside, &area, 5, 10, 3).is_empty());
 }
