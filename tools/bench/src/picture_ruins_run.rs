@@ -79,7 +79,7 @@ pub fn play_ruins(
     };
     let mut game = world.new_game(start);
     let open = Skipping::open(ReferencingTracer::open(refs, progress), run.live.clone());
-    let mut engine = Engine::with_tracer(run.render.clone(), world.environment(&game), open)?;
+    let mut engine = Engine::with_tracer(run.render, world.environment(&game), open)?;
     game.setup(&mut engine)
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     if let Some(replay) = replay {
