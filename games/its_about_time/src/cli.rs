@@ -33,13 +33,17 @@ pub struct Args {
     /// 0 only if it reached the ending with every artifact.
     #[arg(long)]
     pub headless: bool,
-    /// No window: play each puzzle's committed replay in real time on the CPU tracer (640×360
-    /// output, workload scaling holding 30 fps) and print the frame figures as a Markdown table.
+    /// No window: play each puzzle's committed replay in real time on the CPU tracer
+    /// (`--bench-output`, workload scaling holding 30 fps) and print the frame figures as a Markdown table.
     #[arg(long)]
     pub bench: bool,
     /// With --bench: seconds of wall time per replay.
     #[arg(long, default_value_t = 12.0)]
     pub bench_seconds: f64,
+    /// With --bench: the output size in pixels, `WIDTHxHEIGHT` (workload scaling traces a
+    /// fraction of it, down to the level's `min_scale`: 160×90 of 640×360, 320×180 of 1280×720).
+    #[arg(long, default_value = "640x360", value_parser = parse_size)]
+    pub bench_output: (u32, u32),
     /// Windowed: take screenshots (title.png, then play.png) into this folder, then quit.
     #[arg(long)]
     pub screenshots: Option<PathBuf>,
@@ -65,6 +69,18 @@ pub struct Args {
     /// holding it, to this CSV file (`frame,x,y,z,areas`).
     #[arg(long)]
     pub camera_path: Option<PathBuf>,
+}
+
+/// `1280x720` → (1280, 720).
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("{text:?}: expected WIDTHxHEIGHT in pixels, e.g. 1280x720");
+    let (w, h) = text.split_once(['x', '×']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if w == 0 || h == 0 {
+        return Err(bad());
+    }
+    Ok((w, h))
 }
 
 /// The title, then play from the start with a shot `play_<frame>.png` at each of `frames`
@@ -94,7 +110,7 @@ pub fn run(args: &Args) -> anyhow::Result<String> {
         world.level.render_areas.clear();
     }
     if args.bench {
-        return crate::bench::bench(&world, args.bench_seconds, args.denoise);
+        return crate::bench::bench(&world, args.bench_seconds, args.denoise, args.bench_output);
     }
     if args.headless {
         let Some(replay) = &args.replay else {

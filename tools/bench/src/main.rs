@@ -31,6 +31,9 @@
 //!   replay through the game's frame loop at 160×90 and 320×180, denoiser off and on, against
 //!   converged renders of the same views, and its frame-to-frame stability
 //!   (`docs/charts/picture_error.png`, `docs/ACCURACY.md`).
+//! * `bench picture-ruins [--quick]` — the same for It's About Time: each puzzle's replay, frames
+//!   with the camera in its render area, the game's settings (render areas on, denoiser on) at
+//!   160×90 and 320×180 against converged renders with the full light (`docs/PERFORMANCE.md`).
 //! * `bench present [--runs N] [--threads 1,2]` — the CPU compose of the CPU tracer's film
 //!   (160×90, 320×180, 480×270) into a 1280×720 window, the F3 overlay drawn on the CPU and the
 //!   frame's copy, at 1 and 2 threads, against the code before (`docs/PERFORMANCE.md`).
@@ -67,7 +70,14 @@ mod picture_metrics;
 mod picture_outliers;
 mod picture_plot;
 mod picture_report;
+mod picture_ruins;
+#[cfg(test)]
+mod picture_ruins_check;
+mod picture_ruins_report;
+mod picture_ruins_run;
+mod picture_ruins_stability;
 mod picture_run;
+mod picture_skip;
 mod picture_stability;
 mod picture_tracer;
 mod pipeline;
@@ -122,6 +132,9 @@ enum Command {
     /// The error and stability of the picture a Reflect player sees, against converged renders
     /// of the same views.
     Picture(picture::PictureArgs),
+    /// The error of the picture an It's About Time player sees per render area, against
+    /// converged renders of the same views (render areas off, the full light).
+    PictureRuins(picture_ruins::RuinsPictureArgs),
     /// Scene memory by kind (triangles, BVH, instances, textures, lights) for Reflect and a
     /// 1.4 M-triangle ruin, beside Brigade's 737 MB.
     Memory(memory::MemoryArgs),
@@ -164,6 +177,7 @@ fn main() -> anyhow::Result<()> {
         Command::Balance(a) => balance::run(&a),
         Command::TwoLights(a) => two_lights::run(&a),
         Command::Picture(a) => picture::run(&a),
+        Command::PictureRuins(a) => picture_ruins::run(&a),
         Command::Present(a) => present::run(&a),
     }
 }

@@ -17,7 +17,15 @@ const REL_EPSILON: f64 = 0.01;
 
 /// The picture the player sees: 8-bit sRGB through the game's tonemap, as 0–1.
 pub fn srgb(image: &[Vec3]) -> Vec<[f32; 3]> {
-    let settings = TonemapSettings::default();
+    srgb_at(image, 0.0)
+}
+
+/// [`srgb`] exposed by `exposure_ev` stops (radiance × 2^ev: a game exposed for its sky).
+pub fn srgb_at(image: &[Vec3], exposure_ev: f32) -> Vec<[f32; 3]> {
+    let settings = TonemapSettings {
+        exposure_ev,
+        ..TonemapSettings::default()
+    };
     image
         .iter()
         .map(|&c| linear_to_srgb8(c, &settings).map(|v| f32::from(v) / 255.0))
@@ -64,6 +72,11 @@ pub fn mean_change(x: &[[f32; 3]], r: &[[f32; 3]]) -> f64 {
 /// relative MSE and sRGB RMSE of the mean of the halves, each estimated as a quarter of the
 /// halves' squared difference (the variance of a mean of two independent estimates).
 pub fn reference_noise(reference: &Reference) -> (f64, f64) {
+    reference_noise_at(reference, 0.0)
+}
+
+/// [`reference_noise`] with the sRGB picture exposed by `exposure_ev` stops ([`srgb_at`]).
+pub fn reference_noise_at(reference: &Reference, exposure_ev: f32) -> (f64, f64) {
     let [a, b] = &reference.halves;
     let mean = reference.mean();
     let mut rel = 0.0;
@@ -74,7 +87,7 @@ pub fn reference_noise(reference: &Reference) -> (f64, f64) {
         }
     }
     let rel = rel / (3 * a.len().max(1)) as f64;
-    let srgb_rmse = rmse(&srgb(a), &srgb(b)) / 2.0;
+    let srgb_rmse = rmse(&srgb_at(a, exposure_ev), &srgb_at(b, exposure_ev)) / 2.0;
     (rel, srgb_rmse)
 }
 
