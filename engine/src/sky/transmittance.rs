@@ -51,7 +51,10 @@ fn optical_depth(atmosphere: &Atmosphere, r: f32, mu: f32, steps: usize) -> Opti
     for i in 0..steps {
         let t = (i as f32 + 0.5) * dt;
         let ri = (r * r + t * t + 2.0 * r * mu * t).sqrt();
-        depth += atmosphere.medium_with(ri - GROUND_RADIUS_KM, aerosol).extinction * dt;
+        depth += atmosphere
+            .medium_with(ri - GROUND_RADIUS_KM, aerosol)
+            .extinction
+            * dt;
     }
     Some(depth)
 }
