@@ -12,9 +12,35 @@ fn sky_view_texel(base: u32, x: u32, y: u32) -> vec3<f32> {
     return sky_view[base + y * SKY_VIEW_WIDTH + x].xyz;
 }
 
+// Radiance at or below which a texel counts as dark (twin of `DARK`).
+const SKY_DARK: f32 = 1e-30;
+
+// Catmull–Rom spline through p0..p3 at t between p1 and p2 (twin of `catmull_rom`).
+fn sky_catmull_rom(p0: vec3<f32>, p1: vec3<f32>, p2: vec3<f32>, p3: vec3<f32>, t: f32) -> vec3<f32> {
+    let t2 = t * t;
+    let t3 = t * t * t;
+    return 0.5 * (2.0 * p1
+        + (p2 - p0) * t
+        + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t2
+        + (3.0 * p1 - p0 - 3.0 * p2 + p3) * t3);
+}
+
+// Whether row y's two texels at x0, x1 are dark, per channel.
+fn sky_dark_row(base: u32, x0: u32, x1: u32, y: u32) -> vec3<bool> {
+    return min(sky_view_texel(base, x0, y), sky_view_texel(base, x1, y)) <= vec3<f32>(SKY_DARK);
+}
+
+// The log of row y's radiance, linear in azimuth.
+fn sky_log_row(base: u32, x0: u32, x1: u32, y: u32, tx: f32) -> vec3<f32> {
+    let a = log(max(sky_view_texel(base, x0, y), vec3<f32>(SKY_DARK)));
+    let b = log(max(sky_view_texel(base, x1, y), vec3<f32>(SKY_DARK)));
+    return mix(a, b, tx);
+}
+
 // The table's radiance for a view at `elevation` radians and `azimuth` radians from the sun's
 // azimuth (any sign, any turn); the table starts at texel `base` (0: the sun's, W·H: the
-// moon's).
+// moon's). Below the horizon bilinear; above it the log of the radiance, linear in azimuth and
+// Catmull–Rom over four rows in elevation (the rules are `lookup_view`'s).
 fn sky_lookup_view(base: u32, elevation: f32, azimuth: f32) -> vec3<f32> {
     let a = abs(azimuth) % SKY_TAU;
     var phi = a;
@@ -35,7 +61,26 @@ fn sky_lookup_view(base: u32, elevation: f32, azimuth: f32) -> vec3<f32> {
     let ty = fy - f32(y0);
     let row0 = mix(sky_view_texel(base, x0, y0), sky_view_texel(base, x1, y0), tx);
     let row1 = mix(sky_view_texel(base, x0, y1), sky_view_texel(base, x1, y1), tx);
-    return mix(row0, row1, ty);
+    let linear = mix(row0, row1, ty);
+    let horizon = (SKY_VIEW_HEIGHT - 1u) / 2u;
+    if (y0 < horizon || y1 == y0) {
+        return linear;
+    }
+    let q1 = sky_log_row(base, x0, x1, y0, tx);
+    let q2 = sky_log_row(base, x0, x1, y1, tx);
+    let below = 2.0 * q1 - q2;
+    let above = 2.0 * q2 - q1;
+    var q0 = below;
+    if (y0 > horizon) {
+        q0 = select(sky_log_row(base, x0, x1, y0 - 1u, tx), below, sky_dark_row(base, x0, x1, y0 - 1u));
+    }
+    var q3 = above;
+    if (y1 + 1u < SKY_VIEW_HEIGHT) {
+        q3 = select(sky_log_row(base, x0, x1, y1 + 1u, tx), above, sky_dark_row(base, x0, x1, y1 + 1u));
+    }
+    let spline = exp(sky_catmull_rom(q0, q1, q2, q3, ty));
+    let dark = sky_dark_row(base, x0, x1, y0) | sky_dark_row(base, x0, x1, y1);
+    return select(spline, linear, dark);
 }
 
 // The lookup both tracers do: elevation from `d.y`, azimuth from the sun's horizontal

@@ -176,6 +176,12 @@ pub struct Atmosphere {
 impl Atmosphere {
     /// The media at altitude `h` km above the ground.
     pub fn medium(&self, h: f32) -> Medium {
+        self.medium_with(h, self.aerosol.scattering())
+    }
+
+    /// [`Atmosphere::medium`] with the aerosols' scattering per unit haze given
+    /// (`self.aerosol.scattering()`, hoisted out of a loop).
+    pub fn medium_with(&self, h: f32, aerosol_scattering: Vec3) -> Medium {
         let h = h.max(0.0);
         let rayleigh = RAYLEIGH_SCATTERING * (-h / RAYLEIGH_SCALE_HEIGHT_KM).exp();
         let mie_density = self.haze * (-h / self.aerosol.scale_height_km).exp();
@@ -186,7 +192,7 @@ impl Atmosphere {
             8.0 / 3.0 - h / 15.0
         };
         let ozone = OZONE_ABSORPTION * (self.ozone * ozone_density.max(0.0));
-        let mie = self.aerosol.scattering() * mie_density;
+        let mie = aerosol_scattering * mie_density;
         let mie_absorption = self.aerosol.absorption_per_km * mie_density;
         Medium {
             rayleigh,

@@ -180,7 +180,7 @@ impl ScatteringOrders {
     /// cosine is `mu_s`.
     pub fn ground_irradiance(&self, mu_s: f32) -> Vec3 {
         let (j0, j1, t) = sun_position(mu_s);
-        self.ground[j0].lerp(self.ground[j1], t)
+        sun_blend(self.ground[j0], self.ground[j1], t)
     }
 
     /// (S_R, S_A) interpolated over the four coordinates.
@@ -195,22 +195,26 @@ impl ScatteringOrders {
             position((c + 1.0) * 0.5 * ELEVATIONS as f32 - 0.5, ELEVATIONS)
         };
         let n = position(azimuth / PI * AZIMUTHS as f32 - 0.5, AZIMUTHS);
-        let (mut sr, mut sa) = (Vec3::ZERO, Vec3::ZERO);
+        // Trilinear over altitude and direction at each of the two sun nodes, then between them.
+        let mut at_sun = [(Vec3::ZERO, Vec3::ZERO); 2];
         for (ki, kw) in [(k.0, 1.0 - k.2), (k.1, k.2)] {
             let m = m_at(ki);
-            for (ji, jw) in [(j.0, 1.0 - j.2), (j.1, j.2)] {
+            for (s, ji) in [j.0, j.1].into_iter().enumerate() {
                 let base = (ki * SUNS + ji) * DIRECTIONS;
                 for (mi, mw) in [(m.0, 1.0 - m.2), (m.1, m.2)] {
                     for (ni, nw) in [(n.0, 1.0 - n.2), (n.1, n.2)] {
-                        let w = kw * jw * mw * nw;
+                        let w = kw * mw * nw;
                         let i = base + mi * AZIMUTHS + ni;
-                        sr += self.rayleigh[i] * w;
-                        sa += self.aerosol[i] * w;
+                        at_sun[s].0 += self.rayleigh[i] * w;
+                        at_sun[s].1 += self.aerosol[i] * w;
                     }
                 }
             }
         }
-        (sr, sa)
+        (
+            sun_blend(at_sun[0].0, at_sun[1].0, j.2),
+            sun_blend(at_sun[0].1, at_sun[1].1, j.2),
+        )
     }
 }
 

@@ -28,6 +28,38 @@ pub const VIEW_HEIGHT: usize = 129;
 /// way at twice the cost: `docs/ACCURACY.md`).
 const STEPS: usize = 64;
 
+/// A march piece across which the sun's transmittance changes by more than this factor in a
+/// channel is split in two (twilight: the sun's light grazes the ground; a 64-step piece far
+/// out put single scattering 7 % off at −6°, `docs/ACCURACY.md`).
+const SPLIT_RATIO: f32 = 1.5;
+/// How many times a piece may be halved (into at most 2^SPLIT_DEPTH).
+const SPLIT_DEPTH: u32 = 2;
+
+/// Calls `piece(middle, length)` (km) for the piece of a march centred at `t` with length `dt`,
+/// or for its halves (recursively, `depth` more times) when `sun_transmittance` at its two ends
+/// differs by more than [`SPLIT_RATIO`] in a channel.
+fn split_piece(
+    t: f32,
+    dt: f32,
+    depth: u32,
+    sun_transmittance: &impl Fn(f32) -> Vec3,
+    piece: &mut impl FnMut(f32, f32),
+) {
+    if depth > 0 {
+        let (a, b) = (
+            sun_transmittance(t - 0.5 * dt),
+            sun_transmittance(t + 0.5 * dt),
+        );
+        let (lo, hi) = (a.min(b), a.max(b));
+        if hi.cmpgt(lo * SPLIT_RATIO).any() {
+            split_piece(t - 0.25 * dt, 0.5 * dt, depth - 1, sun_transmittance, piece);
+            split_piece(t + 0.25 * dt, 0.5 * dt, depth - 1, sun_transmittance, piece);
+            return;
+        }
+    }
+    piece(t, dt);
+}
+
 /// Builds the sky-view texels for a sun at `sun_elevation` radians.
 pub fn build_view(
     atmosphere: &Atmosphere,
@@ -76,10 +108,12 @@ fn march(
         atmosphere.aerosol.phase(cos_theta),
     );
     let (mut radiance, mut throughput) = (Vec3::ZERO, Vec3::ONE);
-    // Quadratic spacing: short steps near the viewer where the air is dense; a step that the
-    // planet shadow's edge crosses is cut there, so each piece is lit or dark throughout.
-    let edges = shadow_edges(origin, dir, sun, length);
-    for (t, dt) in march_pieces(length, STEPS, &edges) {
+    let sun_transmittance = |t: f32| {
+        let p = origin + dir * t;
+        let rp = p.length();
+        transmittance.lookup(rp, p.dot(sun) / rp)
+    };
+    let mut piece = |t: f32, dt: f32| {
         let p = origin + dir * t;
         let rp = p.length();
         let mu_s = p.dot(sun) / rp;
@@ -92,6 +126,13 @@ fn march(
         let step = (-m.extinction * dt).exp();
         radiance += throughput * (source - source * step) / m.extinction.max(Vec3::splat(1e-9));
         throughput *= step;
+    };
+    // Quadratic spacing: short steps near the viewer where the air is dense; a step that the
+    // planet shadow's edge crosses is cut there, so each piece is lit or dark throughout; a
+    // piece across which the sun's transmittance changes steeply (twilight) is split.
+    let edges = shadow_edges(origin, dir, sun, length);
+    for (t, dt) in march_pieces(length, STEPS, &edges) {
+        split_piece(t, dt, SPLIT_DEPTH, &sun_transmittance, &mut piece);
     }
     if let Some(t) = ground {
         let p = origin + dir * t;
@@ -106,8 +147,29 @@ fn march(
     radiance
 }
 
+/// Radiance (per channel) at or below which a texel counts as dark: single scattering in the
+/// planet's shadow is exactly 0, which the log-space interpolation below cannot hold.
+pub const DARK: f32 = 1e-30;
+
+/// Catmull–Rom spline through `p0..p3` at `t` in 0..1 between `p1` and `p2`.
+fn catmull_rom(p0: Vec3, p1: Vec3, p2: Vec3, p3: Vec3, t: f32) -> Vec3 {
+    let (t2, t3) = (t * t, t * t * t);
+    0.5 * (2.0 * p1
+        + (p2 - p0) * t
+        + (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) * t2
+        + (3.0 * p1 - p0 - 3.0 * p2 + p3) * t3)
+}
+
 /// The table's radiance for a view at `elevation` radians and `azimuth` radians from the sun's
-/// azimuth (any sign, any turn). Bilinear between nodes; the WGSL twin does the same arithmetic.
+/// azimuth (any sign, any turn); the WGSL twin (`sky_lookup_view`) does the same arithmetic.
+///
+/// Below the horizon: bilinear between nodes. Above it: in each channel, the logarithm of the
+/// radiance, linear in azimuth and a Catmull–Rom spline over four rows in elevation. In
+/// twilight a faint channel's radiance changes by orders of magnitude between rows (the view's
+/// transmittance near the horizon, the planet's shadow), which linear interpolation overshoots
+/// by up to 140 % (`docs/ACCURACY.md`, "Brute force against the tables"). A row outside the
+/// sky (below the horizon row, past the zenith) or dark is replaced by the straight line through
+/// the two inner rows; a channel with a dark inner node stays bilinear (exact zeros stay zero).
 pub fn lookup_view(texels: &[[f32; 4]], elevation: f32, azimuth: f32) -> Vec3 {
     let a = azimuth.abs() % std::f32::consts::TAU;
     let phi = if a > std::f32::consts::PI {
@@ -125,5 +187,32 @@ pub fn lookup_view(texels: &[[f32; 4]], elevation: f32, azimuth: f32) -> Vec3 {
     let (tx, ty) = (fx - x0 as f32, fy - y0 as f32);
     let at = |x: usize, y: usize| Vec3::from_slice(&texels[y * VIEW_WIDTH + x][..3]);
     let row = |y: usize| at(x0, y).lerp(at(x1, y), tx);
-    row(y0).lerp(row(y1), ty)
+    let linear = row(y0).lerp(row(y1), ty);
+    let horizon = (VIEW_HEIGHT - 1) / 2;
+    if y0 < horizon || y1 == y0 {
+        return linear;
+    }
+    let dark_row = |y: usize| at(x0, y).min(at(x1, y)).cmple(Vec3::splat(DARK));
+    let log_row = |y: usize| {
+        let ln = |l: Vec3| {
+            let l = l.max(Vec3::splat(DARK));
+            Vec3::new(l.x.ln(), l.y.ln(), l.z.ln())
+        };
+        ln(at(x0, y)).lerp(ln(at(x1, y)), tx)
+    };
+    let (q1, q2) = (log_row(y0), log_row(y1));
+    let (below, above) = (2.0 * q1 - q2, 2.0 * q2 - q1);
+    let q0 = if y0 > horizon {
+        Vec3::select(dark_row(y0 - 1), below, log_row(y0 - 1))
+    } else {
+        below
+    };
+    let q3 = if y1 + 1 < VIEW_HEIGHT {
+        Vec3::select(dark_row(y1 + 1), above, log_row(y1 + 1))
+    } else {
+        above
+    };
+    let s = catmull_rom(q0, q1, q2, q3, ty);
+    let spline = Vec3::new(s.x.exp(), s.y.exp(), s.z.exp());
+    Vec3::select(dark_row(y0) | dark_row(y1), linear, spline)
 }

@@ -1,19 +1,27 @@
 //! The transmittance table (Bruneton & Neyret 2008's parametrization, as Hillaire 2020 uses
 //! it): transmittance from a point at radius r along zenith cosine μ to the atmosphere's top,
-//! for rays that do not meet the ground (those see zero).
+//! for rays that do not meet the ground (those see zero). The table holds the optical depth and
+//! interpolates it (bilinear), so a grazing ray's transmittance, which falls by orders of
+//! magnitude across a few texels in twilight, is not overshot.
 //!
-//! Any thread; built once per atmosphere by [`TransmittanceLut::build`]. Kilometres, as in
-//! `atmosphere`. Must not: know about the sun's position or the engine.
+//! Any thread; built once per atmosphere by [`TransmittanceLut::build`] (rows on the rayon
+//! pool). Kilometres, as in `atmosphere`. Must not: know about the sun's position or the engine.
 
 use glam::Vec3;
+use rayon::prelude::*;
 
 use super::atmosphere::{Atmosphere, GROUND_RADIUS_KM, TOP_RADIUS_KM, ray_sphere};
 
-const WIDTH: usize = 256;
-const HEIGHT: usize = 64;
+/// Columns (μ) and rows (r) of the table: 512 × 128 (256 × 64 put twilight single scattering
+/// up to 1.9 % off in blue through haze, `docs/ACCURACY.md` "Brute force against the tables").
+const WIDTH: usize = 512;
+const HEIGHT: usize = 128;
+/// Midpoint steps of [`transmittance_exact`] (the sun disc's irradiance at the viewer).
 const STEPS: usize = 64;
+/// Midpoint steps per texel of the table (grazing rays, 2 × 1100 km, need more than 64).
+const TABLE_STEPS: usize = 128;
 
-/// Transmittance per (μ, r), bilinear.
+/// Optical depth per (μ, r), bilinear.
 pub struct TransmittanceLut {
     texels: Vec<Vec3>,
 }
@@ -25,44 +33,57 @@ fn horizon_length() -> f32 {
 /// Optical depth × extinction integrated exactly enough (midpoint rule, `STEPS` steps) from
 /// radius `r` along `mu` to the top; infinite when the ray meets the ground.
 pub fn transmittance_exact(atmosphere: &Atmosphere, r: f32, mu: f32) -> Vec3 {
+    optical_depth(atmosphere, r, mu, STEPS).map_or(Vec3::ZERO, |d| (-d).exp())
+}
+
+/// Optical depth per channel from radius `r` km along zenith cosine `mu` to the top, by the
+/// midpoint rule in `steps` steps; `None` when the ray meets the ground.
+fn optical_depth(atmosphere: &Atmosphere, r: f32, mu: f32, steps: usize) -> Option<Vec3> {
     if ray_sphere(r, mu, GROUND_RADIUS_KM, true).is_some() {
-        return Vec3::ZERO;
+        return None;
     }
     let Some(length) = ray_sphere(r, mu, TOP_RADIUS_KM, false) else {
-        return Vec3::ONE;
+        return Some(Vec3::ZERO);
     };
-    let dt = length / STEPS as f32;
+    let aerosol = atmosphere.aerosol.scattering();
+    let dt = length / steps as f32;
     let mut depth = Vec3::ZERO;
-    for i in 0..STEPS {
+    for i in 0..steps {
         let t = (i as f32 + 0.5) * dt;
         let ri = (r * r + t * t + 2.0 * r * mu * t).sqrt();
-        depth += atmosphere.medium(ri - GROUND_RADIUS_KM).extinction * dt;
+        depth += atmosphere
+            .medium_with(ri - GROUND_RADIUS_KM, aerosol)
+            .extinction
+            * dt;
     }
-    (-depth).exp()
+    Some(depth)
 }
 
 impl TransmittanceLut {
     pub fn build(atmosphere: &Atmosphere) -> Self {
         let h = horizon_length();
-        let mut texels = Vec::with_capacity(WIDTH * HEIGHT);
-        for y in 0..HEIGHT {
-            for x in 0..WIDTH {
-                let x_mu = x as f32 / (WIDTH - 1) as f32;
-                let x_r = y as f32 / (HEIGHT - 1) as f32;
-                let rho = h * x_r;
-                let r = (rho * rho + GROUND_RADIUS_KM * GROUND_RADIUS_KM).sqrt();
-                let d_min = TOP_RADIUS_KM - r;
-                let d_max = rho + h;
-                let d = d_min + x_mu * (d_max - d_min);
-                let mu = if d == 0.0 {
-                    1.0
-                } else {
-                    ((h * h - rho * rho - d * d) / (2.0 * r * d)).clamp(-1.0, 1.0)
-                };
-                // The last column grazes the ground: nudge it up so it stays lit.
-                texels.push(transmittance_exact(atmosphere, r, mu.max(-1.0) + 1e-6));
-            }
-        }
+        let texels = (0..HEIGHT)
+            .into_par_iter()
+            .flat_map_iter(|y| {
+                (0..WIDTH).map(move |x| {
+                    let x_mu = x as f32 / (WIDTH - 1) as f32;
+                    let x_r = y as f32 / (HEIGHT - 1) as f32;
+                    let rho = h * x_r;
+                    let r = (rho * rho + GROUND_RADIUS_KM * GROUND_RADIUS_KM).sqrt();
+                    let d_min = TOP_RADIUS_KM - r;
+                    let d_max = rho + h;
+                    let d = d_min + x_mu * (d_max - d_min);
+                    let mu = if d == 0.0 {
+                        1.0
+                    } else {
+                        ((h * h - rho * rho - d * d) / (2.0 * r * d)).clamp(-1.0, 1.0)
+                    };
+                    // The last column grazes the ground: nudge it up so it stays lit.
+                    optical_depth(atmosphere, r, mu.max(-1.0) + 1e-6, TABLE_STEPS)
+                        .unwrap_or(Vec3::splat(1e4))
+                })
+            })
+            .collect();
         Self { texels }
     }
 
@@ -82,7 +103,7 @@ impl TransmittanceLut {
         let d_max = rho + h;
         let x_mu = ((d - d_min) / (d_max - d_min)).clamp(0.0, 1.0);
         let x_r = (rho / h).clamp(0.0, 1.0);
-        bilinear(&self.texels, WIDTH, HEIGHT, x_mu, x_r)
+        (-bilinear(&self.texels, WIDTH, HEIGHT, x_mu, x_r)).exp()
     }
 }
 

@@ -4,9 +4,9 @@
 use candela::sky::{Aerosol, HAZE_TURBIDITY_3, PhysicalSky};
 use glam::DVec3;
 
-use crate::sky_brute_force::{FINE, worst};
+use crate::sky_brute_force::{FINE, FLIGHT, worst};
 use crate::sky_common::air::{self, Air};
-use crate::sky_common::paths::{Rng, sample_phase, single_by_paths, track};
+use crate::sky_common::paths::{Rng, next_flight, sample_phase, single_by_paths, track};
 use crate::sky_common::single::{Fineness, ViewRay, direction, single_scattering};
 
 fn sky() -> PhysicalSky {
@@ -91,7 +91,9 @@ fn mean_and_stderr(n: usize, mut f: impl FnMut() -> DVec3) -> (DVec3, DVec3) {
 /// per channel: spectral delta tracking's escape weight against the quadrature's transmittance
 /// (three view elevations), the phase sampling's weight p/pdf averaging 1 (the phase functions
 /// normalised, the sampling unbiased), and single scattering by the first point's next-event
-/// estimate against the deterministic march.
+/// estimate against the deterministic march, and the next-flight estimate (`FLIGHT`'s nodes)
+/// against the collision's next-event estimate it replaces, from a point 1 km up along rays to
+/// the sky and to the ground, the sun above and below the horizon.
 #[test]
 fn brute_force_paths_are_unbiased() {
     let s = sky();
@@ -99,7 +101,10 @@ fn brute_force_paths_are_unbiased() {
     let mut rng = Rng::new(0x5EED);
     let n = 100_000;
     let within = |what: &str, estimate: (DVec3, DVec3), expected: DVec3| {
-        let sigmas = ((estimate.0 - expected).abs() / estimate.1).max_element();
+        // An exact 0 ± 0 (a ray wholly in the planet's shadow) counts as 0 σ.
+        let off = (estimate.0 - expected).abs();
+        let sigmas =
+            DVec3::select(off.cmpeq(DVec3::ZERO), DVec3::ZERO, off / estimate.1).max_element();
         println!(
             "{what}: {:?} ± {:?} vs {expected:?} ({sigmas:.2} σ)",
             estimate.0, estimate.1
@@ -132,6 +137,44 @@ fn brute_force_paths_are_unbiased() {
     let m = air.media(1.0);
     let estimate = mean_and_stderr(n, || sample_phase(&air, &m, DVec3::Z, &mut rng).1);
     within("phase weight", estimate, DVec3::ONE);
+    let x = DVec3::new(0.0, 0.0, air::ground_radius() + 1.0);
+    // Below the horizon, rays that see sunlit air (a collision rarely lands in it elsewhere).
+    for (sun_deg, rays) in [
+        (10.0f64, [(20.0f64, 0.0f64), (5.0, 160.0), (-10.0, 30.0)]),
+        (-6.0, [(20.0, 0.0), (45.0, 90.0), (5.0, 20.0)]),
+    ] {
+        let sun = direction(sun_deg.to_radians(), 0.0);
+        for (e, a) in rays {
+            let d = direction(e.to_radians(), a.to_radians());
+            let r = x.length();
+            let ground = air::ray_sphere(r, d.z, air::ground_radius(), true);
+            let boundary = ground
+                .or(air::ray_sphere(r, d.z, air::top_radius(), false))
+                .unwrap_or(0.0);
+            let estimate = mean_and_stderr(n, || {
+                let mut w = DVec3::ONE;
+                match track(&air, x, d, boundary, &mut w, &mut rng) {
+                    Some((p, m)) => {
+                        let rp = p.length();
+                        let sun_t = air.transmittance(rp, p.dot(sun) / rp, FINE.sun_intervals);
+                        w * air.phase_scattering(&m, d.dot(sun)) / m.scattering() * sun_t
+                    }
+                    None if ground.is_some() => {
+                        let normal = (x + d * boundary).normalize();
+                        let cos_sun = normal.dot(sun).max(0.0);
+                        let sun_t = air.transmittance(air::ground_radius(), cos_sun, 16);
+                        w * air.albedo / std::f64::consts::PI * cos_sun * sun_t
+                    }
+                    None => DVec3::ZERO,
+                }
+            });
+            within(
+                &format!("next flight, sun {sun_deg}°, ray {e}°/{a}°"),
+                estimate,
+                next_flight(&air, x, d, sun, FLIGHT),
+            );
+        }
+    }
     let sun = direction(10f64.to_radians(), 0.0);
     for (e, a) in [(2.0f64, 30.0f64), (20.0, 150.0)] {
         let view = ViewRay::new(

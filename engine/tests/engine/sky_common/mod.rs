@@ -17,7 +17,7 @@ use candela::sky::PhysicalSky;
 use glam::DVec3;
 
 use air::Air;
-use paths::{Rng, higher_orders};
+use paths::{Rng, higher_orders, higher_orders_next_flight};
 use single::{Fineness, ViewRay, direction, single_scattering};
 
 /// The reference radiance towards one view, per unit solar irradiance.
@@ -32,7 +32,10 @@ pub struct Reference {
 }
 
 /// The reference towards a view at `elevation` and `azimuth` from the sun (radians) for a sun
-/// at `sun_elevation` radians, with `paths` Monte Carlo paths seeded by `seed`.
+/// at `sun_elevation` radians, with `paths` Monte Carlo paths seeded by `seed`: the collision
+/// estimator (`paths::higher_orders`), or with `flight` the next-flight estimator on its nodes
+/// (`paths::higher_orders_next_flight`; twilight).
+#[allow(clippy::too_many_arguments)]
 pub fn reference(
     sky: &PhysicalSky,
     sun_elevation: f64,
@@ -41,6 +44,7 @@ pub fn reference(
     paths: usize,
     seed: u64,
     fine: Fineness,
+    flight: Option<Fineness>,
 ) -> Reference {
     let air = Air::new(sky);
     let sun = direction(sun_elevation, 0.0);
@@ -49,7 +53,10 @@ pub fn reference(
     let mut rng = Rng::new(seed);
     let (mut sum, mut squares) = (DVec3::ZERO, DVec3::ZERO);
     for _ in 0..paths {
-        let l = higher_orders(&air, &view, sun, fine, &mut rng);
+        let l = match flight {
+            Some(f) => higher_orders_next_flight(&air, &view, sun, f, &mut rng),
+            None => higher_orders(&air, &view, sun, fine, &mut rng),
+        };
         sum += l;
         squares += l * l;
     }

@@ -13,6 +13,14 @@
 //! `single::single_scattering`'s, deterministic. Seeded splitmix64: the same seed gives the
 //! same figures on any thread.
 //!
+//! [`higher_orders_next_flight`] is the same walk with the next-flight estimator instead of the
+//! collision's next-event estimate: at every vertex, once its outgoing direction is drawn, the
+//! light that reaches the vertex along it by one more scattering of sunlight (in the air, or at
+//! the ground at the ray's end) is integrated deterministically (`single::single_scattering`
+//! from the vertex); the walk then goes on with no estimate at the next vertex. Same mean, far
+//! less variance in twilight, where sunlit air is thin and high and a collision rarely lands in
+//! it; each vertex costs a march.
+//!
 //! Test thread (rayon workers). Frame, units: as `single`. Must not: use the engine's tables.
 
 use std::f64::consts::PI;
@@ -20,7 +28,7 @@ use std::f64::consts::PI;
 use glam::DVec3;
 
 use super::air::{Air, Media, ground_radius, henyey_greenstein, ray_sphere, top_radius};
-use super::single::{Fineness, ViewRay};
+use super::single::{Fineness, ViewRay, single_scattering};
 
 /// splitmix64 (Steele et al. 2014): small, seeded, reproducible.
 pub struct Rng(u64);
@@ -206,6 +214,69 @@ pub fn higher_orders(
                 let sun_t = air.transmittance(ground_radius(), cos_sun, fine.sun_intervals);
                 radiance += w * air.albedo / PI * cos_sun * sun_t;
             }
+            dir = cosine_sample(normal, rng);
+            w *= air.albedo;
+        } else {
+            break; // out through the top
+        }
+        if order >= 3 {
+            let survive = w.max_element().min(1.0);
+            if survive <= 0.0 || rng.next() >= survive {
+                break;
+            }
+            w /= survive;
+        }
+    }
+    radiance
+}
+
+/// Radiance per unit solar irradiance reaching `x` from unit direction `dir` by one scattering
+/// of sunlight: in the air along the ray (`single_scattering` on `fine`'s nodes) and, where the
+/// ray ends on the ground, the sunlit Lambertian ground seen through the ray's transmittance.
+pub fn next_flight(air: &Air, x: DVec3, dir: DVec3, sun: DVec3, fine: Fineness) -> DVec3 {
+    let ray = ViewRay::from(air, x, dir, fine.view_intervals);
+    let mut radiance = single_scattering(air, &ray, sun, fine);
+    if let (true, Some(&end), Some(&depth)) = (ray.ground, ray.t.last(), ray.depth.last()) {
+        let normal = ray.point(end).normalize();
+        let cos_sun = normal.dot(sun);
+        if cos_sun > 0.0 {
+            let sun_t = air.transmittance(ground_radius(), cos_sun, fine.sun_intervals);
+            radiance += (-depth).exp() * air.albedo / PI * cos_sun * sun_t;
+        }
+    }
+    radiance
+}
+
+/// [`higher_orders`] with the next-flight estimator (module doc): the same walk, the light of
+/// every vertex's next scattering integrated along its outgoing ray on `flight`'s nodes.
+pub fn higher_orders_next_flight(
+    air: &Air,
+    view: &ViewRay,
+    sun: DVec3,
+    flight: Fineness,
+    rng: &mut Rng,
+) -> DVec3 {
+    let (mut x, m, mut w) = first_point(air, view, rng);
+    let (mut dir, phase_weight) = sample_phase(air, &m, view.direction, rng);
+    w *= phase_weight;
+
+    let mut radiance = DVec3::ZERO;
+    for order in 2..1000 {
+        radiance += w * next_flight(air, x, dir, sun, flight);
+        let r = x.length();
+        let mu = x.dot(dir) / r;
+        let ground = ray_sphere(r, mu, ground_radius(), true);
+        let Some(boundary) = ground.or(ray_sphere(r, mu, top_radius(), false)) else {
+            break;
+        };
+        if let Some((p, m)) = track(air, x, dir, boundary, &mut w, rng) {
+            let (next, phase_weight) = sample_phase(air, &m, dir, rng);
+            x = p;
+            dir = next;
+            w *= phase_weight;
+        } else if ground.is_some() {
+            let normal = (x + dir * boundary).normalize();
+            x = normal * ground_radius();
             dir = cosine_sample(normal, rng);
             w *= air.albedo;
         } else {

@@ -28,6 +28,8 @@ pub struct ViewRay {
     pub t: Vec<f64>,
     /// Optical depth from the viewer to each node, per channel.
     pub depth: Vec<DVec3>,
+    /// Whether the ray ends on the ground (else at the atmosphere's top).
+    pub ground: bool,
 }
 
 /// Unit vector at `elevation` and `azimuth` (from the sun's vertical plane), radians, z up.
@@ -40,11 +42,22 @@ pub fn direction(elevation: f64, azimuth: f64) -> DVec3 {
 }
 
 impl ViewRay {
-    /// The ray towards `direction` (unit, above the horizon) with `intervals` steps.
+    /// The ray from the viewer towards `direction` (unit, above the horizon) with `intervals`
+    /// steps.
     pub fn new(air: &Air, direction: DVec3, intervals: usize) -> Self {
         let r0 = ground_radius() + VIEW_ALTITUDE_KM as f64;
-        let origin = DVec3::new(0.0, 0.0, r0);
-        let length = ray_sphere(r0, direction.z, top_radius(), false).unwrap_or(0.0);
+        Self::from(air, DVec3::new(0.0, 0.0, r0), direction, intervals)
+    }
+
+    /// The ray from `origin` (in the shell) towards unit `direction` to the ground or the top,
+    /// with `intervals` steps (the paths' next-flight estimate, `paths::next_flight`).
+    pub fn from(air: &Air, origin: DVec3, direction: DVec3, intervals: usize) -> Self {
+        let r0 = origin.length();
+        let mu = origin.dot(direction) / r0;
+        let ground = ray_sphere(r0, mu, ground_radius(), true);
+        let length = ground
+            .or(ray_sphere(r0, mu, top_radius(), false))
+            .unwrap_or(0.0);
         let t: Vec<f64> = (0..=intervals)
             .map(|i| length * (i as f64 / intervals as f64).powi(2))
             .collect();
@@ -66,6 +79,7 @@ impl ViewRay {
             direction,
             t,
             depth,
+            ground: ground.is_some(),
         }
     }
 
