@@ -265,3 +265,56 @@ fn keep_crashes(fuzz_dir: &Path, crashes: &Path, target: &str) -> Result<(), Str
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What `fuzz/rustc_wrapper.sh` hands on to "rustc" (`echo` here) for `crate`.
+    fn wrapped(crate_name: &str) -> String {
+        let script = workspace_root().join("fuzz/rustc_wrapper.sh");
+        let out = Command::new("bash")
+            .arg(script)
+            .args(["echo", "--crate-name", crate_name, "--edition=2024"])
+            .args(["-C", "opt-level=3", "-C", "codegen-units=1"])
+            .args(["-C", "passes=sancov-module"])
+            .args(["-C", "llvm-args=-sanitizer-coverage-level=3"])
+            .args(["-Cllvm-args=-sanitizer-coverage-trace-compares"])
+            .args(["--cfg", "fuzzing", "-Clink-arg=afl-compiler-rt.o"])
+            .output()
+            .expect("bash runs the wrapper");
+        assert!(out.status.success(), "the wrapper failed: {out:?}");
+        String::from_utf8_lossy(&out.stdout).trim().to_string()
+    }
+
+    #[test]
+    fn the_wrapper_instruments_the_crates_under_test_only() {
+        let all = "--crate-name NAME --edition=2024 -C opt-level=3 -C codegen-units=1 \
+                   -C passes=sancov-module -C llvm-args=-sanitizer-coverage-level=3 \
+                   -Cllvm-args=-sanitizer-coverage-trace-compares --cfg fuzzing \
+                   -Clink-arg=afl-compiler-rt.o";
+        for tested in ["candela", "gltf_json", "symphonia_format_ogg", "zune_jpeg"] {
+            assert_eq!(wrapped(tested), all.replace("NAME", tested), "{tested}");
+        }
+        for other in [
+            "wgpu_core",
+            "naga",
+            "egui",
+            "rapier3d",
+            "build_script_build",
+        ] {
+            let expected = format!(
+                "--crate-name {other} --edition=2024 -C opt-level=3 --cfg fuzzing \
+                 -Clink-arg=afl-compiler-rt.o"
+            );
+            assert_eq!(wrapped(other), expected, "{other}");
+        }
+    }
+
+    #[test]
+    fn the_wrapper_hash_is_stable() {
+        // FNV-1a's published test vectors: a changed hash would rebuild every afl artefact.
+        assert_eq!(fnv1a(b""), 0xcbf2_9ce4_8422_2325);
+        assert_eq!(fnv1a(b"a"), 0xaf63_dc4c_8601_ec8c);
+    }
+}
