@@ -88,19 +88,49 @@ fn extra_seeds(target: Target) -> Vec<PathBuf> {
     spread(found, MAX_SEEDS)
 }
 
+/// Every seed of `target`: its [`mutable_seeds`] and its [`campaign_corpus`].
 pub fn seeds(target: Target) -> Vec<(String, Vec<u8>)> {
+    let mut seeds = mutable_seeds(target);
+    seeds.extend(campaign_corpus(target));
+    seeds
+}
+
+/// The seeds the corpus test mutates: the hand-made `fuzz/corpus/<target>/*`, the crash inputs
+/// `fuzz/crashes/<target>/`, the assets' and `../shared/external`'s samples, a recorded replay.
+pub fn mutable_seeds(target: Target) -> Vec<(String, Vec<u8>)> {
     let fuzz = repo().join("fuzz");
-    let mut paths = files(&fuzz.join("corpus").join(target.name()), &[""]);
+    let corpus = fuzz.join("corpus").join(target.name());
+    let mut paths: Vec<PathBuf> = files(&corpus, &[""])
+        .into_iter()
+        .filter(|p| !p.starts_with(corpus.join(CAMPAIGN_FOLDER)))
+        .collect();
     paths.extend(files(&fuzz.join("crashes").join(target.name()), &[""]));
     paths.extend(extra_seeds(target));
-    let mut seeds: Vec<(String, Vec<u8>)> = paths
-        .into_iter()
-        .filter_map(|p| std::fs::read(&p).ok().map(|b| (p.display().to_string(), b)))
-        .collect();
+    let mut seeds = read_all(paths);
     if target == Target::Replay {
         seeds.push(("a recorded replay".into(), sample_replay()));
     }
     seeds
+}
+
+/// Where a campaign's minimised corpus (afl-cmin) is committed, inside `fuzz/corpus/<target>/`.
+pub const CAMPAIGN_FOLDER: &str = "afl";
+
+/// The minimised corpus of the afl campaigns, `fuzz/corpus/<target>/afl/`: afl has mutated these
+/// millions of times already, so the corpus test replays each once, unmutated.
+pub fn campaign_corpus(target: Target) -> Vec<(String, Vec<u8>)> {
+    let dir = repo()
+        .join("fuzz/corpus")
+        .join(target.name())
+        .join(CAMPAIGN_FOLDER);
+    read_all(files(&dir, &[""]))
+}
+
+fn read_all(paths: Vec<PathBuf>) -> Vec<(String, Vec<u8>)> {
+    paths
+        .into_iter()
+        .filter_map(|p| std::fs::read(&p).ok().map(|b| (p.display().to_string(), b)))
+        .collect()
 }
 
 /// A short recording made with the engine's recorder (held, pressed and motion values).

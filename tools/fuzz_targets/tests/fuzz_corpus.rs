@@ -1,5 +1,6 @@
 //! Replays every fuzz corpus and crash input through its target, and a few hundred
-//! deterministic mutations of each seed: none may panic (see `fuzz_targets`' module doc for what
+//! deterministic mutations of each seed except the campaigns' minimised corpus
+//! (`fuzz/corpus/<target>/afl/`, replayed once each: afl mutated it already): none may panic (see `fuzz_targets`' module doc for what
 //! counts as a bug). Seeds come from `fuzz/corpus/<target>/`, `fuzz/crashes/<target>/`, the
 //! repository's own assets and `../shared/external`. Each target must accept at least one of
 //! its seeds, so a harness that refuses everything (a wrong scratch path, say) fails here.
@@ -8,7 +9,8 @@
 use std::collections::BTreeMap;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
-use fuzz_targets::{Outcome, Target, mutate::mutate, run, seeds::seeds};
+use fuzz_targets::seeds::{campaign_corpus, mutable_seeds};
+use fuzz_targets::{Outcome, Target, mutate::mutate, run};
 
 /// Mutations run per seed (the seeds per target are capped in `seeds`, so the test stays fast).
 const MUTATIONS_PER_SEED: u64 = 300;
@@ -20,10 +22,13 @@ fn no_input_of_any_target_panics() {
     let mut accepted: BTreeMap<&str, usize> = BTreeMap::new();
     let mut runs = 0_u64;
     for target in Target::ALL {
-        let seeds = seeds(target);
+        let seeds = mutable_seeds(target);
         assert!(!seeds.is_empty(), "target {} has no seeds", target.name());
-        for (name, seed) in &seeds {
-            for n in 0..=MUTATIONS_PER_SEED {
+        // The campaigns' minimised corpus: replayed as it is (mutation 0 only).
+        let corpus = campaign_corpus(target);
+        let inputs = seeds.iter().map(|s| (s, MUTATIONS_PER_SEED));
+        for ((name, seed), mutations) in inputs.chain(corpus.iter().map(|s| (s, 0))) {
+            for n in 0..=mutations {
                 let input = if n == 0 {
                     seed.clone()
                 } else {
