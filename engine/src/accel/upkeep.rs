@@ -75,6 +75,9 @@ pub struct UpkeepStats {
     pub blas_rebuilds: u32,
     pub tlas_builds: u32,
     pub light_table_builds: u32,
+    /// Frames whose moved emitters only refitted the light table and tree
+    /// (`scene::light_refit`) instead of rebuilding them.
+    pub light_refits: u32,
     /// Bytes of all writes of the frame.
     pub bytes: usize,
     /// Bytes of the frame's geometry writes (BVH nodes and triangle blocks, vertices,
@@ -109,6 +112,9 @@ pub struct Upkeep {
     pub(super) pending: Vec<SceneWrite>,
     pub(super) tlas_dirty: bool,
     pub(super) lights_dirty: bool,
+    /// Rows of emissive instances moved since the last commit (refitted when nothing else
+    /// dirtied the light table, see `scene::light_refit`).
+    pub(super) lights_moved: Vec<u32>,
     pub(super) stats: UpkeepStats,
     /// The far-from-origin warning was given (see `origin.rs`).
     pub(super) precision_warned: bool,
@@ -149,6 +155,7 @@ impl Upkeep {
             }],
             tlas_dirty: true,
             lights_dirty: true,
+            lights_moved: Vec::new(),
             stats: UpkeepStats::default(),
             precision_warned: false,
             blas_params: BlasParams::default(),
@@ -366,6 +373,10 @@ impl Upkeep {
     /// statistics. The scene is then what queries read.
     pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
         self.settle_queries();
+        if !self.lights_dirty && !self.lights_moved.is_empty() {
+            self.refit_lights();
+        }
+        self.lights_moved.clear();
         if self.lights_dirty {
             puffin::profile_scope!("light table");
             let counts: Vec<u32> = self
@@ -411,6 +422,31 @@ impl Upkeep {
             .map(SceneWrite::bytes)
             .sum();
         (writes, self.scene.header(), stats)
+    }
+
+    /// Refits the light table and tree to the emissive rows moved this frame; marks the table
+    /// dirty (a rebuild follows) when a move was not rigid.
+    fn refit_lights(&mut self) {
+        puffin::profile_scope!("light refit");
+        let refit = crate::scene::light_refit::refit_lights(
+            &self.scene.lights,
+            &self.lights_moved,
+            &self.scene.instances,
+            &self.scene.triangles,
+            &self.scene.vertices,
+        );
+        let Some(refit) = refit else {
+            self.lights_dirty = true;
+            return;
+        };
+        use crate::scene::light_refit::LightRefit;
+        for (first, data) in LightRefit::runs(&refit.lights) {
+            self.push(SceneWrite::Lights { first, data });
+        }
+        for (first, data) in LightRefit::runs(&refit.nodes) {
+            self.push(SceneWrite::LightNodes { first, data });
+        }
+        self.stats.light_refits += 1;
     }
 
     /// The flattened scene, giving up the upkeep (for one-shot builds).

@@ -91,7 +91,10 @@ impl Upkeep {
             log::warn!("set_instance: unknown model {}", model.0);
             return;
         };
-        let existing = self.entities.get(&entity).map(|(rows, _)| rows.clone());
+        let (existing, old_group) = match self.entities.get(&entity) {
+            Some((rows, g)) => (Some(rows.clone()), Some(*g)),
+            None => (None, None),
+        };
         let reuse = existing.as_ref().is_some_and(|rows| {
             rows.len() == record.placements.len()
                 && rows
@@ -117,19 +120,31 @@ impl Upkeep {
                 self.rows.push((entity, slot));
                 self.rows.len() as u32 - 1
             };
+            // The same emitter moved, in the same group, with the same material and flags: its
+            // lights only need placing again (`scene::light_refit`); unmoved, nothing at all.
+            let before = reuse
+                .then(|| self.scene.instances.get(index as usize))
+                .flatten();
+            let moved_only = old_group == Some(group)
+                && before.is_some_and(|b| {
+                    b.material_override == row.material_override
+                        && (b.flags ^ row.flags) & !INSTANCE_FLAG_IDENTITY == 0
+                });
+            let unmoved = moved_only
+                && before.is_some_and(|b| bytemuck::bytes_of(b) == bytemuck::bytes_of(&row));
+            if self.meshes[slot].emissive && !unmoved {
+                match moved_only {
+                    true => self.lights_moved.push(index),
+                    false => self.lights_dirty = true,
+                }
+            }
             self.push(SceneWrite::Instances {
                 first: index,
                 data: vec![row],
             });
             rows.push(index);
-            if self.meshes[slot].emissive {
-                self.lights_dirty = true;
-            }
         }
         self.stats.instances_written += rows.len() as u32;
-        if group.is_some() || self.entities.get(&entity).is_some_and(|(_, g)| g.is_some()) {
-            self.lights_dirty = true;
-        }
         self.entities.insert(entity, (rows, group));
         self.tlas_dirty = true;
     }

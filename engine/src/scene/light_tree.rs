@@ -110,7 +110,23 @@ impl LightBounds {
         }
     }
 
-    fn node(&self, child: u32, parent: u32, leaf: bool) -> GpuLightNode {
+    /// The bounds a node stores (the inverse of [`LightBounds::node`]).
+    pub fn from_node(n: &GpuLightNode) -> Self {
+        LightBounds {
+            bounds: Aabb {
+                min: Vec3::from(n.bounds_min),
+                max: Vec3::from(n.bounds_max),
+            },
+            axis: Vec3::from(n.axis),
+            phi: n.phi,
+            cos_theta_o: n.cos_theta_o,
+            cos_theta_e: n.cos_theta_e,
+            two_sided: n.flags & LIGHT_NODE_TWO_SIDED != 0,
+        }
+    }
+
+    /// The node holding these bounds (`child`: second child, or light index for a leaf).
+    pub fn node(&self, child: u32, parent: u32, leaf: bool) -> GpuLightNode {
         GpuLightNode {
             bounds_min: self.bounds.min.to_array(),
             phi: self.phi,

@@ -4,7 +4,7 @@
 //!
 //! Owns: [`RenderScene`] (the `layout` buffers of one scene), [`SceneWrite`] / [`SceneHeader`]
 //! (the deltas a commit carries, and applying them), the light table ([`lights`]: emissive
-//! triangles, alias table, light groups, sun and sky; [`discs`]: the physical sky's sun, moon and night in the uniforms; [`light_tree`]: the light BVH), material and texture packing
+//! triangles, alias table, light groups, sun and sky; [`discs`]: the physical sky's sun, moon and night in the uniforms; [`light_tree`]: the light BVH; [`light_refit`]: both refitted after emitters moved rigidly), material and texture packing
 //! (`materials`), the thin line emitters the camera sees prefiltered (`lines`), what a surface does to a laser (`optics`), the physical sky's table ([`SkyTable`]), what it holds in bytes ([`SceneMemory`]) and the box type [`Aabb`].
 //! Any thread (plain data and pure functions).
 //! Must not: build trees (`accel`), trace rays (`trace`), or know about the ECS, the commit or
@@ -13,6 +13,7 @@
 mod bounds;
 pub mod discs;
 mod flattened;
+pub mod light_refit;
 pub mod light_tree;
 pub mod lights;
 mod lines;

@@ -143,6 +143,7 @@ mod structure_layers;
 mod trace_agreement;
 mod upkeep_camera_motion;
 mod upkeep_equivalence;
+mod upkeep_light_refit;
 mod upkeep_settled_queries;
 mod water_at_rest;
 mod water_level;

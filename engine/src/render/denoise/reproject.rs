@@ -110,6 +110,12 @@ pub fn reproject(
     // Each instance's motion, once per frame rather than once per pixel, both ways.
     let moved = motions(&prev.world_from_object, world_from_object);
     let forward: Vec<Affine3A> = moved.iter().map(|m| m.inverse()).collect();
+    // Every previous pixel's guide point relative to the previous camera, once per frame
+    // rather than once per tap (the same arithmetic, so the same bits).
+    let pw = prev.view.width as usize;
+    let points: Vec<Vec3> = (prev.guides.depth.par_iter().enumerate())
+        .map(|(j, &depth)| prev.view.sample_direction((j % pw) as u32, (j / pw) as u32) * depth)
+        .collect();
     let with_albedo = history.albedo.len() == history.illumination.len()
         && history.normal_depth.len() == history.illumination.len();
     let frame = Frame {
@@ -119,6 +125,7 @@ pub fn reproject(
         view,
         moved: &moved,
         forward: &forward,
+        points: &points,
         with_albedo,
     };
     let row = w as usize;
@@ -161,6 +168,8 @@ struct Frame<'a> {
     /// Each instance's motion from this frame back to the previous one, and forward.
     moved: &'a [Affine3A],
     forward: &'a [Affine3A],
+    /// Each previous pixel's guide point, relative to the previous camera (metres).
+    points: &'a [Vec3],
     /// The history keeps an albedo and normal/depth too.
     with_albedo: bool,
 }
@@ -207,8 +216,9 @@ struct Seen {
     expected: f32,
 }
 
-/// Whether the previous frame's pixel `j` saw the same surface as `seen`.
-fn same_surface(prev: &PrevFrame, j: usize, seen: &Seen) -> bool {
+/// Whether the previous frame's pixel `j` (its guide point `points[j]`, relative to the
+/// previous camera) saw the same surface as `seen`.
+fn same_surface(prev: &PrevFrame, points: &[Vec3], j: usize, seen: &Seen) -> bool {
     let g = &prev.guides;
     if seen.sky {
         return g.instance[j] == NO_INSTANCE;
@@ -217,10 +227,7 @@ fn same_surface(prev: &PrevFrame, j: usize, seen: &Seen) -> bool {
     {
         return false;
     }
-    let pw = prev.view.width as usize;
-    let (tx, ty) = ((j % pw) as u32, (j / pw) as u32);
-    let tap = prev.view.sample_direction(tx, ty) * g.depth[j];
-    g.normal[j].dot(seen.before - tap).abs() <= PLANE_TOLERANCE * seen.expected
+    g.normal[j].dot(seen.before - points[j]).abs() <= PLANE_TOLERANCE * seen.expected
 }
 
 /// One pixel's [`Gathered`] history: the taps that saw its surface, else the taps whose
@@ -233,6 +240,7 @@ fn pixel(frame: &Frame, (x, y): (u32, u32), i: usize) -> Gathered {
         view,
         moved,
         forward,
+        points,
         with_albedo,
     } = *frame;
     let none = (Vec4::ZERO, Vec4::ZERO, Vec4::ONE, Vec4::ZERO);
@@ -306,7 +314,7 @@ fn pixel(frame: &Frame, (x, y): (u32, u32), i: usize) -> Gathered {
                 continue;
             }
             let taken = match edge {
-                false => same_surface(prev, j, &seen),
+                false => same_surface(prev, points, j, &seen),
                 true => mixed_tap(prev, j, guides, view, forward, (x, y)),
             };
             if !taken {
