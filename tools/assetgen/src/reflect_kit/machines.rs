@@ -51,7 +51,7 @@ pub fn fan_frame() -> Piece {
             orange,
             c - Vec3::new(0.04, 0.04, 0.0),
             c + Vec3::new(0.04, 0.04, 0.008),
-            0.003,
+            0.0,
             Uv::Planar(1.0),
         );
     }
@@ -67,7 +67,7 @@ pub fn fan_frame() -> Piece {
                 metal,
                 Vec3::new(-0.58, -0.012, 0.31),
                 Vec3::new(0.58, 0.012, 0.33),
-                0.004,
+                0.0,
                 Uv::Planar(1.0),
             );
         });
@@ -99,7 +99,7 @@ pub fn fan_rotor() -> Piece {
                 blade,
                 Vec3::new(-0.225, -0.08, -0.008),
                 Vec3::new(0.225, 0.08, 0.008),
-                0.006,
+                0.0,
                 Uv::Planar(1.0),
             );
         });
@@ -113,6 +113,8 @@ pub fn fan_rotor() -> Piece {
 
 /// A 0.5 m cargo crate centred at the origin (x, y, z ∈ [−0.25, 0.25]): painted steel panels
 /// set 2 cm into a frame of twelve dark metal edge bars, with an orange band round its middle.
+/// Small parts here (bars, tabs, blades) are sharp boxes: a bevel under a centimetre is below
+/// a traced pixel at the game's resolution and would cost 96 triangles each.
 pub fn cargo_crate() -> Piece {
     let (paint, metal, orange) = (0, 1, 2);
     let mut b = Builder::new(3);
@@ -129,7 +131,7 @@ pub fn cargo_crate() -> Piece {
             max[i] = min[i] + BAR;
             min[j] = if t < 0.0 { -H } else { H - BAR };
             max[j] = min[j] + BAR;
-            b.bevel_box(metal, min, max, 0.01, Uv::Planar(1.0));
+            b.bevel_box(metal, min, max, 0.0, Uv::Planar(1.0));
         }
     }
     for (min, max) in [
