@@ -11,7 +11,7 @@ use glam::Vec3;
 const REGENERATE: &str = "cargo run --release -p assetgen -- reflect-kit";
 
 /// Each piece's bounds (metres, the piece's own space), from the kit's specification.
-const BOUNDS: [(&str, [f32; 3], [f32; 3]); 25] = [
+const BOUNDS: [(&str, [f32; 3], [f32; 3]); 30] = [
     ("wall_8x4", [-4.0, 0.0, -0.2], [4.0, 4.0, 0.0]),
     ("wall_4x4", [-2.0, 0.0, -0.2], [2.0, 4.0, 0.0]),
     ("wall_4x4_door", [-2.0, 0.0, -0.2], [2.0, 4.0, 0.0]),
@@ -34,6 +34,12 @@ const BOUNDS: [(&str, [f32; 3], [f32; 3]); 25] = [
     ("railing_3", [-1.5, 0.0, -0.03], [1.5, 1.0, 0.03]),
     ("pillar", [-0.5, 0.0, -0.5], [0.5, 8.0, 0.5]),
     ("pipe_8", [-4.0, -0.14, -0.14], [4.0, 0.14, 0.14]),
+    ("fan_frame", [-0.7, -0.7, 0.0], [0.7, 0.7, 0.34]),
+    // Four blades to radius 0.55 on the X and Y axes; the hub is 0.14 m deep.
+    ("fan_rotor", [-0.55, -0.55, -0.07], [0.55, 0.55, 0.07]),
+    ("crate", [-0.25, -0.25, -0.25], [0.25, 0.25, 0.25]),
+    ("piston_sleeve", [-0.25, -0.25, 0.0], [0.25, 0.25, 0.6]),
+    ("piston_rod", [-0.18, -0.18, 0.1], [0.18, 0.18, 1.08]),
     ("sign_1", [-0.5, 0.0, -0.05], [0.5, 1.0, 0.0]),
     ("sign_2", [-0.5, 0.0, -0.05], [0.5, 1.0, 0.0]),
     ("sign_3", [-0.5, 0.0, -0.05], [0.5, 1.0, 0.0]),
@@ -218,6 +224,9 @@ fn ceilings_and_lights_emit() -> anyhow::Result<()> {
         "glass_cube",
         "wall_8x4",
         "floor_8x8",
+        "fan_rotor",
+        "crate",
+        "piston_rod",
     ] {
         assert_eq!(
             emissive_triangles(&load(piece)?),

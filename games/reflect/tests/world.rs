@@ -38,8 +38,9 @@ fn triangles(scene: &SceneDesc) -> (usize, std::collections::BTreeMap<Option<u32
     (total, emissive)
 }
 
-/// Triangles in the composed world, instances counted (measured 2026-12-06).
-const WORLD_TRIANGLES: usize = 243_140;
+/// Triangles in the composed world, instances counted (measured 2026-12-07: 243,140 before the
+/// chambers' machinery, fans, pistons and crates, added 26,760).
+const WORLD_TRIANGLES: usize = 269_900;
 /// Emissive triangles among them, every light group on.
 const WORLD_EMISSIVE: usize = 17_260;
 

@@ -140,6 +140,11 @@ pub fn pipe_grey() -> MaterialSpec {
     plain("pipe_grey", [0.45, 0.47, 0.5], 0.8, 0.35)
 }
 
+/// The cargo crate's painted steel: a muted teal.
+pub fn crate_paint() -> MaterialSpec {
+    plain("crate_paint", [0.06, 0.16, 0.19], 0.2, 0.55)
+}
+
 /// The face of chamber sign `number`: its base colour texture, and its digit glowing
 /// through the emissive texture.
 pub fn sign_face(number: u32) -> MaterialSpec {

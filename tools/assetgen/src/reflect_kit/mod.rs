@@ -7,10 +7,11 @@
 //! centre and its visible face looks towards +Z. Materials are baked into each piece.
 //! [`kit_files`] gives every file's bytes, deterministic (a test compares them with the
 //! committed files). Files: `mesh` (shape building), `materials` (palette), `textures`
-//! and `signs` (images), then one file per group of pieces.
+//! and `signs` (images), then one file per group of pieces (`machines`: fans, crate, piston).
 //! Must not: read anything from disk.
 
 mod devices;
+mod machines;
 pub mod materials;
 pub(crate) mod mesh;
 mod panels;
@@ -77,6 +78,11 @@ pub fn pieces() -> Vec<Piece> {
         props::railing(),
         props::pillar(),
         props::pipe(),
+        machines::fan_frame(),
+        machines::fan_rotor(),
+        machines::cargo_crate(),
+        machines::piston_sleeve(),
+        machines::piston_rod(),
     ];
     const SIGNS: [&str; signs::SIGN_COUNT as usize] =
         ["sign_1", "sign_2", "sign_3", "sign_4", "sign_5"];
