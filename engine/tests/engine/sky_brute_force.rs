@@ -133,10 +133,7 @@ fn views(sun_deg: f64, aerosol: Aerosol, haze: f32, paths: usize) -> anyhow::Res
         .par_iter()
         .enumerate()
         .map(|(i, &(e, a))| {
-            let seed = 0x5EED_0000
-                + 1000 * (sun_deg + 90.0) as u64
-                + i as u64
-                + seed_offset();
+            let seed = 0x5EED_0000 + 1000 * (sun_deg + 90.0) as u64 + i as u64 + seed_offset();
             let r = if sun_deg < 0.0 {
                 reference(
                     &s,
@@ -239,7 +236,8 @@ fn print_figures(name: &str, sun_deg: f64, views: &[View], paths: usize) {
                 (v.single_table / v.reference.single).to_array(),
                 (v.total_table / v.reference.total).to_array(),
                 (v.reference.stderr / v.reference.total).to_array(),
-                ((v.total_table - v.single_table) / (v.reference.total - v.reference.single)).to_array(),
+                ((v.total_table - v.single_table) / (v.reference.total - v.reference.single))
+                    .to_array(),
                 ((v.total_table - v.single_table) / v.total_table).to_array(),
             );
         }
