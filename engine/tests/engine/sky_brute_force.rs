@@ -13,15 +13,17 @@
 //! sky-view lookup interpolates the log of the radiance (a spline in elevation), the
 //! transmittance table holds the optical depth and the orders' table blends sun elevations
 //! geometrically, everything holds at 90°–2°; at −6° single scattering misses at two views (up
-//! to 3.7 %, a faint view near the edge of the planet's shadow) and the turbidity-3 totals at
-//! two (33–62 % above). With the sun below the horizon the reference uses the next-flight
-//! estimator (`sky_common::paths`), whose standard error at −6° is about half the collision
-//! estimator's at a sixteenth of the paths. So CI checks single scattering by day in the
-//! issue's band, all orders by day in a guard at the measured gap, and the issue's bands at
-//! 90°–2° on a lighter grid (4096 paths per view); the full grid with the exact bands, −6°
-//! included, is the `#[ignore]`d `tables_match_brute_force_in_the_issue_bands` (it prints the
-//! figures of `docs/ACCURACY.md`, "Brute force against the tables"). `SKY_BRUTE_FORCE_VERBOSE=1`
-//! prints every direction; `SKY_BRUTE_FORCE_SUNS=-6,2` runs only those suns of the full grid.
+//! to 3.7 %, a faint view near the edge of the planet's shadow) and the totals hold. With the
+//! sun below the horizon the reference uses the next-flight estimator (`sky_common::paths`),
+//! 8192 paths per view: with 2048 its heavy tail left two turbidity-3 views 33–62 % below the
+//! table within a standard error that claimed 5 %. So CI checks single scattering by day in
+//! the issue's band and at −6° in a guard at the measured gap, all orders by day in a guard at
+//! the measured gap, and the issue's bands at 90°–2° on a lighter grid (4096 paths per view);
+//! the full grid with the exact bands, −6° included, is the `#[ignore]`d
+//! `tables_match_brute_force_in_the_issue_bands` (it prints the figures of `docs/ACCURACY.md`,
+//! "Brute force against the tables"). `SKY_BRUTE_FORCE_VERBOSE=1` prints every direction;
+//! `SKY_BRUTE_FORCE_SUNS=-6,2` runs only those suns of the full grid,
+//! `SKY_BRUTE_FORCE_ATMOSPHERE=turbidity` one atmosphere, `SKY_BRUTE_FORCE_SEED=777` other paths.
 
 use candela::sky::{
     Aerosol, HAZE_TURBIDITY_3, Horizontal, PhysicalSky, SOLAR_IRRADIANCE, SkyTables,
@@ -34,8 +36,8 @@ use crate::sky_common::{Reference, reference};
 
 const DAY_DEG: [f64; 3] = [90.0, 30.0, 10.0];
 const ALL_DEG: [f64; 5] = [90.0, 30.0, 10.0, 2.0, -6.0];
-/// CI's lighter grid: −6° left out (single scattering misses at two views there, and the
-/// turbidity-3 totals at two: `docs/ACCURACY.md`).
+/// CI's lighter grid: −6° left out (single scattering misses at two views there, checked in a
+/// guard; a trustworthy reference of the totals costs 8192 paths per view: `docs/ACCURACY.md`).
 const LIGHTER_DEG: [f64; 4] = [90.0, 30.0, 10.0, 2.0];
 const DIRECTIONS: usize = 48;
 /// Nodes of the reference's quadrature (converged to 1e-4: `sky_brute_force_reference`).
@@ -50,8 +52,12 @@ pub const FLIGHT: Fineness = Fineness {
     sun_intervals: 16,
 };
 /// With the sun below the horizon the reference draws this many times fewer paths, each with the
-/// next-flight estimator (a march per vertex).
-const TWILIGHT_PATHS_DIVISOR: usize = 16;
+/// next-flight estimator (a march per vertex). 16 (2048 paths per view in the full test) was too
+/// few: the estimate is heavy-tailed at −6° (a rare path into the sunlit layer carries much of
+/// the light), so a view that missed those paths had a low mean *and* a small standard error;
+/// another seed moved turbidity 3's view 2 from 1.62 to 1.02 of the table and view 28 from 1.35
+/// to 0.66 (`docs/ACCURACY.md`, "Turbidity 3 at −6°").
+const TWILIGHT_PATHS_DIVISOR: usize = 4;
 /// The two atmospheres: (name, aerosols, haze).
 const ATMOSPHERES: [(&str, Aerosol, f32); 2] = [
     ("Earth preset", Aerosol::EARTH, 1.0),
@@ -73,6 +79,15 @@ fn directions() -> Vec<(f64, f64)> {
             (z.asin(), (golden * i as f64) % std::f64::consts::TAU)
         })
         .collect()
+}
+
+/// Added to every view's seed: `SKY_BRUTE_FORCE_SEED=777` draws other paths (a measurement of the
+/// reference's own spread; CI sets nothing).
+fn seed_offset() -> u64 {
+    std::env::var("SKY_BRUTE_FORCE_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0)
 }
 
 /// The worst channel's |table − reference| / reference (0 where both are 0: a view in the
@@ -105,7 +120,12 @@ fn views(sun_deg: f64, aerosol: Aerosol, haze: f32, paths: usize) -> anyhow::Res
         ground_albedo: [0.3; 3],
         ..PhysicalSky::default()
     };
-    let tables = SkyTables::build(&s)?;
+    // Without paths only single scattering is compared: the orders' table is not built.
+    let tables = if paths > 0 {
+        Some(SkyTables::build(&s)?)
+    } else {
+        None
+    };
     let single_tables = SkyTables::build_single_scattering(&s)?;
     let solar = SOLAR_IRRADIANCE.as_dvec3();
     let dirs = directions();
@@ -113,7 +133,7 @@ fn views(sun_deg: f64, aerosol: Aerosol, haze: f32, paths: usize) -> anyhow::Res
         .par_iter()
         .enumerate()
         .map(|(i, &(e, a))| {
-            let seed = 0x5EED_0000 + 1000 * (sun_deg + 90.0) as u64 + i as u64;
+            let seed = 0x5EED_0000 + 1000 * (sun_deg + 90.0) as u64 + i as u64 + seed_offset();
             let r = if sun_deg < 0.0 {
                 reference(
                     &s,
@@ -140,7 +160,10 @@ fn views(sun_deg: f64, aerosol: Aerosol, haze: f32, paths: usize) -> anyhow::Res
                     a.to_degrees()
                 ),
                 single_table: single_tables.radiance(d).as_dvec3(),
-                total_table: tables.radiance(d).as_dvec3(),
+                total_table: tables
+                    .as_ref()
+                    .map_or(single_tables.radiance(d), |t| t.radiance(d))
+                    .as_dvec3(),
                 reference: Reference {
                     single: r.single * solar,
                     total: r.total * solar,
@@ -207,11 +230,15 @@ fn print_figures(name: &str, sun_deg: f64, views: &[View], paths: usize) {
     if std::env::var_os("SKY_BRUTE_FORCE_VERBOSE").is_some() {
         for v in views {
             println!(
-                "  {}: table/reference single {:.4?}, total {:.4?} ± {:.4?}",
+                "  {}: table/reference single {:.4?}, total {:.4?} ± {:.4?}; orders ≥ 2 {:.4?} \
+                 (their share of the table {:.3?})",
                 v.label,
                 (v.single_table / v.reference.single).to_array(),
                 (v.total_table / v.reference.total).to_array(),
                 (v.reference.stderr / v.reference.total).to_array(),
+                ((v.total_table - v.single_table) / (v.reference.total - v.reference.single))
+                    .to_array(),
+                ((v.total_table - v.single_table) / v.total_table).to_array(),
             );
         }
     }
@@ -320,13 +347,46 @@ fn tables_match_brute_force_in_the_issue_bands_on_a_lighter_grid() -> anyhow::Re
     issue_bands(&LIGHTER_DEG, 4096, true)
 }
 
-/// The issue's exact bands at every sun elevation, both atmospheres, 32768 paths per view (a
-/// sixteenth of them, by next flight, at −6°); prints the figures of `docs/ACCURACY.md`. Fails
-/// at −6°: single scattering at two faint views near the edge of the planet's shadow (1.3–3.7 %;
-/// the sky-view table's rows are too far apart there even for the spline), and the turbidity-3
-/// totals at two views (33–62 % above the reference); slow.
+/// Single scattering at −6° (deterministic, a few seconds), both atmospheres, in a guard at the
+/// measured gap: the issue's 1 % at all but at most two views per atmosphere, none beyond 4 %,
+/// and a median of the worst channel's error of at most 0.3 %. Measured: the Earth preset one
+/// view out (view 9, 11.4° high, 157.6° from the sun, red 1.3 %; median 0.09 %), turbidity 3
+/// two (view 9, 3.7 %, and view 12, 1.2 %; median 0.13 %): faint views just above the edge of
+/// the planet's shadow, where the sky-view table's rows (about 1° apart) are too far apart for
+/// its spline. The totals at −6° are not in CI: a reference good to its own standard error
+/// needs 8192 next-flight paths per view there (about 80 s per atmosphere on two loaded cores).
 #[test]
-#[ignore = "known gap at -6 deg: single scattering at two faint views near the shadow's edge, turbidity-3 totals at two views (docs/ACCURACY.md); slow (2-4 min on two loaded cores); CI runs the lighter grid"]
+fn single_scattering_in_twilight_stays_within_the_measured_gap() -> anyhow::Result<()> {
+    let mut failures = Vec::new();
+    for (name, aerosol, haze) in ATMOSPHERES {
+        let v = views(-6.0, aerosol, haze, 0)?;
+        print_figures(name, -6.0, &v, 0);
+        let errors: Vec<f64> = v
+            .iter()
+            .map(|v| worst(v.single_table, v.reference.single))
+            .collect();
+        let out = errors.iter().filter(|e| **e > 0.01).count();
+        if out > 2 || max(&errors) > 0.04 || median(&errors) > 0.003 {
+            failures.push(format!(
+                "{name}: {out} views outside 1 %, max {:.2} %, median {:.3} %: {:#?}",
+                100.0 * max(&errors),
+                100.0 * median(&errors),
+                single_failures(&v)
+            ));
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
+    Ok(())
+}
+
+/// The issue's exact bands at every sun elevation, both atmospheres, 32768 paths per view (a
+/// quarter of them, by next flight, at −6°); prints the figures of `docs/ACCURACY.md`. Fails
+/// at −6°: single scattering at two faint views near the edge of the planet's shadow (1.3–3.7 %;
+/// the sky-view table's rows are too far apart there even for the spline). The totals hold
+/// there since the reference draws 8192 paths per view (with 2048, turbidity 3 failed at two
+/// views by the reference's own noise); slow.
+#[test]
+#[ignore = "known gap at -6 deg: single scattering at two faint views near the shadow's edge (docs/ACCURACY.md); slow (about 5 min on two loaded cores); CI runs the lighter grid and single scattering at -6 deg"]
 fn tables_match_brute_force_in_the_issue_bands() -> anyhow::Result<()> {
     issue_bands(&ALL_DEG, 32768, true)
 }
@@ -342,6 +402,10 @@ fn issue_bands(suns: &[f64], paths: usize, twilight_single: bool) -> anyhow::Res
     for (name, aerosol, haze) in ATMOSPHERES {
         for &sun_deg in suns {
             if only.as_ref().is_some_and(|o| !o.contains(&sun_deg)) {
+                continue;
+            }
+            // `SKY_BRUTE_FORCE_ATMOSPHERE=turbidity` runs one atmosphere (a measurement).
+            if std::env::var("SKY_BRUTE_FORCE_ATMOSPHERE").is_ok_and(|a| !name.starts_with(&a)) {
                 continue;
             }
             let v = views(sun_deg, aerosol, haze, paths)?;

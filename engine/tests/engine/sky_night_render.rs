@@ -2,13 +2,15 @@
 //! moon shows a disc whose radius, from its area, is 0.259° to a pixel; and a diffuse floor
 //! (ρ = 0.5) under the moon alone (night_sky 0: no stars nor airglow; the sun 18° below the
 //! horizon) has radiance ρ/π (E_moon T cos θ + E_sky), E_moon T the moon's irradiance after
-//! the air and E_sky the night sky-view table's horizontal irradiance (fine quadrature), within
-//! 4.5 standard errors of the pixel means.
+//! the air and E_sky the night sky-view table's horizontal irradiance (fine quadrature, the
+//! moonlit sky included), within 4.5 standard errors of the pixel means, in both tracers (the GPU
+//! one on lavapipe or a GPU).
 
 use candela::assets::{
     CameraDesc, Material, MaterialKind, Mesh, Model, Placement, RenderSettings, SceneDesc, SkyDesc,
 };
 use candela::render::cpu::CpuTracer;
+use candela::render::gpu::{GpuContext, GpuTracer};
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use candela::scene::RenderScene;
 use candela::sky::{MOON_ANGULAR_RADIUS_DEG, PhysicalSky, SkyTables};
@@ -65,6 +67,7 @@ fn render(
     desc: &SceneDesc,
     size: u32,
     spp: u32,
+    gpu: bool,
 ) -> anyhow::Result<(Vec<DVec3>, candela::layout::GpuFrameUniforms)> {
     let scene = RenderScene::build(desc);
     let settings = FrameSettings::new(size, size, spp, 11, &desc.render);
@@ -75,7 +78,11 @@ fn render(
         &settings,
         &scene.header(),
     );
-    let mut tracer = CpuTracer::new();
+    let mut tracer: Box<dyn Tracer> = if gpu {
+        Box::new(GpuTracer::new(GpuContext::headless()?, &scene)?)
+    } else {
+        Box::new(CpuTracer::new())
+    };
     tracer.render(&scene, &u)?;
     Ok((
         tracer.film()?.mean.iter().map(|p| p.as_dvec3()).collect(),
@@ -99,7 +106,7 @@ fn the_moon_disc_is_its_angular_size_to_a_pixel() -> anyhow::Result<()> {
     };
     let mut desc = SceneDesc::single(floor(10.0, -100.0), camera);
     desc.sky = SkyDesc::Physical(sky);
-    let (pixels, u) = render(&desc, SIZE, 16)?;
+    let (pixels, u) = render(&desc, SIZE, 16, false)?;
     let inside = Vec3::from(u.sun_radiance).y as f64;
     anyhow::ensure!(inside > 0.0, "the moon is not the primary disc");
     // Pixels more than half covered by the lit disc.
@@ -122,6 +129,17 @@ fn the_moon_disc_is_its_angular_size_to_a_pixel() -> anyhow::Result<()> {
 
 #[test]
 fn a_diffuse_floor_under_the_moon_alone_has_the_moons_irradiance() -> anyhow::Result<()> {
+    floor_under_the_moon(false)
+}
+
+/// The same floor on the GPU tracer: the moon disc's next-event estimate and the moonlit sky's
+/// WGSL lookup against the same quadrature.
+#[test]
+fn the_gpu_floor_under_the_moon_alone_has_the_moons_irradiance() -> anyhow::Result<()> {
+    floor_under_the_moon(true)
+}
+
+fn floor_under_the_moon(gpu: bool) -> anyhow::Result<()> {
     let sky = full_moon_night();
     let light = sky.moon_light()?.expect("a moon");
     let camera = CameraDesc {
@@ -139,7 +157,7 @@ fn a_diffuse_floor_under_the_moon_alone_has_the_moons_irradiance() -> anyhow::Re
         roulette_start: 4,
         ..Default::default()
     };
-    let (pixels, u) = render(&desc, 32, 64)?;
+    let (pixels, u) = render(&desc, 32, 64, gpu)?;
     anyhow::ensure!(u.sun_solid_angle > 0.0, "the moon must be the primary disc");
     let n = pixels.len() as f64;
     let mean = pixels.iter().copied().sum::<DVec3>() / n;
@@ -154,8 +172,9 @@ fn a_diffuse_floor_under_the_moon_alone_has_the_moons_irradiance() -> anyhow::Re
     let expected = (moon + sky_part) * (0.5 / std::f64::consts::PI);
     let z = (mean - expected).abs() / standard_error;
     println!(
-        "floor G {:.4e} expected G {:.4e} (moon {:.4e}, sky {:.4e}), standard error \
-         G {:.3e}, {z:.2} standard errors",
+        "{} tracer: floor G {:.4e} expected G {:.4e} (moon {:.4e}, sky {:.4e}), standard \
+         error G {:.3e}, {z:.2} standard errors",
+        if gpu { "GPU" } else { "CPU" },
         mean.y,
         expected.y,
         moon.y * 0.5 / std::f64::consts::PI,

@@ -393,8 +393,9 @@ fn sky_at_a_low_sun_error_pattern() -> anyhow::Result<()> {
 /// The calibration itself (a development aid; `--run-ignored all --no-capture`): bisects the
 /// haze on Mitsuba's diffuse-to-global ratio at 60°, then prints the solar irradiance per
 /// channel that gives Mitsuba's direct normal irradiance there (`SOLAR_IRRADIANCE` ×
-/// reference / ours). Rerun when the sky model changes; `HAZE_TURBIDITY_3` and
-/// `SOLAR_IRRADIANCE` then take the printed values.
+/// reference / ours), and the diffuse-to-global ratio at 10° that calibration would give. Rerun
+/// when the sky model changes; `HAZE_TURBIDITY_3` and `SOLAR_IRRADIANCE` then take the printed
+/// values.
 #[test]
 #[ignore = "development aid: recalibrates the haze and the solar irradiance (docs/ACCURACY.md)"]
 fn calibrate_haze_and_solar_irradiance_at_60_degrees() -> anyhow::Result<()> {
@@ -419,6 +420,26 @@ fn calibrate_haze_and_solar_irradiance_at_60_degrees() -> anyhow::Result<()> {
     println!(
         "haze {haze:.4}: DHI/GHI {:.4} (Mitsuba {ratio_ref:.4}); solar irradiance {solar:.4?}",
         ratio(&f, 60)
+    );
+    // What that calibration gives at 10° (the sky and the sun are linear in the solar
+    // irradiance per channel), against the constants in use.
+    let scale = solar / candela::sky::SOLAR_IRRADIANCE.as_dvec3();
+    let (_, now) = figures(10, HAZE_TURBIDITY_3)?;
+    let (_, low) = figures(10, haze)?;
+    let recalibrated = Figures {
+        dni: low.dni * scale,
+        dhi: low.dhi * scale,
+    };
+    let ratio_10 = number(&json(10)?, &["diffuse_to_global_ratio", "Y"])?;
+    println!(
+        "10°: DHI/GHI {:.4} with haze {HAZE_TURBIDITY_3}, {:.4} recalibrated (Mitsuba {ratio_10:.4}); \
+         DNI Y {:.4} → {:.4}, DHI Y {:.4} → {:.4}",
+        ratio(&now, 10),
+        ratio(&recalibrated, 10),
+        luminance(now.dni),
+        luminance(recalibrated.dni),
+        luminance(now.dhi),
+        luminance(recalibrated.dhi),
     );
     Ok(())
 }
