@@ -114,10 +114,12 @@ pub fn estimate(
             let c = y * w;
             let ill = &history.illumination[c..c + w];
             let z = &guides.z[c..c + w];
-            let spatial =
-                (0..w).any(|x| ill[x].w > 0.0 && ill[x].w < MIN_TEMPORAL_FRAMES && z[x] > 0.0);
-            if spatial {
-                spatial_row_simd(simd, planes, guides, y, sigma_z, sums);
+            // The columns that read the spatial estimate: from the first to the last such
+            // pixel (a camera turn uncovers a band at one side, a moved object its edges).
+            let short = |x: &usize| ill[*x].w > 0.0 && ill[*x].w < MIN_TEMPORAL_FRAMES && z[*x] > 0.0;
+            if let Some(lo) = (0..w).find(short) {
+                let hi = (lo..w).rev().find(short).map_or(lo + 1, |x| x + 1);
+                spatial_row_simd(simd, planes, guides, y, (lo, hi), sigma_z, sums);
             }
             for x in 0..w {
                 let h = ill[x];
@@ -151,15 +153,25 @@ dispatch!(
         h: &HistoryPlanes,
         g: &GuidePlanes,
         y: usize,
+        span: (usize, usize),
         sigma_z: f32,
         sums: &mut RowSums,
     )
 );
 
-/// The spatial estimate's sums for row `y`: `sums.w` the weights, `sums.r` the weighted
-/// luminance, `sums.g` the weighted squared luminance (7×7 taps in [`variance_pixel`]'s order).
+/// The spatial estimate's sums for row `y`'s columns `span.0..span.1` (the rest stay 0):
+/// `sums.w` the weights, `sums.r` the weighted luminance, `sums.g` the weighted squared
+/// luminance (7×7 taps in [`variance_pixel`]'s order; each column's sums are the same bits
+/// whatever the span).
 #[inline(always)]
-fn spatial_row(h: &HistoryPlanes, g: &GuidePlanes, y: usize, sigma_z: f32, sums: &mut RowSums) {
+fn spatial_row(
+    h: &HistoryPlanes,
+    g: &GuidePlanes,
+    y: usize,
+    (lo, hi): (usize, usize),
+    sigma_z: f32,
+    sums: &mut RowSums,
+) {
     let (w, rows) = (g.width as isize, g.height as isize);
     let c = y * g.width;
     let e = c + g.width;
@@ -172,7 +184,7 @@ fn spatial_row(h: &HistoryPlanes, g: &GuidePlanes, y: usize, sigma_z: f32, sums:
             continue;
         }
         for dx in -SPATIAL_RADIUS as isize..=SPATIAL_RADIUS as isize {
-            let (x0, x1) = ((-dx).max(0), w.min(w - dx));
+            let (x0, x1) = ((-dx).max(lo as isize), (w - dx).min(w).min(hi as isize));
             if x1 <= x0 {
                 continue;
             }
