@@ -8,7 +8,8 @@ use std::time::{Duration, SystemTime};
 
 use candela::assets::ConditionEntry;
 use candela::editor::{
-    Edit, EditorState, discard_recovery, find_recovery, recovery_path, restore_recovery,
+    Edit, EditorState, SaveError, base_recovery_path, discard_recovery, find_recovery,
+    recovery_path, restore_recovery,
 };
 use editor_common::{Scratch, assets};
 
@@ -79,5 +80,31 @@ fn a_recovery_file_of_a_level_that_is_gone_is_offered() -> anyhow::Result<()> {
     assert_eq!(restore_recovery(&path)?, state.doc);
     assert!(discard_recovery(&path)?);
     assert_eq!(find_recovery(&path), None);
+    Ok(())
+}
+
+#[test]
+fn a_recovery_file_that_cannot_be_removed_is_reported() -> anyhow::Result<()> {
+    let scratch = Scratch::new("recovery_blocked");
+    let path = scratch.path().join("first_person.ron");
+    std::fs::copy(
+        assets().join("test_scenes/platform/first_person.ron"),
+        &path,
+    )?;
+    // A folder where the base's recovery file would be: a recovery of a level with no base
+    // removes a stale one, and this one cannot be removed as a file.
+    let stale = base_recovery_path(&path);
+    std::fs::create_dir(&stale)?;
+    let state = EditorState::open(&path)?;
+    match state.write_recovery() {
+        Err(SaveError::Remove { path: p, .. }) => assert_eq!(p, stale),
+        other => panic!("expected the stale base recovery to be named, got {other:?}"),
+    }
+    assert!(stale.is_dir(), "left as it was");
+    // Discarding (after a save) says so too rather than reporting nothing there.
+    assert!(
+        discard_recovery(&path).is_err(),
+        "a folder is not a removed file"
+    );
     Ok(())
 }

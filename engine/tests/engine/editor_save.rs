@@ -177,9 +177,19 @@ fn saving_refuses_unresolved_references_and_names_each_item() -> anyhow::Result<
         index: 3,
         field: InstanceField::Model("no_such_model".into()),
     })?;
-    let Err(SaveError::Problems(problems)) = state.save(None) else {
+    let refused = state.save(None);
+    let message = refused.as_ref().err().map(|e| e.to_string());
+    let Err(SaveError::Problems(problems)) = refused else {
         panic!("the save was not refused");
     };
+    // The error (the status line) gives the count and the first problem.
+    assert_eq!(
+        message,
+        Some(format!(
+            "the level has 2 problem(s), the first: {}",
+            problems[0]
+        ))
+    );
     let items: Vec<_> = problems.iter().map(|p| p.item).collect();
     assert_eq!(
         items,
