@@ -116,7 +116,8 @@ pub fn estimate(
             let z = &guides.z[c..c + w];
             // The columns that read the spatial estimate: from the first to the last such
             // pixel (a camera turn uncovers a band at one side, a moved object its edges).
-            let short = |x: &usize| ill[*x].w > 0.0 && ill[*x].w < MIN_TEMPORAL_FRAMES && z[*x] > 0.0;
+            let short =
+                |x: &usize| ill[*x].w > 0.0 && ill[*x].w < MIN_TEMPORAL_FRAMES && z[*x] > 0.0;
             if let Some(lo) = (0..w).find(short) {
                 let hi = (lo..w).rev().find(short).map_or(lo + 1, |x| x + 1);
                 spatial_row_simd(simd, planes, guides, y, (lo, hi), sigma_z, sums);
