@@ -203,7 +203,9 @@ fn a_changed_instance_keeps_its_style_and_a_deleted_one_only_its_line() -> anyho
     let scratch = Scratch::new("minimal_style");
     let (mut state, old) = open_copy(&scratch, &assets().join(CHAMBER))?;
     // The last pillar is written with its light group before its transform.
-    let index = state.doc.level.instances.len() - 1;
+    let index = (state.doc.level.instances.iter())
+        .rposition(|i| i.model == "pillar" && i.light_group.is_some())
+        .expect("chamber 1 has a pillar in a light group");
     let mut t = state.doc.level.instances[index].transform;
     t.translation[2] = -14.5;
     t.rotation_deg[1] = 90.0;
