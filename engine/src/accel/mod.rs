@@ -70,6 +70,7 @@ pub(crate) mod tlas;
 mod upkeep;
 mod upkeep_deform;
 mod upkeep_instances;
+mod upkeep_lights;
 mod upkeep_materials;
 mod upkeep_report;
 

@@ -26,7 +26,7 @@ use crate::assets::{Material, Model};
 use crate::ecs::ModelHandle;
 use crate::layout::{GpuBvh8Node, GpuTriangle, GpuVertex};
 use crate::scene::Aabb;
-use crate::scene::lights::{LightTable, build_lights};
+use crate::scene::lights::build_lights;
 use crate::scene::materials::{pack_textures, to_gpu_material};
 use crate::scene::{RenderScene, mesh_vertices};
 use crate::scene::{SceneHeader, SceneWrite};
@@ -373,44 +373,7 @@ impl Upkeep {
     /// statistics. The scene is then what queries read.
     pub fn finish_frame(&mut self) -> (Vec<SceneWrite>, SceneHeader, UpkeepStats) {
         self.settle_queries();
-        if !self.lights_dirty && !self.lights_moved.is_empty() {
-            self.refit_lights();
-        }
-        self.lights_moved.clear();
-        if self.lights_dirty {
-            puffin::profile_scope!("light table");
-            let counts: Vec<u32> = self
-                .rows
-                .iter()
-                .map(|&(_, s)| self.meshes[s].triangles.len() as u32)
-                .collect();
-            let table = build_lights(
-                &self.scene.instances,
-                &counts,
-                &self.scene.triangles,
-                &self.scene.vertices,
-                &self.scene.materials,
-            );
-            self.push(SceneWrite::Lights {
-                first: 0,
-                data: table.lights.clone(),
-            });
-            self.push(SceneWrite::LightNodes {
-                first: 0,
-                data: table.tree.nodes.clone(),
-            });
-            self.push(SceneWrite::LightLookup {
-                first: 0,
-                data: table.tree.lookup.clone(),
-            });
-            self.scene.lights = LightTable {
-                lights: std::mem::take(&mut self.scene.lights.lights),
-                tree: std::mem::take(&mut self.scene.lights.tree),
-                ..table
-            };
-            self.stats.light_table_builds += 1;
-            self.lights_dirty = false;
-        }
+        self.finish_lights();
         self.scene.stats.instances = self.rows.len();
         self.scene.stats.lights = self.scene.lights.count as usize;
         let writes = std::mem::take(&mut self.pending);
@@ -422,31 +385,6 @@ impl Upkeep {
             .map(SceneWrite::bytes)
             .sum();
         (writes, self.scene.header(), stats)
-    }
-
-    /// Refits the light table and tree to the emissive rows moved this frame; marks the table
-    /// dirty (a rebuild follows) when a move was not rigid.
-    fn refit_lights(&mut self) {
-        puffin::profile_scope!("light refit");
-        let refit = crate::scene::light_refit::refit_lights(
-            &self.scene.lights,
-            &self.lights_moved,
-            &self.scene.instances,
-            &self.scene.triangles,
-            &self.scene.vertices,
-        );
-        let Some(refit) = refit else {
-            self.lights_dirty = true;
-            return;
-        };
-        use crate::scene::light_refit::LightRefit;
-        for (first, data) in LightRefit::runs(&refit.lights) {
-            self.push(SceneWrite::Lights { first, data });
-        }
-        for (first, data) in LightRefit::runs(&refit.nodes) {
-            self.push(SceneWrite::LightNodes { first, data });
-        }
-        self.stats.light_refits += 1;
     }
 
     /// The flattened scene, giving up the upkeep (for one-shot builds).

@@ -10,53 +10,20 @@
 //!   moving a grouped entity that emits nothing, touches neither.
 
 use candela::accel::Upkeep;
-use candela::assets::{Material, MaterialKind, Mesh, Model, Placement};
+use candela::assets::Model;
 use candela::layout::{GpuLight, INVALID, LIGHT_NODE_LEAF};
 use candela::render::cpu::light_tree::{pmf, sample};
 use candela::scene::RenderScene;
 use candela::scene::light_tree::leaf_of;
 use glam::{Mat4, Quat, Vec3};
 
-/// A 4×4 quad grid (32 triangles) in the xz plane, facing +Y, with a bump so that the normals
-/// differ.
+/// A 4×4 quad grid (32 triangles) with a bump, so that its triangles' normals differ.
 fn grid_model(emission: f32) -> Model {
-    let n = 4u32;
-    let mut positions = Vec::new();
-    let mut triangles = Vec::new();
-    for z in 0..=n {
-        for x in 0..=n {
-            let (fx, fz) = (x as f32 / n as f32 - 0.5, z as f32 / n as f32 - 0.5);
-            positions.push(Vec3::new(fx, 0.2 * (4.0 * fx).sin() * fz, fz));
-        }
+    let mut model = crate::work_report::grid_model(4, 1.0, emission);
+    for p in &mut model.meshes[0].positions {
+        p.y = 0.2 * (4.0 * p.x).sin() * p.z;
     }
-    for z in 0..n {
-        for x in 0..n {
-            let i = z * (n + 1) + x;
-            triangles.push([i, i + n + 1, i + 1]);
-            triangles.push([i + 1, i + n + 1, i + n + 2]);
-        }
-    }
-    let count = triangles.len();
-    Model {
-        name: "grid".into(),
-        meshes: vec![Mesh {
-            name: "grid".into(),
-            positions,
-            triangles,
-            triangle_materials: vec![0; count],
-            ..Default::default()
-        }],
-        materials: vec![Material {
-            kind: MaterialKind::Diffuse,
-            emission: Vec3::splat(emission),
-            ..Default::default()
-        }],
-        placements: vec![Placement {
-            mesh: 0,
-            model_from_mesh: Mat4::IDENTITY,
-        }],
-        ..Default::default()
-    }
+    model
 }
 
 fn points(l: &GpuLight) -> [Vec3; 3] {

@@ -28,8 +28,9 @@ use candela::render::RenderConfig;
 use candela::scene::RenderScene;
 use glam::{Mat4, Vec3};
 
-/// A `n × n` grid of quads, `size` metres wide, in the xz plane.
-fn grid_model(n: u32, size: f32, emission: f32) -> Model {
+/// A `n × n` grid of quads, `size` metres wide, in the xz plane, facing +Y; two-sided
+/// emission `emission` (also used by `upkeep_light_refit`).
+pub(crate) fn grid_model(n: u32, size: f32, emission: f32) -> Model {
     let mut positions = Vec::new();
     let mut triangles = Vec::new();
     for z in 0..=n {
