@@ -247,7 +247,7 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
 /// CPU seconds this process has run so far, all threads (user + system; Linux
 /// `/proc/self/stat`, in clock ticks of 1/100 s), or 0 where that cannot be read. On a machine
 /// shared with other work this counts only our own time, unlike the wall clock.
-fn cpu_seconds() -> f64 {
+pub(crate) fn cpu_seconds() -> f64 {
     let Ok(stat) = std::fs::read_to_string("/proc/self/stat") else {
         return 0.0;
     };

@@ -55,6 +55,7 @@ mod chart_reference;
 mod chart_scenes;
 mod chart_self_ref;
 mod denoise;
+mod denoise_frame;
 mod denoise_plot;
 mod denoise_reference;
 mod error;
@@ -112,6 +113,8 @@ enum Command {
     Rays(rays::RaysArgs),
     /// Rays per second of the CPU path tracer on a Reflect chamber's view, as the game renders it.
     ChamberRays(chamber_rays::ChamberRaysArgs),
+    /// The CPU denoise stage's time per frame on a Reflect chamber's view, as the game runs it.
+    DenoiseFrame(denoise_frame::DenoiseFrameArgs),
     /// Traversal of a Reflect chamber's two-level scene against its triangles merged into one
     /// BLAS, on the same rays.
     InstanceMerge(instance_merge::InstanceMergeArgs),
@@ -156,6 +159,7 @@ fn main() -> anyhow::Result<()> {
         Command::Memory(a) => memory::run(&a),
         Command::Rays(a) => rays::run(&a),
         Command::ChamberRays(a) => chamber_rays::run(&a),
+        Command::DenoiseFrame(a) => denoise_frame::run(&a),
         Command::InstanceMerge(a) => instance_merge::run(&a),
         Command::BounceBudget(a) => bounce_budget::run(&a),
         Command::Error(a) => error::run(&a),

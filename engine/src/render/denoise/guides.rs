@@ -14,8 +14,8 @@ use glam::{Vec3, Vec4};
 /// Instance id of a pixel that sees the sky.
 pub const NO_INSTANCE: u32 = u32::MAX;
 
-/// Per-pixel guides of one frame.
-#[derive(Clone, Debug, PartialEq)]
+/// Per-pixel guides of one frame (`Default`: 0×0).
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Guides {
     pub width: u32,
     pub height: u32,
@@ -37,6 +37,19 @@ pub struct Guides {
 }
 
 impl Guides {
+    /// Makes `self` a copy of `other`, reusing `self`'s buffers (no allocation once the sizes
+    /// have been seen: the denoiser keeps the previous frame's guides this way).
+    pub fn copy_from(&mut self, other: &Guides) {
+        self.width = other.width;
+        self.height = other.height;
+        self.normal.clone_from(&other.normal);
+        self.depth.clone_from(&other.depth);
+        self.albedo.clone_from(&other.albedo);
+        self.instance.clone_from(&other.instance);
+        self.emissive.clone_from(&other.emissive);
+        self.specular.clone_from(&other.specular);
+    }
+
     /// All sky: no surface anywhere, albedo 1.
     pub fn sky(width: u32, height: u32) -> Self {
         let n = width as usize * height as usize;

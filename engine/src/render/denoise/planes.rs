@@ -205,25 +205,37 @@ impl GuidePlanes {
             &mut self.dg,
             &mut self.db,
         ] {
-            plane.clear();
+            // Every value is written below: only the size is set.
             plane.resize(n, 0.0);
         }
-        for i in 0..n {
-            let z = if guides.emissive[i] {
-                -guides.depth[i]
-            } else {
-                guides.depth[i]
-            };
-            let g = normal_depth(guides.normal[i].extend(z));
-            self.nx[i] = g.x;
-            self.ny[i] = g.y;
-            self.nz[i] = g.z;
-            self.z[i] = g.w;
-            let d = demodulator(guides.albedo[i]);
-            self.dr[i] = d.x;
-            self.dg[i] = d.y;
-            self.db[i] = d.z;
-        }
+        let w1 = w.max(1);
+        (self.nx.par_chunks_mut(w1))
+            .zip(self.ny.par_chunks_mut(w1))
+            .zip(self.nz.par_chunks_mut(w1))
+            .zip(self.z.par_chunks_mut(w1))
+            .zip(self.dr.par_chunks_mut(w1))
+            .zip(self.dg.par_chunks_mut(w1))
+            .zip(self.db.par_chunks_mut(w1))
+            .enumerate()
+            .for_each(|(y, ((((((nx, ny), nz), zs), dr), dg), db))| {
+                for x in 0..nx.len() {
+                    let i = y * w + x;
+                    let z = if guides.emissive[i] {
+                        -guides.depth[i]
+                    } else {
+                        guides.depth[i]
+                    };
+                    let g = normal_depth(guides.normal[i].extend(z));
+                    nx[x] = g.x;
+                    ny[x] = g.y;
+                    nz[x] = g.z;
+                    zs[x] = g.w;
+                    let d = demodulator(guides.albedo[i]);
+                    dr[x] = d.x;
+                    dg[x] = d.y;
+                    db[x] = d.z;
+                }
+            });
         let z = &self.z;
         self.gx
             .par_chunks_mut(w.max(1))

@@ -94,8 +94,26 @@ pub fn reproject(
     view: &View,
     world_from_object: &[Affine3A],
 ) -> (History, ReprojectStats) {
+    let mut out = History::default();
+    let mut points = Vec::new();
+    let frame = (prev, guides, view, world_from_object);
+    let stats = reproject_into(history, frame, &mut out, &mut points);
+    (out, stats)
+}
+
+/// [`reproject`] into `out` (resized; every pixel written), with `points` as scratch: the
+/// denoiser keeps both between frames, so a frame allocates nothing here (fresh allocations
+/// of a few MB a frame were page faults on the render thread's serial path).
+pub fn reproject_into(
+    history: &History,
+    (prev, guides, view, world_from_object): (&PrevFrame, &Guides, &View, &[Affine3A]),
+    out: &mut History,
+    points: &mut Vec<Vec3>,
+) -> ReprojectStats {
     let (w, h) = (guides.width, guides.height);
-    let mut out = History::new(w, h);
+    let n = w as usize * h as usize;
+    out.width = w;
+    out.height = h;
     if history.width != prev.view.width
         || history.height != prev.view.height
         || !prev.guides.is_consistent()
@@ -104,18 +122,24 @@ pub fn reproject(
         || w == 0
         || h == 0
     {
-        let n = w as usize * h as usize;
-        return (out, ReprojectStats { kept: 0, reset: n });
+        *out = History::new(w, h);
+        return ReprojectStats { kept: 0, reset: n };
     }
+    // Every pixel is written below: only the sizes are set here.
+    out.illumination.resize(n, Vec4::ZERO);
+    out.moments.resize(n, Vec4::ZERO);
     // Each instance's motion, once per frame rather than once per pixel, both ways.
     let moved = motions(&prev.world_from_object, world_from_object);
     let forward: Vec<Affine3A> = moved.iter().map(|m| m.inverse()).collect();
     // Every previous pixel's guide point relative to the previous camera, once per frame
     // rather than once per tap (the same arithmetic, so the same bits).
     let pw = prev.view.width as usize;
-    let points: Vec<Vec3> = (prev.guides.depth.par_iter().enumerate())
-        .map(|(j, &depth)| prev.view.sample_direction((j % pw) as u32, (j / pw) as u32) * depth)
-        .collect();
+    points.resize(prev.guides.depth.len(), Vec3::ZERO);
+    (points.par_iter_mut().zip(prev.guides.depth.par_iter()))
+        .enumerate()
+        .for_each(|(j, (p, &depth))| {
+            *p = prev.view.sample_direction((j % pw) as u32, (j / pw) as u32) * depth;
+        });
     let with_albedo = history.albedo.len() == history.illumination.len()
         && history.normal_depth.len() == history.illumination.len();
     let frame = Frame {
@@ -125,18 +149,17 @@ pub fn reproject(
         view,
         moved: &moved,
         forward: &forward,
-        points: &points,
+        points,
         with_albedo,
     };
     let row = w as usize;
-    let n = out.illumination.len();
     let rows = out
         .illumination
         .par_chunks_mut(row)
         .zip(out.moments.par_chunks_mut(row));
     let kept: usize = if with_albedo {
-        out.albedo = vec![Vec4::ONE; n];
-        out.normal_depth = vec![Vec4::ZERO; n];
+        out.albedo.resize(n, Vec4::ONE);
+        out.normal_depth.resize(n, Vec4::ZERO);
         let extra = out
             .albedo
             .par_chunks_mut(row)
@@ -146,17 +169,16 @@ pub fn reproject(
             .map(|(y, ((il, mo), (al, nd)))| frame.row(y as u32, il, mo, Some((al, nd))))
             .sum()
     } else {
+        out.albedo.clear();
+        out.normal_depth.clear();
         rows.enumerate()
             .map(|(y, (il, mo))| frame.row(y as u32, il, mo, None))
             .sum()
     };
-    (
-        out,
-        ReprojectStats {
-            kept,
-            reset: n - kept,
-        },
-    )
+    ReprojectStats {
+        kept,
+        reset: n - kept,
+    }
 }
 
 /// One frame's reprojection inputs, shared by its rows.

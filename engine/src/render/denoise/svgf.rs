@@ -13,11 +13,12 @@
 //! Must not: trace rays or touch the tracer's film.
 
 use glam::{Affine3A, Vec3, Vec4};
+use rayon::prelude::*;
 
 use super::atrous::{Pass, filter};
 use super::guides::Guides;
 use super::planes::{ColourPlanes, GuidePlanes};
-use super::reproject::{PrevFrame, ReprojectStats, reproject};
+use super::reproject::{PrevFrame, ReprojectStats, reproject_into};
 use super::temporal::{History, Reprojection, accumulate, accumulate_albedo};
 use super::variance::{HistoryPlanes, estimate};
 use super::view::View;
@@ -157,25 +158,30 @@ impl Svgf {
             self.history.albedo.clear();
             self.history.normal_depth.clear();
         }
-        let (surface, normal_depth): (Vec<Vec4>, Vec<Vec4>) = match jittered {
-            true => (
-                (guides.albedo.iter().zip(&guides.emissive))
-                    .map(|(a, &e)| a.extend(if e { 1.0 } else { 0.0 }))
-                    .collect(),
-                (guides.normal.iter().zip(&guides.depth))
-                    .map(|(n, &z)| n.extend(z))
-                    .collect(),
-            ),
-            false => (Vec::new(), Vec::new()),
-        };
-        let stats = match self.prev.take() {
+        // This frame's (albedo, emissive) and (normal, depth), into buffers kept between frames.
+        let s = &mut self.scratch;
+        if jittered {
+            let n = guides.albedo.len();
+            s.surface.resize(n, Vec4::ZERO);
+            s.normal_depth.resize(n, Vec4::ZERO);
+            (s.surface.par_iter_mut().zip(s.normal_depth.par_iter_mut()))
+                .zip(guides.albedo.par_iter().zip(guides.emissive.par_iter()))
+                .zip(guides.normal.par_iter().zip(guides.depth.par_iter()))
+                .for_each(|(((a, nd), (al, &e)), (n, &z))| {
+                    *a = al.extend(if e { 1.0 } else { 0.0 });
+                    *nd = n.extend(z);
+                });
+        }
+        let prev = self.prev.take();
+        let stats = match &prev {
             Some(prev) if !restart => {
-                let (moved, stats) =
-                    reproject(&self.history, &prev, guides, &view, &world_from_object);
-                self.history = moved;
+                let inputs = (prev, guides, &view, world_from_object.as_slice());
+                let stats = reproject_into(&self.history, inputs, &mut s.spare, &mut s.points);
+                std::mem::swap(&mut self.history, &mut s.spare);
                 if jittered {
                     let moved = Reprojection::Moved;
-                    accumulate_albedo(&mut self.history, &surface, &normal_depth, blend, moved);
+                    let (surface, nd) = (&s.surface, &s.normal_depth);
+                    accumulate_albedo(&mut self.history, surface, nd, blend, moved);
                 }
                 accumulate(&mut self.history, frame, albedo, blend, Reprojection::Moved);
                 Some(stats)
@@ -183,7 +189,8 @@ impl Svgf {
             _ => {
                 if jittered {
                     let same = Reprojection::Identity;
-                    accumulate_albedo(&mut self.history, &surface, &normal_depth, blend, same);
+                    let (surface, nd) = (&s.surface, &s.normal_depth);
+                    accumulate_albedo(&mut self.history, surface, nd, blend, same);
                 }
                 accumulate(
                     &mut self.history,
@@ -195,37 +202,39 @@ impl Svgf {
                 None
             }
         };
-        self.prev = Some(PrevFrame {
+        // The previous frame's buffers are reused for this one's copy.
+        let mut kept = prev.unwrap_or_else(|| PrevFrame {
             view,
-            guides: guides.clone(),
-            world_from_object,
+            guides: Guides::default(),
+            world_from_object: Vec::new(),
         });
+        kept.view = view;
+        kept.guides.copy_from(guides);
+        kept.world_from_object = world_from_object;
+        self.prev = Some(kept);
         if jittered
             && self.history.albedo.len() == guides.albedo.len()
             && self.history.normal_depth.len() == guides.depth.len()
         {
             // The filter sees the pixels' means over their frames: albedo, normal and depth, and
             // emissive where most of the frames' guides were.
-            let mut mean = guides.clone();
-            for ((a, e), s) in mean
-                .albedo
-                .iter_mut()
-                .zip(mean.emissive.iter_mut())
-                .zip(&self.history.albedo)
-            {
-                *a = s.truncate();
-                *e = s.w >= 0.5;
-            }
-            for ((n, z), nd) in mean
-                .normal
-                .iter_mut()
-                .zip(mean.depth.iter_mut())
-                .zip(&self.history.normal_depth)
-            {
-                *n = nd.truncate().normalize_or_zero();
-                *z = nd.w;
-            }
-            return Ok((self.filter_history(&mean), stats));
+            let mut mean = std::mem::take(&mut self.scratch.mean);
+            mean.copy_from(guides);
+            (mean.albedo.par_iter_mut().zip(mean.emissive.par_iter_mut()))
+                .zip(self.history.albedo.par_iter())
+                .for_each(|((a, e), s)| {
+                    *a = s.truncate();
+                    *e = s.w >= 0.5;
+                });
+            (mean.normal.par_iter_mut().zip(mean.depth.par_iter_mut()))
+                .zip(self.history.normal_depth.par_iter())
+                .for_each(|((n, z), nd)| {
+                    *n = nd.truncate().normalize_or_zero();
+                    *z = nd.w;
+                });
+            let film = self.filter_history(&mean);
+            self.scratch.mean = mean;
+            return Ok((film, stats));
         }
         Ok((self.filter_history(guides), stats))
     }
@@ -292,6 +301,15 @@ impl Svgf {
 /// its output.
 #[derive(Clone, Debug, Default)]
 struct Scratch {
+    /// The reprojected history's buffers (swapped with the history each frame) and the
+    /// previous pixels' guide points.
+    spare: History,
+    points: Vec<Vec3>,
+    /// This frame's (albedo, emissive) and (normal, depth) for the albedo history.
+    surface: Vec<Vec4>,
+    normal_depth: Vec<Vec4>,
+    /// The guides the filter sees with jittered guides (their means over the frames).
+    mean: Guides,
     guides: GuidePlanes,
     history: HistoryPlanes,
     a: ColourPlanes,

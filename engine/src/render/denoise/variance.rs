@@ -100,12 +100,15 @@ pub fn estimate(
     let w = guides.width;
     let n = w * guides.height;
     out.resize(n);
-    scratch.lum.clear();
-    scratch.len.clear();
-    for h in &history.illumination {
-        scratch.lum.push(luminance(h.truncate()));
-        scratch.len.push(h.w);
-    }
+    let m = history.illumination.len();
+    scratch.lum.resize(m, 0.0);
+    scratch.len.resize(m, 0.0);
+    (scratch.lum.par_iter_mut().zip(scratch.len.par_iter_mut()))
+        .zip(history.illumination.par_iter())
+        .for_each(|((lum, len), h)| {
+            *lum = luminance(h.truncate());
+            *len = h.w;
+        });
     let planes = &*scratch;
     let simd = Simd::detect();
     out.rows_mut(w).for_each_init(
