@@ -1,5 +1,5 @@
-// One variance-guided à-trous pass (twin: engine/src/render/denoise/atrous.rs): a 5×5
-// B3-spline kernel with holes of du.step pixels, taps weighted by depth, normal and luminance;
+// One variance-guided à-trous pass (twin: engine/src/render/denoise/atrous.rs): a 3×3 Gaussian
+// (du.radius 1) or 5×5 B3-spline (du.radius 2) kernel with holes of du.step pixels, taps weighted by depth, normal and luminance;
 // the variance filtered with the squared weights. du.remodulate = 1 on the last pass: rgb ×
 // albedo, and a pixel still without a sample becomes 0. Entry point denoise_atrous.
 
@@ -46,11 +46,12 @@ fn atrous_of(x: i32, y: i32) -> vec4<f32> {
             lum_scale = du.sigma_l * sqrt(v) + LUMINANCE_EPS;
         }
         let step = i32(du.step);
+        let r = i32(du.radius);
         var sum_c = vec3<f32>(0.0);
         var sum_v = 0.0;
         var sum_w = 0.0;
-        for (var dy = -2; dy <= 2; dy++) {
-            for (var dx = -2; dx <= 2; dx++) {
+        for (var dy = -r; dy <= r; dy++) {
+            for (var dx = -r; dx <= r; dx++) {
                 let qx = x + dx * step;
                 let qy = y + dy * step;
                 if !inside(qx, qy) {
@@ -60,7 +61,7 @@ fn atrous_of(x: i32, y: i32) -> vec4<f32> {
                 if row.w < 0.0 {
                     continue;
                 }
-                let k = kernel(dx) * kernel(dy);
+                let k = atrous_tap(dx, r) * atrous_tap(dy, r);
                 var w = k;
                 if dx != 0 || dy != 0 {
                     let q = guide_at(qx, qy);

@@ -550,7 +550,8 @@ const _: () = assert!(size_of::<GpuPresentUniforms>() == 32);
 /// Uniforms of one denoiser pass (`shaders/denoise_*.wgsl`, render thread): the image size,
 /// the à-trous step in pixels, whether this pass remodulates (1: the last à-trous pass), the
 /// new frame's blend factor (temporal pass; 1 restarts) and the edge-stopping scales σ_z
-/// (depth) and σ_l (luminance). Twin of `render::denoise`'s `Pass` and `SvgfParams`. 32 bytes.
+/// (depth) and σ_l (luminance), and the à-trous kernel's radius in taps (1: 3×3, 2: 5×5). Twin of
+/// `render::denoise`'s `Pass` and `SvgfParams`. 32 bytes.
 #[repr(C, align(16))]
 #[derive(Clone, Copy, Debug, Default, Pod, Zeroable, PartialEq)]
 pub struct GpuDenoiseUniforms {
@@ -561,7 +562,7 @@ pub struct GpuDenoiseUniforms {
     pub blend: f32,
     pub sigma_z: f32,
     pub sigma_l: f32,
-    pub _padding: u32,
+    pub radius: u32,
 }
 const _: () = assert!(size_of::<GpuDenoiseUniforms>() == 32);
 

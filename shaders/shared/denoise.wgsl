@@ -57,6 +57,15 @@ fn kernel(i: i32) -> f32 {
 }
 
 // The 3×3 Gaussian per axis, by offset −1…1.
+// The à-trous kernel per axis at tap offset i: radius 1 the 3×3 Gaussian, 2 the 5×5 B3 spline
+// (twin: weights.rs `atrous_tap`).
+fn atrous_tap(i: i32, radius: i32) -> f32 {
+    if radius == 1 {
+        return gauss3(i);
+    }
+    return kernel(i);
+}
+
 fn gauss3(i: i32) -> f32 {
     if i == 0 {
         return 0.5;

@@ -247,7 +247,7 @@ struct GpuDenoiseUniforms {
     blend: f32,
     sigma_z: f32,
     sigma_l: f32,
-    _padding: u32,
+    radius: u32,
 }
 
 struct GpuReprojectUniforms {

@@ -191,7 +191,7 @@ fn rust_layouts() -> Vec<RustLayout> {
             blend,
             sigma_z,
             sigma_l,
-            _padding
+            radius
         }),
         rust_layout!(GpuReprojectUniforms {
             camera_position,

@@ -80,6 +80,9 @@ pub struct RenderConfig {
     /// (`denoise::reproject_edge`; `docs/ACCURACY.md`). Off in [`RenderConfig::cpu`], which
     /// tests and tools start from.
     pub first_hit_guides: bool,
+    /// The denoiser's à-trous kernels (`denoise::AtrousKernel`; the default is the 5×5 B3
+    /// spline on every pass, `docs/PERFORMANCE.md` "The à-trous kernel").
+    pub atrous_kernel: super::denoise::AtrousKernel,
     /// How the physical sky's table follows a moving sun: `Blocking` (captures, tests: the
     /// table always matches the commit) or `Background` (games in play: rebuilt on a worker
     /// thread while frames go on; `scene::SkyTable`).
@@ -103,6 +106,7 @@ impl RenderConfig {
             light_sampling: None,
             indirect_every: None,
             first_hit_guides: false,
+            atrous_kernel: Default::default(),
             sky_rebuild: crate::scene::SkyRebuild::Blocking,
         }
     }
@@ -217,9 +221,12 @@ fn run(
     let mut converge = Converge::new(config.converge);
     let mut scaling = Scaling::new(config.spp, config.scaling);
     let mut output = (config.width, config.height);
-    let mut denoiser = config
-        .denoise
-        .then(|| DenoiseStage::new(SvgfParams::default()));
+    let mut denoiser = config.denoise.then(|| {
+        DenoiseStage::new(SvgfParams {
+            kernel: config.atrous_kernel,
+            ..SvgfParams::default()
+        })
+    });
     while let Ok(mut commit) = commits.recv() {
         // Profiling (the F5 view): one scope per commit, opened after the wait.
         puffin::profile_scope!("render frame");

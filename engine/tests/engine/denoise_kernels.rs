@@ -15,13 +15,19 @@ use crate::denoise_common;
 
 use candela::render::denoise::weights::demodulator;
 use candela::render::denoise::{
-    Guides, History, Svgf, SvgfParams, atrous_pixel, temporal_pixel, variance_pixel,
+    AtrousKernel, Guides, History, Svgf, SvgfParams, atrous_pixel, temporal_pixel, variance_pixel,
 };
 use denoise_common::{Cornell, Noise, flat_guides};
 use glam::{Vec3, Vec4};
 
 /// The denoiser built from the per-pixel functions, one pixel at a time (a still camera).
-fn reference(history: &mut History, frame: &[Vec3], guides: &Guides, blend: f32) -> Vec<Vec3> {
+fn reference(
+    history: &mut History,
+    frame: &[Vec3],
+    guides: &Guides,
+    blend: f32,
+    params: SvgfParams,
+) -> Vec<Vec3> {
     let (w, h) = (guides.width, guides.height);
     if history.width != w || history.height != h {
         *history = History::new(w, h);
@@ -33,7 +39,6 @@ fn reference(history: &mut History, frame: &[Vec3], guides: &Guides, blend: f32)
     }
     let nd = guides.packed_normal_depth();
     let albedo = guides.packed_albedo();
-    let params = SvgfParams::default();
     let pixels = || (0..h as i32).flat_map(move |y| (0..w as i32).map(move |x| (x, y)));
     let mut a: Vec<Vec4> = pixels()
         .map(|(x, y)| {
@@ -67,14 +72,30 @@ fn assert_close(what: &str, kernels: &[Vec3], reference: &[Vec3]) {
     eprintln!("{what}: worst difference {worst:.4} of the tolerance");
 }
 
+/// Every à-trous kernel choice, each against its per-pixel reference.
 fn compare(what: &str, frames: &[Vec<Vec3>], guides: &Guides) -> anyhow::Result<()> {
-    let mut svgf = Svgf::new(SvgfParams::default());
-    let mut history = History::default();
-    for (k, frame) in frames.iter().enumerate() {
-        let blend = 1.0 / (k + 1) as f32;
-        let out = svgf.denoise(frame, guides, blend)?;
-        let expected = reference(&mut history, frame, guides, blend);
-        assert_close(&format!("{what} frame {k}"), &out.mean, &expected);
+    let kernels = [
+        AtrousKernel::B3Spline5x5,
+        AtrousKernel::Gauss3x3,
+        AtrousKernel::B3ThenGauss3x3,
+    ];
+    for kernel in kernels {
+        let params = SvgfParams {
+            kernel,
+            ..SvgfParams::default()
+        };
+        let mut svgf = Svgf::new(params);
+        let mut history = History::default();
+        for (k, frame) in frames.iter().enumerate() {
+            let blend = 1.0 / (k + 1) as f32;
+            let out = svgf.denoise(frame, guides, blend)?;
+            let expected = reference(&mut history, frame, guides, blend, params);
+            assert_close(
+                &format!("{what} {kernel:?} frame {k}"),
+                &out.mean,
+                &expected,
+            );
+        }
     }
     Ok(())
 }

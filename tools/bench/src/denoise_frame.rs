@@ -18,7 +18,7 @@ use std::hash::{DefaultHasher, Hash, Hasher};
 use std::time::Instant;
 
 use candela::render::cpu::CpuTracer;
-use candela::render::denoise::SvgfParams;
+use candela::render::denoise::{AtrousKernel, SvgfParams};
 use candela::render::{DenoiseStage, Tracer, jitter};
 use clap::Parser;
 use glam::{Quat, Vec3};
@@ -49,6 +49,19 @@ pub struct DenoiseFrameArgs {
     /// Camera yaw per frame in degrees (0: a still view).
     #[arg(long, default_value_t = 0.0)]
     pub turn_degrees: f32,
+    /// The à-trous kernels: `5x5` (the default), `3x3` or `5x5-then-3x3`.
+    #[arg(long, default_value = "5x5")]
+    pub atrous_kernel: String,
+}
+
+/// `--atrous-kernel`'s value as the denoiser's kernel choice.
+pub fn parse_kernel(name: &str) -> anyhow::Result<AtrousKernel> {
+    match name {
+        "5x5" => Ok(AtrousKernel::B3Spline5x5),
+        "3x3" => Ok(AtrousKernel::Gauss3x3),
+        "5x5-then-3x3" => Ok(AtrousKernel::B3ThenGauss3x3),
+        other => anyhow::bail!("--atrous-kernel {other}: expected 5x5, 3x3 or 5x5-then-3x3"),
+    }
 }
 
 /// Yaws the uniforms' camera about world Y by `degrees`.
@@ -80,15 +93,25 @@ pub fn run(args: &DenoiseFrameArgs) -> anyhow::Result<()> {
         .num_threads(threads)
         .build()?;
     println!(
-        "chamber {} at its file's camera, {}×{}, method {:#x}, turn {}° per frame, {} threads",
-        args.chamber, base.width, base.height, base.method, args.turn_degrees, threads
+        "chamber {} at its file's camera, {}×{}, method {:#x}, turn {}° per frame, {} threads, \
+         à-trous {}",
+        args.chamber,
+        base.width,
+        base.height,
+        base.method,
+        args.turn_degrees,
+        threads,
+        args.atrous_kernel
     );
     println!(
         "| round | frames timed | denoise ms (median) | min | max | CPU ms per frame | trace ms (median) | films hash |\n|---:|---:|---:|---:|---:|---:|---:|---|"
     );
     let mut tracer = CpuTracer::new();
     for round in 0..args.rounds {
-        let mut stage = DenoiseStage::new(SvgfParams::default());
+        let mut stage = DenoiseStage::new(SvgfParams {
+            kernel: parse_kernel(&args.atrous_kernel)?,
+            ..SvgfParams::default()
+        });
         let mut u = base;
         let (mut ms, mut trace_ms, mut cpu_total) = (Vec::new(), Vec::new(), 0.0);
         let mut hasher = DefaultHasher::new();

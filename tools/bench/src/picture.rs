@@ -95,7 +95,15 @@ pub struct PictureArgs {
     /// sRGB change summed over the channels, ×4, white = large).
     #[arg(long)]
     pub dump_dir: Option<PathBuf>,
+    /// The denoiser's à-trous kernels for every denoised configuration: `5x5` (the default),
+    /// `3x3` or `5x5-then-3x3` (`denoise::AtrousKernel`).
+    #[arg(long, default_value = "5x5")]
+    pub atrous_kernel: String,
 }
+
+/// The à-trous kernels `--atrous-kernel` chose (set once by [`run`]).
+pub static ATROUS_KERNEL: std::sync::OnceLock<candela::render::denoise::AtrousKernel> =
+    std::sync::OnceLock::new();
 
 /// One compared frame.
 #[derive(Clone, Debug)]
@@ -378,6 +386,7 @@ pub fn measure(
 }
 
 pub fn run(args: &PictureArgs) -> anyhow::Result<()> {
+    let _ = ATROUS_KERNEL.set(super::denoise_frame::parse_kernel(&args.atrous_kernel)?);
     let (path, root) = reflect::cli::locate(None)?;
     let world = ReflectWorld::load(&path, &root)?;
     let replays = root.path().join("reflect/replays");

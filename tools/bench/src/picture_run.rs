@@ -146,6 +146,9 @@ pub fn play(
         temporal_upscale: (config.upscale > 1).then_some(config.upscale),
         indirect_every: (config.indirect_every > 1).then_some(config.indirect_every),
         first_hit_guides: config.first_hit_guides,
+        atrous_kernel: *super::picture::ATROUS_KERNEL
+            .get()
+            .unwrap_or(&Default::default()),
         ..RenderConfig::cpu(config.width, config.height)
     };
     let wanted = refs.lock().expect("references lock").wanted.clone();

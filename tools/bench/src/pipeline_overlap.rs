@@ -47,6 +47,7 @@ fn engine(desc: &PlayableLevel, spp: u32) -> anyhow::Result<Engine> {
         light_sampling: None,
         indirect_every: None,
         first_hit_guides: false,
+        atrous_kernel: Default::default(),
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -232,6 +232,7 @@ pub fn run(args: &ViewArgs, stop: Arc<AtomicBool>) -> anyhow::Result<WindowRepor
         light_sampling: None,
         indirect_every: None,
         first_hit_guides: true,
+        atrous_kernel: Default::default(),
         sky_rebuild: candela::scene::SkyRebuild::Background,
         temporal_upscale: None,
     };

@@ -184,6 +184,7 @@ fn run_policy(
         light_sampling: None,
         indirect_every: None,
         first_hit_guides: false,
+        atrous_kernel: Default::default(),
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

@@ -207,6 +207,7 @@ pub fn run_script(
         light_sampling: options.light_sampling,
         indirect_every: None,
         first_hit_guides: false,
+        atrous_kernel: Default::default(),
         sky_rebuild: crate::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     };

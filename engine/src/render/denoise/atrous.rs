@@ -1,5 +1,6 @@
 //! One variance-guided à-trous wavelet pass (Schied et al. 2017, §4.4; Dammertz et al. 2010;
-//! twin: `shaders/denoise_atrous.wgsl`): a 5×5 B3-spline kernel with holes of `step` pixels,
+//! twin: `shaders/denoise_atrous.wgsl`): a 3×3 Gaussian or 5×5 B3-spline kernel (`radius` 1
+//! or 2, `weights::atrous_tap`) with holes of `step` pixels,
 //! each tap weighted by depth, normal and luminance (σ_l·√(3×3-prefiltered variance)); the
 //! variance is filtered with the squared weights.
 //!
@@ -9,7 +10,7 @@
 //! it is the centre. Sky pixels (no guide) pass unchanged. The last pass remodulates: rgb ×
 //! albedo, and a pixel still without a sample becomes 0, so nothing non-finite leaves.
 //! [`atrous_pixel`] is the per-pixel reference (the WGSL twin's shape); [`filter`] computes the
-//! same a row at a time over planes (`planes`), the 5×5 taps as loops over the row that
+//! same a row at a time over planes (`planes`), the taps as loops over the row that
 //! vectorise. Render thread, rows on rayon's pool.
 //! Must not: blend over time.
 
@@ -18,7 +19,8 @@ use rayon::prelude::*;
 
 use super::planes::{ColourPlanes, GuidePlanes, OutRow, RowSums, Simd, dispatch, lane_weight};
 use super::weights::{
-    GAUSS3, KERNEL, LUMINANCE_EPS, demodulator, depth_gradient, edge_weight, guide_at, luminance,
+    GAUSS3, LUMINANCE_EPS, atrous_tap, demodulator, depth_gradient, edge_weight, guide_at,
+    luminance,
 };
 
 /// The knobs of one pass.
@@ -26,6 +28,8 @@ use super::weights::{
 pub struct Pass {
     /// Distance between taps in pixels (1, 2, 4, …).
     pub step: i32,
+    /// The kernel's radius in taps: 1 (3×3 Gaussian) or 2 (5×5 B3 spline).
+    pub radius: i32,
     pub sigma_z: f32,
     pub sigma_l: f32,
     /// Multiply by the albedo and write radiance (the last pass).
@@ -80,8 +84,9 @@ pub fn atrous_pixel(
             -1.0
         };
         let (mut sum_c, mut sum_v, mut sum_w) = (Vec3::ZERO, 0.0f32, 0.0f32);
-        for dy in -2..=2i32 {
-            for dx in -2..=2i32 {
+        let r = pass.radius;
+        for dy in -r..=r {
+            for dx in -r..=r {
                 let (qx, qy) = (x + dx * pass.step, y + dy * pass.step);
                 if qx < 0 || qy < 0 || qx >= width as i32 || qy >= height as i32 {
                     continue;
@@ -90,7 +95,7 @@ pub fn atrous_pixel(
                 if row.w < 0.0 {
                     continue;
                 }
-                let k = KERNEL[(dx + 2) as usize] * KERNEL[(dy + 2) as usize];
+                let k = atrous_tap(dx, r) * atrous_tap(dy, r);
                 let w = if dx == 0 && dy == 0 {
                     k
                 } else {
@@ -228,7 +233,7 @@ fn span(width: usize, dx: isize) -> Option<(usize, usize)> {
 
 /// Row `y`'s centre luminance (`sums.lum`), the reciprocal of the luminance weight's scale
 /// (`sums.scale`: 1 / (σ_l·√(3×3-prefiltered variance) + ε), 0 without one) and weighted sums
-/// of the 5×5 taps, in [`atrous_pixel`]'s order.
+/// of the kernel's taps, in [`atrous_pixel`]'s order.
 #[inline(always)]
 fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: &mut RowSums) {
     let (w, rows) = (g.width, g.height as isize);
@@ -274,19 +279,19 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
         &g.z[c..c + w],
     );
     let (pgx, pgy) = (&g.gx[c..c + w], &g.gy[c..c + w]);
-    let step = pass.step as isize;
-    for dy in -2..=2isize {
+    let (step, r) = (pass.step as isize, pass.radius as isize);
+    for dy in -r..=r {
         let qy = y as isize + dy * step;
         if qy < 0 || qy >= rows {
             continue;
         }
-        for dx in -2..=2isize {
+        for dx in -r..=r {
             let ox = dx * step;
             let Some((x0, n)) = span(w, ox) else {
                 continue;
             };
             let q = (qy as usize * w + x0).wrapping_add_signed(ox);
-            let k = KERNEL[(dx + 2) as usize] * KERNEL[(dy + 2) as usize];
+            let k = atrous_tap(dx as i32, r as i32) * atrous_tap(dy as i32, r as i32);
             let (qr, qg, qb, qv, ql) = (
                 &input.r[q..q + n],
                 &input.g[q..q + n],

@@ -26,7 +26,7 @@ pub use reproject::{
     NORMAL_COS, PLANE_TOLERANCE, PrevFrame, ReprojectStats, SNAP_PIXELS, motions, reproject,
     world_from_object,
 };
-pub use svgf::{DenoiseError, Svgf, SvgfParams};
+pub use svgf::{AtrousKernel, DenoiseError, Svgf, SvgfParams};
 pub use temporal::{History, Reprojection, accumulate_albedo, temporal_pixel};
 pub use upscale::{Traced, filled, splat};
 pub use variance::variance_pixel;

@@ -24,11 +24,14 @@ use super::variance::{HistoryPlanes, estimate};
 use super::view::View;
 use crate::render::film::Film;
 
-/// The filter's knobs (Schied et al.'s defaults; σ_n = 128 is fixed, see `weights`).
+/// The filter's knobs (Schied et al.'s, but for the kernel; σ_n = 128 is fixed, see `weights`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SvgfParams {
-    /// À-trous passes (1–8); 5 reaches 2·(1+2+4+8+16) = 62 pixels.
+    /// À-trous passes (1–8); 5 with the 3×3 kernel reach 1+2+4+8+16 = 31 pixels, with the
+    /// 5×5 kernel 62.
     pub iterations: u32,
+    /// The à-trous kernel of each pass (`docs/PERFORMANCE.md`, "The à-trous kernel").
+    pub kernel: AtrousKernel,
     /// Depth weight scale (times the depth gradient along the offset).
     pub sigma_z: f32,
     /// Luminance weight scale, in standard deviations of the luminance estimate.
@@ -39,19 +42,41 @@ impl Default for SvgfParams {
     fn default() -> Self {
         Self {
             iterations: 5,
+            kernel: AtrousKernel::B3Spline5x5,
             sigma_z: 1.0,
             sigma_l: 4.0,
         }
     }
 }
 
+/// The à-trous passes' kernels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum AtrousKernel {
+    /// 5×5 B3 spline, (1/16, ¼, ⅜, ¼, 1/16) per axis, every pass (Schied et al. 2017): 25 taps.
+    #[default]
+    B3Spline5x5,
+    /// 3×3, weights (¼, ½, ¼) per axis, every pass: 9 taps.
+    Gauss3x3,
+    /// The B3 spline on the first pass (step 1), the 3×3 Gaussian on the others.
+    B3ThenGauss3x3,
+}
+
 impl SvgfParams {
+    /// Pass `k`'s kernel radius in taps (1: 3×3, 2: 5×5; the GPU twin's `radius` uniform).
+    pub fn radius(&self, k: u32) -> u32 {
+        match (self.kernel, k) {
+            (AtrousKernel::B3Spline5x5, _) | (AtrousKernel::B3ThenGauss3x3, 0) => 2,
+            _ => 1,
+        }
+    }
+
     /// The passes in order (the iteration count clamped to 1–8).
     pub fn passes(&self) -> Vec<Pass> {
         let n = self.iterations.clamp(1, 8);
         (0..n)
             .map(|k| Pass {
                 step: 1 << k,
+                radius: self.radius(k) as i32,
                 sigma_z: self.sigma_z,
                 sigma_l: self.sigma_l,
                 remodulate: k + 1 == n,

@@ -27,8 +27,19 @@ pub const LUMINANCE_EPS: f32 = 1e-10;
 pub const NORMAL_SQUARINGS: u32 = 7;
 /// The à-trous kernel (B3 spline), per axis.
 pub const KERNEL: [f32; 5] = [1.0 / 16.0, 1.0 / 4.0, 3.0 / 8.0, 1.0 / 4.0, 1.0 / 16.0];
-/// The 3×3 Gaussian that prefilters the variance, per axis.
+/// The 3×3 Gaussian that prefilters the variance, per axis (also the 3×3 à-trous kernel).
 pub const GAUSS3: [f32; 3] = [0.25, 0.5, 0.25];
+
+/// The à-trous kernel's weight per axis at tap offset `d` (−radius..=radius): radius 1 is the
+/// 3×3 Gaussian ([`GAUSS3`]), radius 2 the 5×5 B3 spline ([`KERNEL`]). Twin: `atrous_tap` in
+/// `shaders/shared/denoise.wgsl`.
+#[inline(always)]
+pub fn atrous_tap(d: i32, radius: i32) -> f32 {
+    match radius {
+        1 => GAUSS3[(d + 1) as usize],
+        _ => KERNEL[(d + 2) as usize],
+    }
+}
 
 /// Rec. 709 luminance of linear RGB.
 pub fn luminance(c: Vec3) -> f32 {

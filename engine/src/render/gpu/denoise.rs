@@ -242,12 +242,13 @@ impl GpuDenoiser {
             blend: if resized { 1.0 } else { blend },
             sigma_z: self.params.sigma_z,
             sigma_l: self.params.sigma_l,
-            _padding: 0,
+            radius: self.params.radius(0),
         };
         queue.write_buffer(&s.uniforms[0], 0, bytemuck::bytes_of(&base));
         for (k, pass) in self.params.passes().iter().enumerate() {
             base.step = pass.step as u32;
             base.remodulate = pass.remodulate as u32;
+            base.radius = pass.radius as u32;
             queue.write_buffer(&s.uniforms[k + 1], 0, bytemuck::bytes_of(&base));
         }
         let groups = (width.div_ceil(GROUP), height.div_ceil(GROUP));

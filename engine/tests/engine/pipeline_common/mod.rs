@@ -76,6 +76,7 @@ pub fn config(spp: u32, size: u32) -> RenderConfig {
         light_sampling: None,
         indirect_every: None,
         first_hit_guides: false,
+        atrous_kernel: Default::default(),
         sky_rebuild: candela::scene::SkyRebuild::Blocking,
         temporal_upscale: None,
     }
