@@ -309,8 +309,9 @@ const _: () = assert!(size_of::<GpuLight>() == 64);
 /// render-space box, power bound and orientation cone of the emissive triangles below it.
 /// Interior nodes: the first child is the next node, the second is `child`; leaves
 /// ([`LIGHT_NODE_LEAF`]): `child` is the light's index in the light table. `parent` is
-/// [`INVALID`] at the root (index 0). 64 bytes.
-#[repr(C, align(16))]
+/// [`INVALID`] at the root (index 0). 64 bytes, aligned to 64 on the CPU so that a node is one
+/// cache line (the walk loads two per level; aligned to 16, most straddled two lines).
+#[repr(C, align(64))]
 #[derive(Clone, Copy, Debug, Pod, Zeroable, PartialEq)]
 pub struct GpuLightNode {
     /// Render-space box of the emitters below, metres.

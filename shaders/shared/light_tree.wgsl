@@ -25,6 +25,8 @@ fn light_sin_sub(sin_a: f32, cos_a: f32, sin_b: f32, cos_b: f32) -> f32 {
     return sin_a * cos_b - cos_a * sin_b;
 }
 
+// PBRT-v4's LightBounds::Importance with every sine and cosine a root of a quantity known
+// once p − c is, times 1/|p − c| (the CPU twin packs two nodes' roots into 4-wide ones).
 fn light_importance(node: GpuLightNode, p: vec3<f32>, n: vec3<f32>) -> f32 {
     if (!(node.phi > 0.0)) {
         return 0.0;
@@ -32,36 +34,44 @@ fn light_importance(node: GpuLightNode, p: vec3<f32>, n: vec3<f32>) -> f32 {
     let pc = (node.bounds_min + node.bounds_max) * 0.5;
     let to_p = p - pc;
     let len2 = dot(to_p, to_p);
-    let d2 = max(len2, length(node.bounds_max - node.bounds_min) * 0.5);
-    var wi = vec3<f32>(0.0);
-    if (len2 > 0.0) {
-        wi = to_p / sqrt(len2);
-    }
-    var cos_w = dot(node.axis, wi);
-    if ((node.flags & LIGHT_NODE_TWO_SIDED) != 0u) {
-        cos_w = abs(cos_w);
-    }
-    let sin_w = light_safe_sqrt(1.0 - cos_w * cos_w);
     let r = node.bounds_max - pc;
-    let radius2 = dot(r, r);
-    var cos_b = -1.0;
-    if (len2 >= radius2) {
-        cos_b = light_safe_sqrt(1.0 - radius2 / len2);
+    let r2 = dot(r, r);
+    var along_axis = dot(node.axis, to_p);
+    if ((node.flags & LIGHT_NODE_TWO_SIDED) != 0u) {
+        along_axis = abs(along_axis);
     }
-    let sin_b = light_safe_sqrt(1.0 - cos_b * cos_b);
-    let cos_o = node.cos_theta_o;
-    let sin_o = light_safe_sqrt(1.0 - cos_o * cos_o);
-    let cos_x = light_cos_sub(sin_w, cos_w, sin_o, cos_o);
-    let sin_x = light_sin_sub(sin_w, cos_w, sin_o, cos_o);
-    let cos_p = light_cos_sub(sin_x, cos_x, sin_b, cos_b);
-    if (cos_p <= node.cos_theta_e) {
-        return 0.0;
-    }
-    var importance = node.phi * cos_p / d2;
-    if (any(n != vec3<f32>(0.0))) {
-        let cos_i = abs(dot(wi, n));
-        let sin_i = light_safe_sqrt(1.0 - cos_i * cos_i);
-        importance *= light_cos_sub(sin_i, cos_i, sin_b, cos_b);
+    let along_normal = abs(dot(n, to_p));
+    let roots = sqrt(max(vec4<f32>(len2, len2 - along_axis * along_axis, len2 - r2,
+        len2 - along_normal * along_normal), vec4<f32>(0.0)));
+    let radius = sqrt(r2);
+    let sin_o = light_safe_sqrt(1.0 - node.cos_theta_o * node.cos_theta_o);
+    let inv_d2 = 1.0 / max(len2, radius);
+    var importance = 0.0;
+    if (len2 < r2) {
+        // Inside the bounding sphere: cos θ' = 1 and the normal's factor 1.
+        if (1.0 <= node.cos_theta_e) {
+            return 0.0;
+        }
+        importance = node.phi * inv_d2;
+    } else {
+        let inv_len = 1.0 / roots.x;
+        let cos_w = along_axis * inv_len;
+        let sin_w = roots.y * inv_len;
+        let cos_b = roots.z * inv_len;
+        let sin_b = radius * inv_len;
+        let cos_o = node.cos_theta_o;
+        let cos_x = light_cos_sub(sin_w, cos_w, sin_o, cos_o);
+        let sin_x = light_sin_sub(sin_w, cos_w, sin_o, cos_o);
+        let cos_p = light_cos_sub(sin_x, cos_x, sin_b, cos_b);
+        if (!(cos_p > node.cos_theta_e)) {
+            return 0.0;
+        }
+        importance = node.phi * cos_p * inv_d2;
+        if (any(n != vec3<f32>(0.0))) {
+            let cos_i = along_normal * inv_len;
+            let sin_i = roots.w * inv_len;
+            importance *= light_cos_sub(sin_i, cos_i, sin_b, cos_b);
+        }
     }
     if (!(importance >= 0.0 && importance <= 3.4e38)) {
         return 0.0;

@@ -122,6 +122,7 @@ mod player_third_person_game;
 mod present_requests;
 mod refit_degradation;
 mod render_areas;
+mod scene_light_importance;
 mod scene_light_tree;
 mod scene_memory;
 mod script_determinism;

@@ -192,6 +192,25 @@ pub fn run(args: &ChamberRaysArgs) -> anyhow::Result<()> {
         mib(scene.blocks.len() * size_of::<candela::layout::GpuTri4>()),
         mib(scene.texels.len() * 8)
     );
+    // The light tree's shape: a pick evaluates two nodes' importance per level it descends.
+    let tree = &scene.lights.tree.nodes;
+    let mut depth = vec![0u32; tree.len()];
+    let (mut leaves, mut leaf_depths, mut deepest) = (0u64, 0u64, 0u32);
+    for (i, node) in tree.iter().enumerate() {
+        if let Some(&d) = depth.get(node.parent as usize) {
+            depth[i] = d + 1;
+        }
+        if node.flags & candela::layout::LIGHT_NODE_LEAF != 0 {
+            leaves += 1;
+            leaf_depths += u64::from(depth[i]);
+            deepest = deepest.max(depth[i]);
+        }
+    }
+    println!(
+        "light tree: {} nodes, leaf depth mean {:.1}, max {deepest}",
+        tree.len(),
+        leaf_depths as f64 / leaves.max(1) as f64
+    );
     println!(
         "| round | renders | rays | camera | shadow | bounce | ms per render (median) | Mrays/s (wall) | Mrays per CPU second | film hash | guide pass ms (median) |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|"
     );
