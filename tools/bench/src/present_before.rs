@@ -4,6 +4,7 @@
 //! bench times it beside the new code in one run.
 //!
 //! Owns: nothing the engine uses. Must not: change (it is the before of the table).
+#![allow(clippy::manual_clamp)] // as in the engine's code it copies
 
 use std::sync::OnceLock;
 

@@ -281,6 +281,7 @@ fn unit() -> &'static [f32; 256] {
 /// `src` (premultiplied R, G, B, A) blended over the pixel `px`, whose R, G and B bytes are at
 /// `order`, as [`blend`] does (`unit` is [`unit`]); alpha untouched.
 #[inline(always)]
+#[allow(clippy::manual_clamp)] // `clamp` keeps a NaN, which the unchecked conversion must not see
 fn blend_pixel(src: [f32; 4], order: [usize; 3], unit: &[f32; 256], px: &mut [u8]) {
     let keep = 1.0 - src[3];
     for (k, &o) in order.iter().enumerate() {
