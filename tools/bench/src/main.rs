@@ -88,6 +88,8 @@ mod pipeline_refit;
 mod pipeline_wading;
 mod plot;
 mod present;
+mod present_before;
+mod present_overlay_before;
 mod present_overlay_reference;
 mod present_reference;
 mod rays;

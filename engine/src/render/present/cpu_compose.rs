@@ -44,6 +44,12 @@ fn srgb_table() -> &'static [u8; SRGB_TABLE] {
     })
 }
 
+/// [`srgb_table`] widened to one `u32` an entry, for the AVX-512 encoding's gather.
+fn srgb_table_wide() -> &'static [u32; SRGB_TABLE] {
+    static TABLE: OnceLock<[u32; SRGB_TABLE]> = OnceLock::new();
+    TABLE.get_or_init(|| srgb_table().map(u32::from))
+}
+
 /// Catmull-Rom weights of the four film pixels at `base − 1 … base + 2` for a sample `t` ∈ [0, 1)
 /// past `base` (they sum to 1; `t = 0` gives `[0, 1, 0, 0]`, so equal sizes copy exactly). The
 /// same cubic as `catmull_rom` in `shaders/present.wgsl`.
@@ -143,7 +149,8 @@ impl HostCompose {
                 |scratch, (line, row)| horizontal(row, scratch, columns, line),
             );
         let exposure = tonemap.exposure_ev.exp2();
-        let (filmic, simd, table, wide) = (tonemap.filmic, self.simd, srgb_table(), &self.wide);
+        let (filmic, simd, wide) = (tonemap.filmic, self.simd, &self.wide);
+        let (table, table_wide) = (srgb_table(), srgb_table_wide());
         self.out
             .par_chunks_mut(w * 4 * ROWS_PER_TASK)
             .zip(self.rows.par_chunks(ROWS_PER_TASK))
@@ -166,7 +173,7 @@ impl HostCompose {
                             filmic,
                             index,
                         );
-                        encode(index, table, bgra, line);
+                        encode(simd, index, table, table_wide, bgra, line);
                     }
                 },
             );
@@ -223,6 +230,26 @@ mod tests {
         let bgra = compose_host_film(&film, (64, 32), &TonemapSettings::default(), true);
         let rgba = compose_host_film(&film, (64, 32), &TonemapSettings::default(), false);
         assert_eq!((bgra[40], bgra[42]), (rgba[42], rgba[40]));
+    }
+
+    /// The vector encoding (where this CPU has it) gives the scalar one's bytes, for every
+    /// table index, in both byte orders, over lengths that leave a remainder.
+    #[test]
+    fn the_vector_encoding_gives_the_scalar_bytes() {
+        use super::super::cpu_compose_rows::{Simd, encode};
+        let index: Vec<i32> = (0..4 * 1027).map(|i| (i * 7 + i / 5) % 4096).collect();
+        for bgra in [false, true] {
+            for pixels in [1027usize, 1024, 3] {
+                let mut scalar = vec![0u8; pixels * 4];
+                let mut vector = vec![0u8; pixels * 4];
+                let i = &index[..pixels * 4];
+                let (t, w) = (srgb_table(), srgb_table_wide());
+                encode(Simd::Baseline, i, t, w, bgra, &mut scalar);
+                encode(Simd::detect(), i, t, w, bgra, &mut vector);
+                assert_eq!(scalar, vector, "{pixels} pixels, bgra {bgra}");
+                assert!(scalar.chunks_exact(4).all(|p| p[3] == 255));
+            }
+        }
     }
 
     #[test]

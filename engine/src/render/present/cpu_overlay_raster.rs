@@ -45,6 +45,9 @@ pub(super) struct Triangle<'a> {
     colors: [[f32; 4]; 3],
     ties: [bool; 3],
     source: Source,
+    /// A constant source's blend of every 8-bit value, per channel, for triangles large
+    /// enough to repay it (the same arithmetic as [`blend`], so the same bytes).
+    table: Option<Box<[[u8; 256]; 3]>>,
     /// Columns `[x0, x1)` and rows `[y0, y1)` it may touch, inside the scissor rectangle.
     columns: (i64, i64),
     pub(super) rows: (i64, i64),
@@ -123,8 +126,17 @@ pub(super) fn prepare<'a>(
         } else {
             Source::Sampled
         };
+        let table = match source {
+            Source::Constant(src) if (y1 - y0) * (x1 - x0) > 1024 => {
+                Some(Box::new(std::array::from_fn(|k| {
+                    std::array::from_fn(|d| blend(src[k], src[3], d as u8))
+                })))
+            }
+            _ => None,
+        };
         out.push(Triangle {
             texture,
+            table,
             p,
             area,
             uv: v.map(|v| [v.uv.x, v.uv.y]),
@@ -142,22 +154,31 @@ pub(super) fn prepare<'a>(
 }
 
 impl Triangle<'_> {
+    /// Whether the pixel centre `c` is inside: every edge function positive, or zero on an
+    /// edge this triangle owns.
+    #[inline(always)]
+    fn covers(&self, c: [f32; 2]) -> Option<[f32; 3]> {
+        let p = self.p;
+        let e = [
+            edge(p[1], p[2], c),
+            edge(p[2], p[0], c),
+            edge(p[0], p[1], c),
+        ];
+        let out = (0..3).any(|k| e[k] < 0.0 || (e[k] == 0.0 && !self.ties[k]));
+        (!out).then_some(e)
+    }
+
     /// Blends the triangle into the rows of `band` it covers.
+    ///
+    /// Along a row each edge function is monotone in x (each float operation in `edge` is
+    /// monotone in the pixel centre), so the pixels that pass the exact test form one run:
+    /// it is found by testing inwards from the row's estimated span, and its interior is
+    /// drawn without tests. The same pixels as testing each one, so the same bytes.
     pub(super) fn draw(&self, band: &mut Band<'_>) {
         let (y0, y1) = (self.rows.0.max(band.rows.0), self.rows.1.min(band.rows.1));
         let (x0, x1) = self.columns;
         let p = self.p;
         let edges = [(p[1], p[2]), (p[2], p[0]), (p[0], p[1])];
-        // A constant source blends each 8-bit value the same way: a table per channel when
-        // the triangle is large enough to repay building it (same arithmetic, same bytes).
-        let table = match self.source {
-            Source::Constant(src) if (y1 - y0) * (x1 - x0) > 1024 => {
-                Some(std::array::from_fn::<[u8; 256], 3, _>(|k| {
-                    std::array::from_fn(|d| blend(src[k], src[3], d as u8))
-                }))
-            }
-            _ => None,
-        };
         for y in y0..y1 {
             let cy = y as f32 + 0.5;
             // The row's span: each edge function is linear in x; a pixel more on each side,
@@ -174,42 +195,66 @@ impl Triangle<'_> {
                     hi = lo;
                 }
             }
-            let (sx0, sx1) = ((lo.floor() as i64).max(x0), (hi.ceil() as i64).min(x1));
+            let (mut sx0, mut sx1) = ((lo.floor() as i64).max(x0), (hi.ceil() as i64).min(x1));
+            let centre = |x: i64| [x as f32 + 0.5, cy];
+            while sx0 < sx1 && self.covers(centre(sx0)).is_none() {
+                sx0 += 1;
+            }
+            while sx1 > sx0 && self.covers(centre(sx1 - 1)).is_none() {
+                sx1 -= 1;
+            }
+            if sx0 >= sx1 {
+                continue;
+            }
             let row = ((y - band.rows.0) * band.width * 4) as usize;
-            for x in sx0..sx1 {
-                let c = [x as f32 + 0.5, cy];
-                let e = [
-                    edge(p[1], p[2], c),
-                    edge(p[2], p[0], c),
-                    edge(p[0], p[1], c),
-                ];
-                if (0..3).any(|k| e[k] < 0.0 || (e[k] == 0.0 && !self.ties[k])) {
-                    continue;
-                }
-                let at = row + (x * 4) as usize;
-                let Some(px) = band.pixels.get_mut(at..at + 4) else {
-                    continue;
-                };
-                if let Some(table) = &table {
-                    for (k, &o) in band.order.iter().enumerate() {
-                        px[o] = table[k][px[o] as usize];
+            let Some(run) = band
+                .pixels
+                .get_mut(row + (sx0 * 4) as usize..row + (sx1 * 4) as usize)
+            else {
+                continue;
+            };
+            let (order, unit) = (band.order, unit());
+            match (&self.table, self.source) {
+                (Some(table), _) => {
+                    for px in run.chunks_exact_mut(4) {
+                        for (k, &o) in order.iter().enumerate() {
+                            px[o] = table[k][px[o] as usize];
+                        }
                     }
-                    continue;
                 }
-                let src = self.source_at(e);
-                for (k, &o) in band.order.iter().enumerate() {
-                    px[o] = blend(src[k], src[3], px[o]);
+                (None, Source::Constant(src)) => {
+                    for px in run.chunks_exact_mut(4) {
+                        blend_pixel(src, order, unit, px);
+                    }
+                }
+                (None, _) => {
+                    for (px, x) in run.chunks_exact_mut(4).zip(sx0..) {
+                        let c = centre(x);
+                        let e = [
+                            edge(p[1], p[2], c),
+                            edge(p[2], p[0], c),
+                            edge(p[0], p[1], c),
+                        ];
+                        // A transparent source leaves the pixel as it is (`blend` of 0 over
+                        // any byte gives that byte; tested), so glyphs' empty texels cost
+                        // no blend.
+                        if let Some(src) = self.source_at(e) {
+                            blend_pixel(src, order, unit, px);
+                        }
+                    }
                 }
             }
         }
     }
 
-    /// The premultiplied source at a pixel whose edge functions are `e`.
-    fn source_at(&self, e: [f32; 3]) -> [f32; 4] {
+    /// The premultiplied source at a pixel whose edge functions are `e`; `None` where it is
+    /// exactly transparent (all four channels 0).
+    #[inline(always)]
+    fn source_at(&self, e: [f32; 3]) -> Option<[f32; 4]> {
         let colors = &self.colors;
         let l = e.map(|e| e / self.area);
         let tex = match self.source {
-            Source::Constant(src) => return src,
+            Source::Constant(src) => return Some(src),
             Source::Texel(tex) => tex,
             Source::Sampled => {
                 let uv = &self.uv;
@@ -218,9 +263,35 @@ impl Triangle<'_> {
                 self.texture.sample(u, t)
             }
         };
-        std::array::from_fn(|k| {
+        if tex == [0.0; 4] {
+            return None;
+        }
+        Some(std::array::from_fn(|k| {
             (l[0] * colors[0][k] + l[1] * colors[1][k] + l[2] * colors[2][k]) * tex[k]
-        })
+        }))
+    }
+}
+
+/// `d / 255` for each 8-bit value `d` (the same floats `blend` divided for before).
+fn unit() -> &'static [f32; 256] {
+    static UNIT: std::sync::OnceLock<[f32; 256]> = std::sync::OnceLock::new();
+    UNIT.get_or_init(|| std::array::from_fn(|d| d as f32 / 255.0))
+}
+
+/// `src` (premultiplied R, G, B, A) blended over the pixel `px`, whose R, G and B bytes are at
+/// `order`, as [`blend`] does (`unit` is [`unit`]); alpha untouched.
+#[inline(always)]
+#[allow(clippy::manual_clamp)] // `clamp` keeps a NaN, which the unchecked conversion must not see
+fn blend_pixel(src: [f32; 4], order: [usize; 3], unit: &[f32; 256], px: &mut [u8]) {
+    let keep = 1.0 - src[3];
+    for (k, &o) in order.iter().enumerate() {
+        let out = src[k] + unit[px[o] as usize] * keep;
+        // `clamp` then `as u8` as in `blend`, without the saturating conversion's checks: a
+        // NaN (`max` gives 0, as `clamp` then `as u8` gave 0) and every number land in
+        // [0.5, 255.5], whose truncation is the same byte.
+        let t = out.max(0.0).min(1.0) * 255.0 + 0.5;
+        // SAFETY: `t` is finite and in [0.5, 255.5] (above), so its truncation fits an i32.
+        px[o] = unsafe { t.to_int_unchecked::<i32>() } as u8;
     }
 }
 
@@ -228,4 +299,31 @@ impl Triangle<'_> {
 fn blend(src: f32, alpha: f32, dst: u8) -> u8 {
     let out = src + dst as f32 / 255.0 * (1.0 - alpha);
     (out.clamp(0.0, 1.0) * 255.0 + 0.5) as u8
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Skipping a transparent source is exact: blending 0 over any byte gives that byte, and
+    /// the blend through [`unit`] is [`blend`] byte for byte.
+    #[test]
+    fn a_transparent_source_leaves_every_byte_and_the_unit_table_blends_alike() {
+        let unit = unit();
+        for d in 0..=255u8 {
+            assert_eq!(blend(0.0, 0.0, d), d, "{d}");
+            for src in [
+                [0.0f32, 0.0, 0.0, 0.0],
+                [0.1, 0.5, 0.9, 0.7],
+                [0.3, 0.0, 1.0, 0.51],
+                [f32::NAN, 1.5, -0.2, 0.1],
+                [2.0, -1.0, 0.0, -0.5],
+            ] {
+                let mut px = [d, d, d, 9];
+                blend_pixel(src, [2, 1, 0], unit, &mut px);
+                let want = [blend(src[2], src[3], d), blend(src[1], src[3], d)];
+                assert_eq!([px[0], px[1], px[3]], [want[0], want[1], 9], "{d} {src:?}");
+            }
+        }
+    }
 }
