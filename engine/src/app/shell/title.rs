@@ -78,12 +78,14 @@ pub fn show(
                         ui.add_space(6.0);
                         ui.label(theme::section("Levels"));
                         for level in offered {
-                            let mark = if progress.is_finished(&level.id) {
-                                "✔ "
-                            } else {
-                                ""
+                            // A list of finished levels only needs no mark. The mark is
+                            // plain text: egui's default fonts have no check-mark glyph (a
+                            // "✔" drew as an empty box).
+                            let mark = match progress.is_finished(&level.id) {
+                                true if !info.finished_only => " · solved",
+                                _ => "",
                             };
-                            if theme::menu_button(ui, &format!("{mark}{}", level.name)) {
+                            if theme::menu_button(ui, &format!("{}{mark}", level.name)) {
                                 choice = Some(ShellInput::Start(LevelStart {
                                     level: level.id.clone(),
                                     checkpoint: None,
