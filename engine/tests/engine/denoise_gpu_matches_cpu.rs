@@ -33,7 +33,7 @@ use candela::assets::CameraDesc;
 use candela::layout::GpuFrameUniforms;
 use candela::render::cpu::CpuTracer;
 use candela::render::cpu::guides::trace_guides;
-use candela::render::denoise::{Guides, Svgf, SvgfParams, View, world_from_object};
+use candela::render::denoise::{AtrousKernel, Guides, Svgf, SvgfParams, View, world_from_object};
 use candela::render::gpu::{GpuContext, GpuDenoiser};
 use candela::render::{FrameSettings, Tracer, frame_uniforms};
 use denoise_common::{Cornell, Noise};
@@ -44,10 +44,25 @@ const H: u32 = 36;
 
 #[test]
 fn gpu_and_cpu_denoisers_agree() -> anyhow::Result<()> {
+    agree_with(SvgfParams::default())
+}
+
+/// The smaller à-trous kernels go through the same per-pass `radius` uniform on the GPU.
+#[test]
+fn gpu_and_cpu_denoisers_agree_with_the_3x3_kernels() -> anyhow::Result<()> {
+    for kernel in [AtrousKernel::Gauss3x3, AtrousKernel::B3ThenGauss3x3] {
+        agree_with(SvgfParams {
+            kernel,
+            ..SvgfParams::default()
+        })?;
+    }
+    Ok(())
+}
+
+fn agree_with(params: SvgfParams) -> anyhow::Result<()> {
     let cornell = Cornell::load(W, H)?;
     let guides = cornell.guides();
     let context = GpuContext::headless()?;
-    let params = SvgfParams::default();
     let mut gpu = GpuDenoiser::new(context, params)?;
     let mut cpu = Svgf::new(params);
     let (mut worst_ratio, mut worst_abs) = (0.0f32, 0.0f32);
@@ -89,7 +104,8 @@ fn gpu_and_cpu_denoisers_agree() -> anyhow::Result<()> {
                 worst_abs = worst_abs.max(d);
                 assert!(
                     d <= tolerance,
-                    "frame {k} pixel {i} channel {ch}: cpu {a} gpu {b}"
+                    "{:?} frame {k} pixel {i} channel {ch}: cpu {a} gpu {b}",
+                    params.kernel
                 );
             }
         }
