@@ -17,6 +17,7 @@
 use glam::{Vec2, Vec3, Vec4};
 use rayon::prelude::*;
 
+use super::atrous_block::{LANES, interior, interior_taps};
 use super::planes::{ColourPlanes, GuidePlanes, OutRow, RowSums, Simd, dispatch, lane_weight};
 use super::weights::{
     GAUSS3, LUMINANCE_EPS, atrous_tap, demodulator, depth_gradient, edge_weight, guide_at,
@@ -272,77 +273,125 @@ fn row_sums(input: &ColourPlanes, g: &GuidePlanes, y: usize, pass: &Pass, sums: 
         };
     }
     sums.clear();
-    let (pnx, pny, pnz, pz) = (
-        &g.nx[c..c + w],
-        &g.ny[c..c + w],
-        &g.nz[c..c + w],
-        &g.z[c..c + w],
-    );
-    let (pgx, pgy) = (&g.gx[c..c + w], &g.gy[c..c + w]);
     let (step, r) = (pass.step as isize, pass.radius as isize);
+    // The interior's blocks keep their sums in registers (`atrous_block`); the columns near
+    // the row's ends sweep tap by tap below.
+    let (lo, blocks) = interior(w, (r * step) as usize);
+    let hi = lo + blocks * LANES;
+    for b in 0..blocks {
+        interior_taps(input, g, y, lo + b * LANES, step, r, pass.sigma_z, sums);
+    }
     for dy in -r..=r {
         let qy = y as isize + dy * step;
         if qy < 0 || qy >= rows {
             continue;
         }
         for dx in -r..=r {
-            let ox = dx * step;
-            let Some((x0, n)) = span(w, ox) else {
+            let Some((x0, n)) = span(w, dx * step) else {
                 continue;
             };
-            let q = (qy as usize * w + x0).wrapping_add_signed(ox);
-            let k = atrous_tap(dx as i32, r as i32) * atrous_tap(dy as i32, r as i32);
-            let (qr, qg, qb, qv, ql) = (
-                &input.r[q..q + n],
-                &input.g[q..q + n],
-                &input.b[q..q + n],
-                &input.v[q..q + n],
-                &input.l[q..q + n],
-            );
-            let sr = &mut sums.r[x0..x0 + n];
-            let sg = &mut sums.g[x0..x0 + n];
-            let sb = &mut sums.b[x0..x0 + n];
-            let sv = &mut sums.v[x0..x0 + n];
-            let sw = &mut sums.w[x0..x0 + n];
-            if dx == 0 && dy == 0 {
-                for i in 0..n {
-                    let wt = if qv[i] < 0.0 { 0.0 } else { k };
-                    sr[i] += qr[i] * wt;
-                    sg[i] += qg[i] * wt;
-                    sb[i] += qb[i] * wt;
-                    sv[i] += qv[i] * wt * wt;
-                    sw[i] += wt;
+            let tap = Tap {
+                qy: qy as usize,
+                dx,
+                dy,
+                step,
+                radius: r,
+            };
+            // The span less the interior's blocks: up to two runs of columns.
+            let left = (x0, n.min(lo.saturating_sub(x0)));
+            let start = x0.max(hi);
+            let right = (start, (x0 + n).saturating_sub(start));
+            for (a, m) in [left, right] {
+                if m > 0 {
+                    tap_columns(input, g, y, &tap, pass.sigma_z, (a, m), sums);
                 }
-                continue;
-            }
-            let (qnx, qny, qnz, qz) = (
-                &g.nx[q..q + n],
-                &g.ny[q..q + n],
-                &g.nz[q..q + n],
-                &g.z[q..q + n],
-            );
-            let (cnx, cny, cnz, cz) = (
-                &pnx[x0..x0 + n],
-                &pny[x0..x0 + n],
-                &pnz[x0..x0 + n],
-                &pz[x0..x0 + n],
-            );
-            let (cgx, cgy) = (&pgx[x0..x0 + n], &pgy[x0..x0 + n]);
-            let (lp, inv_scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
-            let (fx, fy) = (ox as f32, (dy * step) as f32);
-            for i in 0..n {
-                let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
-                let slope = (cgx[i] * fx + cgy[i] * fy).abs();
-                let dl = (lp[i] - ql[i]).abs() * inv_scale[i];
-                let wt = k * lane_weight(dot, cz[i], qz[i], slope, pass.sigma_z, dl);
-                // A neighbour without a sample is (0, 0, 0, −1): a zero weight drops it.
-                let wt = if qv[i] >= 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
-                sr[i] += qr[i] * wt;
-                sg[i] += qg[i] * wt;
-                sb[i] += qb[i] * wt;
-                sv[i] += qv[i] * wt * wt;
-                sw[i] += wt;
             }
         }
+    }
+}
+
+/// One kernel tap: the neighbours' row and the tap's offset in taps (× `step` pixels).
+struct Tap {
+    qy: usize,
+    dx: isize,
+    dy: isize,
+    step: isize,
+    radius: isize,
+}
+
+/// Adds one tap to the sums of columns `x0..x0 + n` of row `y` (each neighbour inside the row).
+#[inline(always)]
+fn tap_columns(
+    input: &ColourPlanes,
+    g: &GuidePlanes,
+    y: usize,
+    tap: &Tap,
+    sigma_z: f32,
+    (x0, n): (usize, usize),
+    sums: &mut RowSums,
+) {
+    let w = g.width;
+    let c = y * w;
+    let Tap {
+        qy,
+        dx,
+        dy,
+        step,
+        radius: r,
+    } = *tap;
+    let ox = dx * step;
+    let q = (qy * w + x0).wrapping_add_signed(ox);
+    let k = atrous_tap(dx as i32, r as i32) * atrous_tap(dy as i32, r as i32);
+    let (qr, qg, qb, qv, ql) = (
+        &input.r[q..q + n],
+        &input.g[q..q + n],
+        &input.b[q..q + n],
+        &input.v[q..q + n],
+        &input.l[q..q + n],
+    );
+    let sr = &mut sums.r[x0..x0 + n];
+    let sg = &mut sums.g[x0..x0 + n];
+    let sb = &mut sums.b[x0..x0 + n];
+    let sv = &mut sums.v[x0..x0 + n];
+    let sw = &mut sums.w[x0..x0 + n];
+    if dx == 0 && dy == 0 {
+        for i in 0..n {
+            let wt = if qv[i] < 0.0 { 0.0 } else { k };
+            sr[i] += qr[i] * wt;
+            sg[i] += qg[i] * wt;
+            sb[i] += qb[i] * wt;
+            sv[i] += qv[i] * wt * wt;
+            sw[i] += wt;
+        }
+        return;
+    }
+    let (qnx, qny, qnz, qz) = (
+        &g.nx[q..q + n],
+        &g.ny[q..q + n],
+        &g.nz[q..q + n],
+        &g.z[q..q + n],
+    );
+    let p = c + x0;
+    let (cnx, cny, cnz, cz) = (
+        &g.nx[p..p + n],
+        &g.ny[p..p + n],
+        &g.nz[p..p + n],
+        &g.z[p..p + n],
+    );
+    let (cgx, cgy) = (&g.gx[p..p + n], &g.gy[p..p + n]);
+    let (lp, inv_scale) = (&sums.lum[x0..x0 + n], &sums.scale[x0..x0 + n]);
+    let (fx, fy) = (ox as f32, (dy * step) as f32);
+    for i in 0..n {
+        let dot = cnx[i] * qnx[i] + cny[i] * qny[i] + cnz[i] * qnz[i];
+        let slope = (cgx[i] * fx + cgy[i] * fy).abs();
+        let dl = (lp[i] - ql[i]).abs() * inv_scale[i];
+        let wt = k * lane_weight(dot, cz[i], qz[i], slope, sigma_z, dl);
+        // A neighbour without a sample is (0, 0, 0, −1): a zero weight drops it.
+        let wt = if qv[i] >= 0.0 && qz[i] > 0.0 { wt } else { 0.0 };
+        sr[i] += qr[i] * wt;
+        sg[i] += qg[i] * wt;
+        sb[i] += qb[i] * wt;
+        sv[i] += qv[i] * wt * wt;
+        sw[i] += wt;
     }
 }

@@ -9,6 +9,7 @@
 //! Must not: trace rays (the guide pass, `render/cpu/guides.rs`, does) or know the tracer.
 
 mod atrous;
+mod atrous_block;
 mod guides;
 mod planes;
 mod reproject;

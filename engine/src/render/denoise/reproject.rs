@@ -27,6 +27,7 @@ use glam::{Affine3A, Mat3A, Vec3, Vec3A, Vec4};
 use rayon::prelude::*;
 
 use super::guides::{Guides, NO_INSTANCE};
+use super::planes::{Simd, dispatch};
 use super::reproject_edge::mixed_tap;
 use super::temporal::History;
 use super::view::View;
@@ -153,6 +154,7 @@ pub fn reproject_into(
         with_albedo,
     };
     let row = w as usize;
+    let simd = Simd::detect();
     let rows = out
         .illumination
         .par_chunks_mut(row)
@@ -166,13 +168,15 @@ pub fn reproject_into(
             .zip(out.normal_depth.par_chunks_mut(row));
         rows.zip(extra)
             .enumerate()
-            .map(|(y, ((il, mo), (al, nd)))| frame.row(y as u32, il, mo, Some((al, nd))))
+            .map(|(y, ((il, mo), (al, nd)))| {
+                row_simd(simd, &frame, y as u32, il, mo, Some((al, nd)))
+            })
             .sum()
     } else {
         out.albedo.clear();
         out.normal_depth.clear();
         rows.enumerate()
-            .map(|(y, (il, mo))| frame.row(y as u32, il, mo, None))
+            .map(|(y, (il, mo))| row_simd(simd, &frame, y as u32, il, mo, None))
             .sum()
     };
     ReprojectStats {
@@ -196,30 +200,55 @@ struct Frame<'a> {
     with_albedo: bool,
 }
 
-impl Frame<'_> {
-    /// Row `y` of the reprojected history into `il`, `mo` (and the albedo and normal/depth
-    /// planes when kept); returns how many of its pixels kept a history.
-    fn row(
-        &self,
+/// Row `y` of the reprojected history into `il`, `mo` (and the albedo and normal/depth planes
+/// when kept); returns how many of its pixels kept a history. Compiled at the CPU's vector
+/// width (`planes::dispatch`): the same arithmetic, with the rounding instructions inline.
+fn row_simd(
+    simd: Simd,
+    frame: &Frame<'_>,
+    y: u32,
+    il: &mut [Vec4],
+    mo: &mut [Vec4],
+    extra: Option<(&mut [Vec4], &mut [Vec4])>,
+) -> usize {
+    let mut kept = 0;
+    row_kept(simd, frame, y, il, mo, extra, &mut kept);
+    kept
+}
+
+dispatch!(
+    /// [`row`] at the CPU's vector width.
+    fn row_kept => row(
+        frame: &Frame<'_>,
         y: u32,
         il: &mut [Vec4],
         mo: &mut [Vec4],
-        mut extra: Option<(&mut [Vec4], &mut [Vec4])>,
-    ) -> usize {
-        let w = self.guides.width;
-        let mut kept = 0;
-        for x in 0..w {
-            let i = y as usize * w as usize + x as usize;
-            let (h, m, a, nd) = pixel(self, (x, y), i);
-            kept += usize::from(h.w > 0.0);
-            il[x as usize] = h;
-            mo[x as usize] = m;
-            if let Some((al, nds)) = extra.as_mut() {
-                al[x as usize] = a;
-                nds[x as usize] = nd;
-            }
+        extra: Option<(&mut [Vec4], &mut [Vec4])>,
+        kept: &mut usize,
+    )
+);
+
+/// [`row_simd`]'s body; adds the row's kept pixels to `kept`.
+#[inline(always)]
+fn row(
+    frame: &Frame<'_>,
+    y: u32,
+    il: &mut [Vec4],
+    mo: &mut [Vec4],
+    mut extra: Option<(&mut [Vec4], &mut [Vec4])>,
+    kept: &mut usize,
+) {
+    let w = frame.guides.width;
+    for x in 0..w {
+        let i = y as usize * w as usize + x as usize;
+        let (h, m, a, nd) = pixel(frame, (x, y), i);
+        *kept += usize::from(h.w > 0.0);
+        il[x as usize] = h;
+        mo[x as usize] = m;
+        if let Some((al, nds)) = extra.as_mut() {
+            al[x as usize] = a;
+            nds[x as usize] = nd;
         }
-        kept
     }
 }
 
@@ -240,6 +269,7 @@ struct Seen {
 
 /// Whether the previous frame's pixel `j` (its guide point `points[j]`, relative to the
 /// previous camera) saw the same surface as `seen`.
+#[inline(always)]
 fn same_surface(prev: &PrevFrame, points: &[Vec3], j: usize, seen: &Seen) -> bool {
     let g = &prev.guides;
     if seen.sky {
@@ -254,16 +284,14 @@ fn same_surface(prev: &PrevFrame, points: &[Vec3], j: usize, seen: &Seen) -> boo
 
 /// One pixel's [`Gathered`] history: the taps that saw its surface, else the taps whose
 /// surface still covers part of it (`reproject_edge`), else none.
+#[inline(always)]
 fn pixel(frame: &Frame, (x, y): (u32, u32), i: usize) -> Gathered {
     let Frame {
-        history,
         prev,
         guides,
         view,
         moved,
-        forward,
-        points,
-        with_albedo,
+        ..
     } = *frame;
     let none = (Vec4::ZERO, Vec4::ZERO, Vec4::ONE, Vec4::ZERO);
     if guides.specular.get(i).copied().unwrap_or(true) {
@@ -314,55 +342,78 @@ fn pixel(frame: &Frame, (x, y): (u32, u32), i: usize) -> Gathered {
             (x0 + 1.0, y0 + 1.0, ax * ay),
         ]
     };
+    gather(frame, &seen, &taps, (x, y), false)
+        .or_else(|| gather(frame, &seen, &taps, (x, y), true))
+        .unwrap_or(none)
+}
+
+/// The history gathered from the `taps` (previous pixel coordinates and bilinear weight) that
+/// saw `seen`'s surface, or (`edge`) whose surface still covers part of pixel (x, y);
+/// `None` when no tap counts.
+#[inline(always)]
+fn gather(
+    frame: &Frame,
+    seen: &Seen,
+    taps: &[(f32, f32, f32); 4],
+    (x, y): (u32, u32),
+    edge: bool,
+) -> Option<Gathered> {
+    let Frame {
+        history,
+        prev,
+        guides,
+        view,
+        forward,
+        points,
+        with_albedo,
+        ..
+    } = *frame;
     let inside = |tx: f32, ty: f32| {
         tx >= 0.0 && ty >= 0.0 && tx < prev.view.width as f32 && ty < prev.view.height as f32
     };
-    let gather = |edge: bool| {
-        let (mut il, mut mo, mut al, mut nd, mut weight, mut length) = (
-            Vec4::ZERO,
-            Vec4::ZERO,
-            Vec4::ZERO,
-            Vec4::ZERO,
-            0.0f32,
-            f32::MAX,
-        );
-        for (tx, ty, wt) in taps {
-            if wt <= 0.0 || !inside(tx, ty) {
-                continue;
-            }
-            let j = ty as usize * prev.view.width as usize + tx as usize;
-            let hist = history.illumination[j];
-            if hist.w <= 0.0 {
-                continue;
-            }
-            let taken = match edge {
-                false => same_surface(prev, points, j, &seen),
-                true => mixed_tap(prev, j, guides, view, forward, (x, y)),
-            };
-            if !taken {
-                continue;
-            }
-            il += hist * wt;
-            mo += history.moments[j] * wt;
-            if with_albedo {
-                al += history.albedo[j] * wt;
-                nd += history.normal_depth[j] * wt;
-            }
-            weight += wt;
-            length = length.min(hist.w);
+    let (mut il, mut mo, mut al, mut nd, mut weight, mut length) = (
+        Vec4::ZERO,
+        Vec4::ZERO,
+        Vec4::ZERO,
+        Vec4::ZERO,
+        0.0f32,
+        f32::MAX,
+    );
+    for &(tx, ty, wt) in taps {
+        if wt <= 0.0 || !inside(tx, ty) {
+            continue;
         }
-        let (albedo, nd) = match with_albedo {
-            true => (al / weight, nd / weight),
-            false => (Vec4::ONE, Vec4::ZERO),
+        let j = ty as usize * prev.view.width as usize + tx as usize;
+        let hist = history.illumination[j];
+        if hist.w <= 0.0 {
+            continue;
+        }
+        let taken = match edge {
+            false => same_surface(prev, points, j, seen),
+            true => mixed_tap(prev, j, guides, view, forward, (x, y)),
         };
-        (weight > 0.0).then(|| {
-            (
-                (il / weight).truncate().extend(length),
-                mo / weight,
-                albedo,
-                nd,
-            )
-        })
+        if !taken {
+            continue;
+        }
+        il += hist * wt;
+        mo += history.moments[j] * wt;
+        if with_albedo {
+            al += history.albedo[j] * wt;
+            nd += history.normal_depth[j] * wt;
+        }
+        weight += wt;
+        length = length.min(hist.w);
+    }
+    let (albedo, nd) = match with_albedo {
+        true => (al / weight, nd / weight),
+        false => (Vec4::ONE, Vec4::ZERO),
     };
-    gather(false).or_else(|| gather(true)).unwrap_or(none)
+    (weight > 0.0).then(|| {
+        (
+            (il / weight).truncate().extend(length),
+            mo / weight,
+            albedo,
+            nd,
+        )
+    })
 }

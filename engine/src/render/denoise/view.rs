@@ -49,6 +49,7 @@ impl View {
     }
 
     /// Unit direction through image coordinates (px, py).
+    #[inline]
     pub fn direction_at(&self, px: f32, py: f32) -> Vec3 {
         let sx = 2.0 * px / self.width as f32 - 1.0;
         let sy = 1.0 - 2.0 * py / self.height as f32;
@@ -61,12 +62,14 @@ impl View {
     }
 
     /// Unit direction of pixel (x, y)'s guide (through its [`View::jitter`] offset).
+    #[inline]
     pub fn sample_direction(&self, x: u32, y: u32) -> Vec3 {
         self.direction_at(x as f32 + self.jitter.0, y as f32 + self.jitter.1)
     }
 
     /// Continuous image coordinates of the direction `d` from the camera; `None` behind the
     /// camera or for a degenerate basis.
+    #[inline]
     pub fn project_direction(&self, d: Vec3) -> Option<(f32, f32)> {
         let (f2, r2, u2) = (
             self.forward.length_squared(),
