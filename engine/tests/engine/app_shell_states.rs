@@ -6,7 +6,7 @@
 
 use candela::app::shell::{
     LevelEntry, LevelStart, Screen, SettingsEditor, ShellEffect, ShellInfo, ShellInput, ShellState,
-    action_label, binding_label, continue_point,
+    action_label, binding_label, continue_label, continue_point,
 };
 use candela::app::{
     ActionSet, Binding, KeyCode, MouseButton, PadButton, Progress, Settings, game_actions,
@@ -233,8 +233,15 @@ fn continue_starts_at_the_first_unfinished_level_and_its_checkpoint() {
             checkpoint: Some("hall".into())
         })
     );
+    let hall = continue_point(&info, &progress).expect("a checkpoint was reached");
+    assert_eq!(continue_label(&info, &hall), "Continue  ·  A  ·  hall");
+    // A checkpoint that names a level (Reflect's chambers) shows that level's name, not its id.
+    progress.reach_checkpoint("a", "b");
+    let at_b = continue_point(&info, &progress).expect("a checkpoint was reached");
+    assert_eq!(continue_label(&info, &at_b), "Continue  ·  B");
     progress.finish_level("a");
     assert_eq!(continue_point(&info, &progress), Some(start("b")));
+    assert_eq!(continue_label(&info, &start("b")), "Continue  ·  B");
     progress.finish_level("b");
     progress.finish_level("c");
     assert_eq!(continue_point(&info, &progress), None, "all finished");

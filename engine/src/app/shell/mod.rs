@@ -38,4 +38,4 @@ pub use run::{ShellConfig, ShellRun, WindowWants};
 pub use settings_edit::{Conflict, FRAME_RATES, SettingsEditor, action_label, binding_label};
 pub use state::{Screen, ShellEffect, ShellInput, ShellState};
 pub use theme::style;
-pub use title::continue_point;
+pub use title::{continue_label, continue_point};

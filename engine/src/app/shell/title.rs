@@ -28,6 +28,24 @@ pub fn continue_point(info: &ShellInfo, progress: &Progress) -> Option<LevelStar
         })
 }
 
+/// The Continue button's text: the level's name, and the checkpoint's when it is another
+/// place (a level's id names that level; any other id is shown with spaces for underscores).
+pub fn continue_label(info: &ShellInfo, start: &LevelStart) -> String {
+    let named = |id: &str| {
+        info.levels
+            .iter()
+            .find(|l| l.id == id)
+            .map(|l| l.name.clone())
+    };
+    let level = named(&start.level).unwrap_or_else(|| start.level.replace('_', " "));
+    let place = match start.checkpoint.as_deref() {
+        None => level,
+        Some(cp) if cp == start.level => level,
+        Some(cp) => named(cp).unwrap_or_else(|| format!("{level}  ·  {}", cp.replace('_', " "))),
+    };
+    format!("Continue  ·  {place}")
+}
+
 /// Draws the title screen; `notices` can be dismissed here.
 pub fn show(
     ctx: &egui::Context,
@@ -37,7 +55,7 @@ pub fn show(
 ) -> Option<ShellInput> {
     let mut choice = None;
     theme::top_shade(ctx, 0.45);
-    egui::Area::new(egui::Id::unique("shell_title_name"))
+    let name = egui::Area::new(egui::Id::unique("shell_title_name"))
         .anchor(Align2::CENTER_TOP, Vec2::new(0.0, 70.0))
         .show(ctx, |ui| {
             ui.vertical_centered(|ui| {
@@ -47,17 +65,20 @@ pub fn show(
                 }
             });
         });
-    egui::Area::new(egui::Id::unique("shell_title_menu"))
-        .anchor(Align2::CENTER_CENTER, Vec2::new(0.0, 60.0))
+    // The menu sits centred in the window, but never higher than just under the subtitle (a
+    // long level list grew up over it).
+    // Its height is last frame's (egui lays an area out once a frame), 0 on the first.
+    let menu_id = egui::Id::unique("shell_title_menu_height");
+    let height: f32 = ctx.data(|d| d.get_temp(menu_id)).unwrap_or(0.0);
+    let below_name = name.response.rect.bottom() + 24.0;
+    let centred = ctx.content_rect().center().y + 60.0 - 0.5 * height;
+    let menu = egui::Area::new(egui::Id::unique("shell_title_menu"))
+        .anchor(Align2::CENTER_TOP, Vec2::new(0.0, centred.max(below_name)))
         .show(ctx, |ui| {
             theme::panel().show(ui, |ui| {
                 ui.vertical_centered(|ui| {
                     if let Some(start) = continue_point(info, progress) {
-                        let label = match &start.checkpoint {
-                            Some(cp) => format!("Continue  ·  {cp}"),
-                            None => "Continue".to_string(),
-                        };
-                        if theme::menu_button(ui, &label) {
+                        if theme::menu_button(ui, &continue_label(info, &start)) {
                             choice = Some(ShellInput::Start(start));
                         }
                     }
@@ -103,6 +124,8 @@ pub fn show(
                 });
             });
         });
+    let height = menu.response.rect.height();
+    ctx.data_mut(|d| d.insert_temp(menu_id, height));
     if !notices.is_empty() {
         show_notices(ctx, notices);
     }
