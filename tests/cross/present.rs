@@ -376,7 +376,7 @@ fn the_softbuffer_layout_carries_the_same_colours_under_the_overlay() {
     let mut drawn = 0;
     for (i, (x, p)) in xrgb.chunks_exact(4).zip(rgba.chunks_exact(4)).enumerate() {
         let word = u32::from_le_bytes([x[0], x[1], x[2], x[3]]);
-        let want = (p[0] as u32) << 16 | (p[1] as u32) << 8 | p[2] as u32;
+        let want = ((p[0] as u32) << 16) | ((p[1] as u32) << 8) | p[2] as u32;
         assert_eq!(word, want, "pixel {i}: {word:08x} against RGBA {p:?}");
         drawn += (p != &plain[i * 4..i * 4 + 4]) as usize;
     }

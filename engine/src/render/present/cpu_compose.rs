@@ -335,7 +335,7 @@ mod tests {
             bytemuck::cast_slice_mut(&mut words),
         );
         for (i, (word, p)) in words.iter().zip(rgba.chunks_exact(4)).enumerate() {
-            let want = (p[0] as u32) << 16 | (p[1] as u32) << 8 | p[2] as u32;
+            let want = ((p[0] as u32) << 16) | ((p[1] as u32) << 8) | p[2] as u32;
             assert_eq!(*word, want, "pixel {i}: {word:08x} vs {p:?}");
         }
         assert!(words.iter().any(|w| w & 0xff0000 != 0) && words.iter().any(|w| w & 0xff != 0));
