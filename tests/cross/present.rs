@@ -20,7 +20,7 @@ use candela::render::FilmView;
 use candela::render::film::{Film, TonemapSettings, linear_to_srgb8};
 use candela::render::gpu::GpuContext;
 use candela::render::present::{
-    CpuOverlay, FrameComposer, Screenshot, catmull_rom, compose_host_film,
+    CpuOverlay, FrameComposer, HostCompose, PixelLayout, Screenshot, catmull_rom, compose_host_film,
 };
 use glam::Vec3;
 use wgpu::util::DeviceExt;
@@ -354,4 +354,31 @@ fn the_cpu_overlay_draws_like_the_device_painter() {
         mean < 0.5 && worst <= 16,
         "mean difference {mean}, worst {worst}"
     );
+}
+
+#[test]
+fn the_softbuffer_layout_carries_the_same_colours_under_the_overlay() {
+    // The window's softbuffer path composes into `0RGB` words (B, G, R, 0 in a little-endian
+    // machine's memory) and draws the overlay over them as over BGRA: every pixel must carry
+    // the RGBA path's colours, overlay included, with the fourth byte left 0.
+    let size = (203u32, 157u32);
+    let film = test_film(64, 48);
+    let tonemap = TonemapSettings::default();
+    let (overlay, _) = overlay(size);
+    let mut painter = CpuOverlay::default();
+    painter.apply(&overlay.textures_delta);
+    let mut rgba = compose_host_film(&film, size, &tonemap, false);
+    let plain = rgba.clone();
+    painter.draw(&mut rgba, size, false, &overlay);
+    let mut xrgb = vec![0xaau8; (size.0 * size.1 * 4) as usize];
+    HostCompose::default().compose_into(&film, size, &tonemap, PixelLayout::Xrgb32, &mut xrgb);
+    painter.draw(&mut xrgb, size, true, &overlay);
+    let mut drawn = 0;
+    for (i, (x, p)) in xrgb.chunks_exact(4).zip(rgba.chunks_exact(4)).enumerate() {
+        let word = u32::from_le_bytes([x[0], x[1], x[2], x[3]]);
+        let want = ((p[0] as u32) << 16) | ((p[1] as u32) << 8) | p[2] as u32;
+        assert_eq!(word, want, "pixel {i}: {word:08x} against RGBA {p:?}");
+        drawn += (p != &plain[i * 4..i * 4 + 4]) as usize;
+    }
+    assert!(drawn > 1000, "the overlay drew {drawn} pixels");
 }

@@ -111,6 +111,34 @@ impl Default for HostCompose {
     }
 }
 
+/// How composed pixels lie in memory: four bytes a pixel, rows top to bottom.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PixelLayout {
+    /// R, G, B, 255 (an `Rgba8Unorm` surface texture).
+    Rgba8,
+    /// B, G, R, 255 (a `Bgra8Unorm` surface texture).
+    Bgra8,
+    /// softbuffer's native-endian `0RGB` words: B, G, R, 0 on a little-endian machine (the
+    /// only kind the presenter uses it on), so the compose writes softbuffer's buffer
+    /// directly, with no conversion pass.
+    Xrgb32,
+}
+
+impl PixelLayout {
+    /// Whether blue comes first (B, G, R) rather than red.
+    pub fn blue_first(self) -> bool {
+        !matches!(self, PixelLayout::Rgba8)
+    }
+
+    /// The fourth byte of every pixel.
+    fn fourth(self) -> u8 {
+        match self {
+            PixelLayout::Xrgb32 => 0,
+            PixelLayout::Rgba8 | PixelLayout::Bgra8 => 255,
+        }
+    }
+}
+
 impl HostCompose {
     /// `film` upscaled (Catmull-Rom bicubic, separable, clamped edges) to `size` (physical
     /// pixels, each side at least 1) and tonemapped with `tonemap`, as rows of 4-byte pixels,
@@ -125,13 +153,39 @@ impl HostCompose {
         bgra: bool,
     ) -> &mut [u8] {
         let (w, h) = (size.0.max(1) as usize, size.1.max(1) as usize);
-        self.out.resize(w * h * 4, 0);
+        let mut out = std::mem::take(&mut self.out);
+        out.resize(w * h * 4, 0);
+        let layout = if bgra {
+            PixelLayout::Bgra8
+        } else {
+            PixelLayout::Rgba8
+        };
+        self.compose_into(film, size, tonemap, layout, &mut out);
+        self.out = out;
+        &mut self.out
+    }
+
+    /// [`HostCompose::compose`] into `out` (4 bytes a pixel of `size`, laid out as `layout`):
+    /// the presenter's softbuffer path writes the window's buffer this way. Rows beyond what
+    /// `out` holds are left out.
+    pub fn compose_into(
+        &mut self,
+        film: &Film,
+        size: (u32, u32),
+        tonemap: &TonemapSettings,
+        layout: PixelLayout,
+        out: &mut [u8],
+    ) {
+        let (w, h) = (size.0.max(1) as usize, size.1.max(1) as usize);
+        let rows = (w * h * 4).min(out.len()) / (4 * w);
+        let out = &mut out[..rows * 4 * w];
+        let (bgra, alpha) = (layout.blue_first(), layout.fourth());
         let (fw, fh) = (film.width as usize, film.height as usize);
         if fw == 0 || fh == 0 || film.mean.len() < fw * fh {
-            for px in self.out.chunks_exact_mut(4) {
-                px.copy_from_slice(&[0, 0, 0, 255]);
+            for px in out.chunks_exact_mut(4) {
+                px.copy_from_slice(&[0, 0, 0, alpha]);
             }
-            return &mut self.out;
+            return;
         }
         let sizes = (film.width, film.height, w as u32, h as u32);
         if self.sizes != sizes {
@@ -151,8 +205,7 @@ impl HostCompose {
         let exposure = tonemap.exposure_ev.exp2();
         let (filmic, simd, wide) = (tonemap.filmic, self.simd, &self.wide);
         let (table, table_wide) = (srgb_table(), srgb_table_wide());
-        self.out
-            .par_chunks_mut(w * 4 * ROWS_PER_TASK)
+        out.par_chunks_mut(w * 4 * ROWS_PER_TASK)
             .zip(self.rows.par_chunks(ROWS_PER_TASK))
             .for_each_init(
                 || vec![0i32; 4 * w],
@@ -173,11 +226,10 @@ impl HostCompose {
                             filmic,
                             index,
                         );
-                        encode(simd, index, table, table_wide, bgra, line);
+                        encode(simd, index, table, table_wide, bgra, alpha, line);
                     }
                 },
             );
-        &mut self.out
     }
 }
 
@@ -238,18 +290,55 @@ mod tests {
     fn the_vector_encoding_gives_the_scalar_bytes() {
         use super::super::cpu_compose_rows::{Simd, encode};
         let index: Vec<i32> = (0..4 * 1027).map(|i| (i * 7 + i / 5) % 4096).collect();
-        for bgra in [false, true] {
+        for (bgra, alpha) in [(false, 255), (true, 255), (true, 0)] {
             for pixels in [1027usize, 1024, 3] {
-                let mut scalar = vec![0u8; pixels * 4];
-                let mut vector = vec![0u8; pixels * 4];
+                let mut scalar = vec![7u8; pixels * 4];
+                let mut vector = vec![9u8; pixels * 4];
                 let i = &index[..pixels * 4];
                 let (t, w) = (srgb_table(), srgb_table_wide());
-                encode(Simd::Baseline, i, t, w, bgra, &mut scalar);
-                encode(Simd::detect(), i, t, w, bgra, &mut vector);
-                assert_eq!(scalar, vector, "{pixels} pixels, bgra {bgra}");
-                assert!(scalar.chunks_exact(4).all(|p| p[3] == 255));
+                encode(Simd::Baseline, i, t, w, bgra, alpha, &mut scalar);
+                encode(Simd::detect(), i, t, w, bgra, alpha, &mut vector);
+                assert_eq!(
+                    scalar, vector,
+                    "{pixels} pixels, bgra {bgra}, alpha {alpha}"
+                );
+                assert!(scalar.chunks_exact(4).all(|p| p[3] == alpha));
             }
         }
+    }
+
+    /// softbuffer's layout (`0RGB` words) carries the RGBA compose's colours, with the
+    /// fourth byte 0, at a size that is not a multiple of the tasks' rows or the vectors.
+    #[test]
+    #[cfg(target_endian = "little")]
+    fn the_softbuffer_layout_carries_the_rgba_colours() {
+        let mut film = Film::new(37, 21);
+        for (i, p) in film.mean.iter_mut().enumerate() {
+            let t = i as f32 * 0.37;
+            *p = Vec3::new(
+                t.sin().abs() * 1.5,
+                (t * 0.7).cos().abs(),
+                (t * 3.1).fract(),
+            );
+        }
+        film.mean[5] = Vec3::new(f32::NAN, 2.0, -1.0);
+        let size = (101, 43);
+        let settings = TonemapSettings::default();
+        let rgba = compose_host_film(&film, size, &settings, false);
+        let mut words = vec![0xdead_beef_u32; 101 * 43];
+        let mut compose = HostCompose::default();
+        compose.compose_into(
+            &film,
+            size,
+            &settings,
+            PixelLayout::Xrgb32,
+            bytemuck::cast_slice_mut(&mut words),
+        );
+        for (i, (word, p)) in words.iter().zip(rgba.chunks_exact(4)).enumerate() {
+            let want = ((p[0] as u32) << 16) | ((p[1] as u32) << 8) | p[2] as u32;
+            assert_eq!(*word, want, "pixel {i}: {word:08x} vs {p:?}");
+        }
+        assert!(words.iter().any(|w| w & 0xff0000 != 0) && words.iter().any(|w| w & 0xff != 0));
     }
 
     #[test]

@@ -177,56 +177,70 @@ pub(super) fn vertical(
     }
 }
 
-/// Table indices (RGBx) to 4-byte pixels: B, G, R, 255 when `bgra`, else R, G, B, 255.
-/// `wide` is the same table widened to one `u32` an entry (the AVX-512 path gathers from it).
+/// Table indices (RGBx) to 4-byte pixels: B, G, R, `alpha` when `bgra`, else R, G, B,
+/// `alpha` (255 for a surface texture; 0 for softbuffer's `0RGB` words, which are B, G, R, 0
+/// in a little-endian machine's memory). `wide` is the same table widened to one `u32` an
+/// entry (the AVX-512 path gathers from it).
 pub(super) fn encode(
     simd: Simd,
     index: &[i32],
     table: &[u8; SRGB_TABLE],
     wide: &[u32; SRGB_TABLE],
     bgra: bool,
+    alpha: u8,
     out: &mut [u8],
 ) {
     let done = match simd {
         // SAFETY: `Simd::detect` found AVX-512 (F, BW, VL) on this CPU.
         #[cfg(target_arch = "x86_64")]
-        Simd::Avx512 => unsafe { encode_avx512(index, wide, bgra, out) },
+        Simd::Avx512 => unsafe { encode_avx512(index, wide, bgra, alpha, out) },
         _ => 0,
     };
-    encode_scalar(&index[done * 4..], table, bgra, &mut out[done * 4..]);
+    encode_scalar(&index[done * 4..], table, bgra, alpha, &mut out[done * 4..]);
 }
 
 /// [`encode`] one pixel at a time (the baseline, and the pixels the vector path leaves).
-fn encode_scalar(index: &[i32], table: &[u8; SRGB_TABLE], bgra: bool, out: &mut [u8]) {
+fn encode_scalar(index: &[i32], table: &[u8; SRGB_TABLE], bgra: bool, alpha: u8, out: &mut [u8]) {
     let at = |i: i32| table[i as usize & (SRGB_TABLE - 1)];
     let pixels = out.chunks_exact_mut(4).zip(index.chunks_exact(4));
     if bgra {
         for (px, i) in pixels {
-            px.copy_from_slice(&[at(i[2]), at(i[1]), at(i[0]), 255]);
+            px.copy_from_slice(&[at(i[2]), at(i[1]), at(i[0]), alpha]);
         }
     } else {
         for (px, i) in pixels {
-            px.copy_from_slice(&[at(i[0]), at(i[1]), at(i[2]), 255]);
+            px.copy_from_slice(&[at(i[0]), at(i[1]), at(i[2]), alpha]);
         }
     }
 }
 
 /// [`encode`] four pixels at a time: sixteen indices (masked to the table, as the scalar
 /// path's) gathered from `wide` in one instruction, truncated to bytes, reordered and given
-/// alpha 255 (a `perf` profile of `bench present` had the scalar loop at about a third of
+/// `alpha` (a `perf` profile of `bench present` had the scalar loop at about a third of
 /// the compose). Returns how many pixels it wrote (a multiple of four); the scalar path
 /// writes the rest. The same table entries, so the same bytes.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512bw,avx512vl,avx2")]
-fn encode_avx512(index: &[i32], wide: &[u32; SRGB_TABLE], bgra: bool, out: &mut [u8]) -> usize {
+fn encode_avx512(
+    index: &[i32],
+    wide: &[u32; SRGB_TABLE],
+    bgra: bool,
+    alpha: u8,
+    out: &mut [u8],
+) -> usize {
     use std::arch::x86_64::*;
     let pixels = (index.len() / 4).min(out.len() / 4) / 4 * 4;
     let mask = _mm512_set1_epi32((SRGB_TABLE - 1) as i32);
-    let alpha = _mm_set1_epi32(0xff00_0000_u32 as i32);
+    let alpha = _mm_set1_epi32(((alpha as u32) << 24) as i32);
+    // Each pixel's fourth byte is zeroed (-128: the shuffle's "zero" lane), then `alpha` set.
     let order = if bgra {
-        _mm_setr_epi8(2, 1, 0, 3, 6, 5, 4, 7, 10, 9, 8, 11, 14, 13, 12, 15)
+        _mm_setr_epi8(
+            2, 1, 0, -128, 6, 5, 4, -128, 10, 9, 8, -128, 14, 13, 12, -128,
+        )
     } else {
-        _mm_setr_epi8(0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15)
+        _mm_setr_epi8(
+            0, 1, 2, -128, 4, 5, 6, -128, 8, 9, 10, -128, 12, 13, 14, -128,
+        )
     };
     for p in (0..pixels).step_by(4) {
         // SAFETY: `p + 4 ≤ pixels`, so indices `4p .. 4p + 16` and bytes `4p .. 4p + 16` are

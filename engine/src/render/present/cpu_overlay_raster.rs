@@ -227,6 +227,9 @@ impl Triangle<'_> {
                         blend_pixel(src, order, unit, px);
                     }
                 }
+                // A transparent texel leaves every pixel (as `source_at`'s `None`).
+                (None, Source::Texel(tex)) if tex == [0.0; 4] => {}
+                (None, Source::Texel(tex)) => self.texel_run(tex, cy, sx0, order, run),
                 (None, _) => {
                     for (px, x) in run.chunks_exact_mut(4).zip(sx0..) {
                         let c = centre(x);
@@ -244,6 +247,60 @@ impl Triangle<'_> {
                     }
                 }
             }
+        }
+    }
+
+    /// A run of a [`Source::Texel`] triangle (egui's gradients, the menus' top shade, the
+    /// anti-aliasing feathers) from column `x0` of the row whose centres are at `cy`, the
+    /// texel `tex` not transparent: [`Triangle::source_at`]'s arithmetic for [`RUN_LANES`]
+    /// pixels at a time in arrays the compiler vectorises (each edge function's product that
+    /// depends only on the row computed once, the same value), then [`blend_pixel`] per
+    /// pixel. The same operations in the same order per pixel, so the same bytes.
+    fn texel_run(&self, tex: [f32; 4], cy: f32, x0: i64, order: [usize; 3], run: &mut [u8]) {
+        let p = self.p;
+        let edges = [(p[1], p[2]), (p[2], p[0]), (p[0], p[1])];
+        // edge(a, b, c) = (b.x − a.x)(c.y − a.y) − (b.y − a.y)(c.x − a.x).
+        let row = edges.map(|(a, b)| (b[0] - a[0]) * (cy - a[1]));
+        let dy = edges.map(|(a, b)| b[1] - a[1]);
+        let ax = edges.map(|(a, _)| a[0]);
+        let (area, colors, unit) = (self.area, &self.colors, unit());
+        let source = |cx: f32| -> [f32; 4] {
+            let l: [f32; 3] = std::array::from_fn(|k| (row[k] - dy[k] * (cx - ax[k])) / area);
+            std::array::from_fn(|c| {
+                (l[0] * colors[0][c] + l[1] * colors[1][c] + l[2] * colors[2][c]) * tex[c]
+            })
+        };
+        // Window columns are far below 2²⁴: as `i32` then `f32`, each is exact, as `x as f32`.
+        let mut x = x0 as i32;
+        let mut chunks = run.chunks_exact_mut(4 * RUN_LANES);
+        for chunk in &mut chunks {
+            // One array a quantity, one lane a pixel: the loops over lanes vectorise.
+            let cx: [f32; RUN_LANES] = std::array::from_fn(|i| (x + i as i32) as f32 + 0.5);
+            let mut l = [[0.0f32; RUN_LANES]; 3];
+            for (k, l) in l.iter_mut().enumerate() {
+                for (l, cx) in l.iter_mut().zip(cx) {
+                    *l = (row[k] - dy[k] * (cx - ax[k])) / area;
+                }
+            }
+            let mut src = [[0.0f32; RUN_LANES]; 4];
+            for (c, src) in src.iter_mut().enumerate() {
+                for (i, s) in src.iter_mut().enumerate() {
+                    *s = (l[0][i] * colors[0][c] + l[1][i] * colors[1][c] + l[2][i] * colors[2][c])
+                        * tex[c];
+                }
+            }
+            for (i, px) in chunk.chunks_exact_mut(4).enumerate() {
+                blend_pixel(
+                    [src[0][i], src[1][i], src[2][i], src[3][i]],
+                    order,
+                    unit,
+                    px,
+                );
+            }
+            x += RUN_LANES as i32;
+        }
+        for (px, x) in chunks.into_remainder().chunks_exact_mut(4).zip(x..) {
+            blend_pixel(source(x as f32 + 0.5), order, unit, px);
         }
     }
 
@@ -271,6 +328,9 @@ impl Triangle<'_> {
         }))
     }
 }
+
+/// Pixels a [`Triangle::texel_run`] computes together.
+const RUN_LANES: usize = 8;
 
 /// `d / 255` for each 8-bit value `d` (the same floats `blend` divided for before).
 fn unit() -> &'static [f32; 256] {

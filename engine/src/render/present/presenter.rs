@@ -5,30 +5,40 @@
 //! (tonemap + upscale + overlay) into the offscreen frame and copy it to the surface — or,
 //! where the surface refuses copies, compose straight into it — present, and read the frame
 //! back when a screenshot was asked for. With the GPU tracer the film buffer is read in place
-//! (same device); the CPU tracer's film is composed on the CPU (`cpu_compose.rs`) and copied
-//! straight into the surface, the overlay drawn over it on the CPU too (`cpu_overlay.rs`;
-//! by the device on an sRGB surface); a screenshot frame takes the shader path, whose
-//! offscreen frame it reads back.
+//! (same device). The CPU tracer's film is composed on the CPU (`cpu_compose.rs`), the overlay
+//! drawn over it on the CPU too (`cpu_overlay.rs`), straight into a `softbuffer` buffer put to
+//! the window (`soft.rs`, the default) — or, with `CANDELA_PRESENT=wgpu` or when softbuffer
+//! cannot start, copied into the wgpu surface (the overlay by the device on an sRGB surface;
+//! a screenshot frame then takes the shader path, whose offscreen frame it reads back).
 //! Must not: render, converge or touch the scene.
 
 use std::sync::Arc;
 use std::time::Instant;
 
 use super::compose::FrameComposer;
-use super::cpu_compose::HostCompose;
+use super::cpu_compose::{HostCompose, PixelLayout};
 use super::cpu_overlay::CpuOverlay;
 use super::readback::{PendingReadback, Screenshot, encode_readback};
+use super::soft::{HostPresent, SoftSurface};
 use super::surface::{Acquired, PresentTarget, WindowSurface};
 use crate::commit::PresentRequest;
+use crate::render::film::Film;
 use crate::render::gpu::GpuContext;
 use crate::render::tracer::{FilmView, RenderError};
 
-/// Whether a host film is composed on the CPU and copied into the surface (the default);
-/// `CANDELA_PRESENT_SHADER=1` sends it through the present shader instead (for comparing the
-/// two, docs/PERFORMANCE.md).
+/// Whether a host film is composed on the CPU (softbuffer's buffer or the surface texture);
+/// `CANDELA_PRESENT=shader` sends it through the present shader instead (for comparing,
+/// docs/PERFORMANCE.md).
 fn host_blit_enabled() -> bool {
-    static ENABLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-    *ENABLED.get_or_init(|| std::env::var_os("CANDELA_PRESENT_SHADER").is_none_or(|v| v != "1"))
+    HostPresent::from_env() != HostPresent::Shader
+}
+
+/// The softbuffer surface, opened at the first host film.
+enum Soft {
+    Untried,
+    Ready(SoftSurface),
+    /// Not asked for, or it could not start or failed: the wgpu path.
+    Off,
 }
 
 /// What presenting one frame did.
@@ -50,6 +60,9 @@ pub struct Presenter {
     cpu_overlay: CpuOverlay,
     /// The host-film path's compose, its taps and buffers kept between frames.
     host_compose: HostCompose,
+    /// The window, for the softbuffer surface.
+    target: PresentTarget,
+    soft: Soft,
 }
 
 impl Presenter {
@@ -65,6 +78,11 @@ impl Presenter {
                 composer,
                 cpu_overlay,
                 host_compose: HostCompose::default(),
+                target: target.clone(),
+                soft: match HostPresent::from_env() {
+                    HostPresent::Softbuffer => Soft::Untried,
+                    HostPresent::Wgpu | HostPresent::Shader => Soft::Off,
+                },
             },
             context,
         ))
@@ -99,6 +117,11 @@ impl Presenter {
         let outcome = if request.surface_size.0 == 0 || request.surface_size.1 == 0 {
             presented.skipped = Some("the window is minimised");
             Ok(None)
+        } else if let Some(FilmView::Host(host)) = film
+            && let Some(shot) = self.draw_soft(host, request)
+        {
+            presented.screenshot = shot;
+            Ok(None)
         } else {
             self.draw(&context, film, request, &mut presented)
         };
@@ -106,12 +129,68 @@ impl Presenter {
             self.composer.free_overlay_textures(textures);
         }
         self.cpu_overlay.free(&cpu_free);
-        presented.screenshot = match outcome? {
-            Some(readback) => Some(readback.finish(&context.device)?),
-            None => None,
-        };
+        if let Some(readback) = outcome? {
+            presented.screenshot = Some(readback.finish(&context.device)?);
+        }
         presented.seconds = started.elapsed().as_secs_f64();
         Ok(presented)
+    }
+
+    /// The host film through softbuffer (`soft.rs`): composed and overlaid on the CPU straight
+    /// into its buffer, the screenshot (when asked) from the same bytes. `None` when softbuffer
+    /// is off or could not start or failed (logged once; the caller takes the wgpu path),
+    /// else the screenshot, if any.
+    fn draw_soft(&mut self, film: &Film, request: &PresentRequest) -> Option<Option<Screenshot>> {
+        let started = Instant::now();
+        if matches!(self.soft, Soft::Untried) {
+            self.soft = match SoftSurface::open(&self.target) {
+                Ok(surface) => {
+                    log::info!(
+                        "presenting the CPU film through softbuffer (composed into its buffer; \
+                         no wgpu copy or swapchain, so no vsync)"
+                    );
+                    Soft::Ready(surface)
+                }
+                Err(e) => {
+                    log::warn!(
+                        "softbuffer cannot start ({e}): presenting the CPU film through wgpu"
+                    );
+                    Soft::Off
+                }
+            };
+        }
+        let Soft::Ready(surface) = &mut self.soft else {
+            return None;
+        };
+        let size = request.surface_size;
+        let (compose, overlay) = (&mut self.host_compose, &self.cpu_overlay);
+        let shown = surface.frame(size, request.screenshot, started, |bytes| {
+            {
+                puffin::profile_scope!("compose");
+                compose.compose_into(film, size, &request.tonemap, PixelLayout::Xrgb32, bytes);
+            }
+            log::debug!(
+                "present ms: cpu compose {:.2}",
+                started.elapsed().as_secs_f64() * 1e3
+            );
+            if let Some(o) = request.overlay.as_ref() {
+                puffin::profile_scope!("overlay");
+                // B, G, R at bytes 0–2 as in BGRA; the overlay never writes the fourth byte.
+                overlay.draw(bytes, size, true, o);
+                log::debug!(
+                    "present ms: cpu overlay {:.2}",
+                    started.elapsed().as_secs_f64() * 1e3
+                );
+            }
+        });
+        match shown {
+            Ok(shot) => Some(shot),
+            Err(e) => {
+                log::warn!("softbuffer failed ({e}): presenting the CPU film through wgpu");
+                self.soft = Soft::Off;
+                None
+            }
+        }
     }
 
     fn draw(
